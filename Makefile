@@ -1,0 +1,42 @@
+# HSM Planner. Two commands matter (README): `make demo` runs the main job, `make test` runs every test.
+# Each target installs the Debian packages it misses, rebuilds what is stale and links the workbench.
+BUILD_DIR ?= build
+OUT ?= out
+JOBS ?= $(shell nproc)
+FREECADCMD ?= freecadcmd
+PYTHON := /usr/bin/python3
+
+.PHONY: all deps configure build link test test-cpp test-python test-gui demo bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD_DIR)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$(PYTHON)
+
+configure: $(BUILD_DIR)/CMakeCache.txt
+
+build: deps configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+	@$(FREECADCMD) scripts/link_workbench.py $(CURDIR) > $(BUILD_DIR)/link.log 2>&1 || { cat $(BUILD_DIR)/link.log; exit 1; }
+	@grep -h "linked" $(BUILD_DIR)/link.log || true
+
+test: build
+	scripts/run-tests.sh $(BUILD_DIR)
+
+test-cpp: build
+	scripts/run-tests.sh $(BUILD_DIR) cpp
+
+test-python: build
+	scripts/run-tests.sh $(BUILD_DIR) python
+
+test-gui: build
+	scripts/run-tests.sh $(BUILD_DIR) gui
+
+demo: build
+	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
+
+clean:
+	rm -rf $(BUILD_DIR) python/hsmplanner/_core*.so

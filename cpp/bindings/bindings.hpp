@@ -1,0 +1,7 @@
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace hsm::bindings {
+void bindGeometry(pybind11::module_& module);
+}

@@ -1,0 +1,30 @@
+// hsmplanner._core: thin pybind11 layer over the C++ core. No logic here: argument conversion and
+// the mapping of core exceptions to Python ones.
+#include "bindings/bindings.hpp"
+
+#include "common/error.hpp"
+
+#include <Standard_Failure.hxx>
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, module) {
+  module.doc() = "HSM Planner C++ core (OCCT + Eigen)";
+  module.attr("__version__") = HSM_VERSION;
+
+  py::register_exception_translator([](std::exception_ptr failure) {
+    try {
+      if (failure) std::rethrow_exception(failure);
+    } catch (const hsm::InputError& error) {
+      PyErr_SetString(PyExc_ValueError, error.what());
+    } catch (const hsm::ComputationError& error) {
+      PyErr_SetString(PyExc_RuntimeError, error.what());
+    } catch (const Standard_Failure& failure) {
+      // An OCCT exception that escaped the core is a bug of ours, but it must not take FreeCAD down.
+      PyErr_SetString(PyExc_RuntimeError,
+                      (std::string("OCCT error in the HSM Planner core: ") + failure.GetMessageString()).c_str());
+    }
+  });
+
+  hsm::bindings::bindGeometry(module);
+}

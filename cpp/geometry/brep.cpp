@@ -1,0 +1,90 @@
+#include "geometry/brep.hpp"
+
+#include "common/error.hpp"
+
+#include <BRepBndLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <sstream>
+
+namespace hsm::geometry {
+
+TopoDS_Shape readBrep(std::string_view text) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    throw InputError("BREP text is empty: pass Shape.exportBrepToString() of a non-empty shape");
+  std::istringstream stream{std::string(text)};
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  try {
+    BRepTools::Read(shape, stream, builder);
+  } catch (const Standard_Failure& failure) {
+    throw InputError(std::string("BREP text could not be read (") + failure.GetMessageString() +
+                     "): pass the unmodified output of Shape.exportBrepToString()");
+  }
+  if (shape.IsNull())
+    throw InputError("BREP text holds no shape: pass the unmodified output of Shape.exportBrepToString()");
+  return shape;
+}
+
+std::string writeBrep(const TopoDS_Shape& shape) {
+  std::ostringstream stream;
+  BRepTools::Write(shape, stream);
+  return stream.str();
+}
+
+namespace {
+int countSubShapes(const TopoDS_Shape& shape, TopAbs_ShapeEnum type) {
+  TopTools_IndexedMapOfShape map;
+  TopExp::MapShapes(shape, type, map);
+  return map.Extent();
+}
+}  // namespace
+
+ShapeSummary summarize(const TopoDS_Shape& shape) {
+  ShapeSummary summary;
+  if (shape.IsNull()) return summary;
+  summary.solids = countSubShapes(shape, TopAbs_SOLID);
+  summary.shells = countSubShapes(shape, TopAbs_SHELL);
+  summary.faces = countSubShapes(shape, TopAbs_FACE);
+  summary.wires = countSubShapes(shape, TopAbs_WIRE);
+  summary.edges = countSubShapes(shape, TopAbs_EDGE);
+  summary.vertices = countSubShapes(shape, TopAbs_VERTEX);
+
+  GProp_GProps props;
+  if (summary.solids > 0) {
+    BRepGProp::VolumeProperties(shape, props);
+    summary.volume = props.Mass();
+  }
+  if (summary.faces > 0) {
+    GProp_GProps surface;
+    BRepGProp::SurfaceProperties(shape, surface);
+    summary.area = surface.Mass();
+  }
+  // Each edge once: BRepGProp::LinearProperties on the whole shape would count shared edges per face.
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    GProp_GProps linear;
+    BRepGProp::LinearProperties(edges(i), linear);
+    summary.length += linear.Mass();
+  }
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+  if (!box.IsVoid()) {
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    summary.bounds = Eigen::AlignedBox3d(Eigen::Vector3d(x0, y0, z0), Eigen::Vector3d(x1, y1, z1));
+  }
+  summary.valid = BRepCheck_Analyzer(shape).IsValid();
+  return summary;
+}
+
+}  // namespace hsm::geometry

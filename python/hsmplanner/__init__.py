@@ -1,0 +1,18 @@
+"""HSM Planner core API: planning and evaluation of high-speed milling strategies.
+
+This package imports without FreeCAD. It re-exports the compiled core (hsmplanner._core) with small
+adapters that accept FreeCAD shapes, BREP text or numpy arrays. The FreeCAD layers live in the
+subpackages hsmplanner.app (document objects, Path/CAM operations) and hsmplanner.gui (workbench).
+"""
+try:
+    from . import _core
+except ImportError as error:  # the module is built by `make build`; say so instead of a bare ImportError
+    raise ImportError(
+        "hsmplanner._core is not built or was built for another Python: run `make build` in the "
+        "HSM Planner folder (the module is built for FreeCAD's /usr/bin/python3). Cause: %s" % error
+    ) from error
+
+from ._core import ShapeSummary, __version__
+from .geometry import as_brep, sample_curve, shape_summary
+
+__all__ = ["ShapeSummary", "__version__", "as_brep", "sample_curve", "shape_summary"]

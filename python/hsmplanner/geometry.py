@@ -1,0 +1,29 @@
+"""Shapes in, arrays out: adapters between FreeCAD/Part shapes and the core's BREP interface."""
+import numpy as np
+
+from . import _core
+
+
+def as_brep(shape):
+    """BREP text of a FreeCAD Part shape (edge, wire, face, solid…) or of BREP text itself."""
+    if isinstance(shape, str):
+        return shape
+    export = getattr(shape, "exportBrepToString", None)
+    if export is None:
+        raise TypeError(
+            "expected a FreeCAD Part shape (edge, wire, face…) or BREP text, got %s: pass obj.Shape "
+            "or Shape.exportBrepToString()" % type(shape).__name__
+        )
+    if getattr(shape, "isNull", lambda: False)():
+        raise ValueError("shape is null: pass a shape that holds geometry")
+    return export()
+
+
+def shape_summary(shape):
+    """Topology counts, volume (mm³), area (mm²), edge length (mm), bounds and validity of a shape."""
+    return _core.summarize_brep(as_brep(shape))
+
+
+def sample_curve(curve, count):
+    """(count, 3) numpy array of points equally spaced by arc length along an edge or a wire."""
+    return np.asarray(_core.sample_curve_brep(as_brep(curve), int(count)))

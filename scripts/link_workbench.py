@@ -1,0 +1,34 @@
+"""Link the repository into the Mod folder FreeCAD reports, so FreeCAD loads the HSM Planner workbench.
+
+Run with freecadcmd: `freecadcmd scripts/link_workbench.py /path/to/repo`. Replaces an older link of ours;
+refuses to touch a real folder of the same name.
+"""
+import os
+import sys
+
+import FreeCAD
+
+LINK_NAME = "HSMPlanner"
+
+
+def link_workbench(repo):
+    repo = os.path.realpath(repo)
+    if not os.path.isfile(os.path.join(repo, "InitGui.py")):
+        raise SystemExit("error: %s is not the HSM Planner folder (no InitGui.py)" % repo)
+    mod_dir = os.path.join(FreeCAD.getUserAppDataDir(), "Mod")
+    os.makedirs(mod_dir, exist_ok=True)
+    link = os.path.join(mod_dir, LINK_NAME)
+    if os.path.islink(link):
+        if os.path.realpath(link) == repo:
+            return link
+        os.remove(link)
+    elif os.path.exists(link):
+        raise SystemExit("error: %s exists and is not a link: move it away, then run `make build` again" % link)
+    os.symlink(repo, link)
+    print("HSM Planner workbench linked: %s -> %s" % (link, repo))
+    return link
+
+
+if len(sys.argv) < 2:
+    raise SystemExit("usage: freecadcmd scripts/link_workbench.py REPO_DIR")
+link_workbench(sys.argv[1])

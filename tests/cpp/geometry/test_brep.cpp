@@ -1,0 +1,58 @@
+#include "common/error.hpp"
+#include "geometry/brep.hpp"
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace hsm::geometry;
+
+TEST(Brep, BoxSurvivesRoundTripWithItsTopologyAndMeasures) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10.0, 20.0, 30.0).Shape();
+  const ShapeSummary s = summarize(readBrep(writeBrep(box)));
+  EXPECT_EQ(s.solids, 1);
+  EXPECT_EQ(s.faces, 6);
+  EXPECT_EQ(s.edges, 12);
+  EXPECT_EQ(s.vertices, 8);
+  EXPECT_NEAR(s.volume, 6000.0, 1e-6);
+  EXPECT_NEAR(s.area, 2 * (200.0 + 300.0 + 600.0), 1e-6);
+  EXPECT_NEAR(s.length, 4 * (10.0 + 20.0 + 30.0), 1e-6);
+  EXPECT_TRUE(s.valid);
+  EXPECT_NEAR(s.bounds.max().z(), 30.0, 1e-6);
+  EXPECT_NEAR(s.bounds.min().x(), 0.0, 1e-6);
+}
+
+TEST(Brep, BooleanResultKeepsExactVolume) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40.0, 40.0, 10.0).Shape();
+  const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 20, -1), gp::DZ()), 5.0, 12.0).Shape();
+  const TopoDS_Shape part = BRepAlgoAPI_Cut(box, hole).Shape();
+  const ShapeSummary s = summarize(readBrep(writeBrep(part)));
+  EXPECT_NEAR(s.volume, 40.0 * 40.0 * 10.0 - M_PI * 25.0 * 10.0, 1e-3);
+  EXPECT_EQ(s.faces, 7);
+  EXPECT_TRUE(s.valid);
+}
+
+TEST(Brep, EmptyTextIsRefusedWithAMessageNamingTheInput) {
+  try {
+    readBrep("  \n");
+    FAIL() << "empty BREP text was accepted";
+  } catch (const hsm::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("BREP text is empty"), std::string::npos);
+  }
+}
+
+TEST(Brep, GarbageTextIsRefused) {
+  EXPECT_THROW(readBrep("this is not a shape"), hsm::InputError);
+  EXPECT_THROW(readBrep("DBRep_DrawableShape\n\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 3\n"),
+               hsm::InputError);
+}
+
+TEST(Brep, NullShapeSummaryIsEmpty) {
+  const ShapeSummary s = summarize(TopoDS_Shape());
+  EXPECT_EQ(s.faces, 0);
+  EXPECT_TRUE(s.bounds.isEmpty());
+  EXPECT_FALSE(s.valid);
+}
