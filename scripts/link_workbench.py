@@ -32,3 +32,4 @@ def link_workbench(repo):
 if len(sys.argv) < 2:
     raise SystemExit("usage: freecadcmd scripts/link_workbench.py REPO_DIR")
 link_workbench(sys.argv[1])
+raise SystemExit(0)  # or freecadcmd would try to open the remaining arguments as documents

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Starts the real FreeCAD GUI under Xvfb with a macro that drives the workbench, then checks its verdict.
+# Needs HOME (throw-away, workbench linked) and HSM_GUI_TEST_OUT (screenshots and result.json) set.
+set -uo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+: "${HSM_GUI_TEST_OUT:?set HSM_GUI_TEST_OUT to the folder for screenshots}"
+mkdir -p "$HOME/.config/FreeCAD" "$HSM_GUI_TEST_OUT"
+cp "$here/user.cfg" "$HOME/.config/FreeCAD/user.cfg"
+
+export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
+# The macro ends FreeCAD itself; `timeout` is the last resort if something blocks the event loop.
+timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$here/gui_smoke.py" \
+  > "$HSM_GUI_TEST_OUT/freecad.log" 2>&1
+status=$?
+result="$HSM_GUI_TEST_OUT/result.json"
+if [ ! -f "$result" ]; then
+  echo "GUI test: FreeCAD ended (exit $status) without a verdict; log:" >&2
+  tail -40 "$HSM_GUI_TEST_OUT/freecad.log" >&2
+  exit 1
+fi
+cat "$result"; echo
+/usr/bin/python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["ok"] else 1)' "$result"

@@ -1,0 +1,40 @@
+"""The examples run from freecadcmd as a user runs them, and write what they promise."""
+import json
+import os
+import unittest
+
+import Part
+
+from helpers import REPO, run, temporary_directory
+
+
+class MasterBottomFeatureExample(unittest.TestCase):
+    def test_writes_document_step_brep_summary_and_picture(self):
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "master_bottom_feature.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
+        base = os.path.join(out, "master_bottom_feature")
+        with open(base + ".json") as stream:
+            summary = json.load(stream)
+        self.assertLess(summary["boundary_1_detail"]["min_plan_radius_mm"], 10.0)
+        self.assertTrue(summary["boundary_1_detail"]["inflections_at_mm"])
+        step = Part.read(base + ".step")
+        self.assertAlmostEqual(step.Volume, summary["volume_mm3"], delta=1.0)
+        brep = Part.Shape()
+        brep.read(base + ".brep")
+        self.assertAlmostEqual(brep.getElement(summary["bottom_face"]).Area, summary["bottom_area_mm2"], delta=0.1)
+        with open(base + ".png", "rb") as stream:
+            self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
+        self.assertGreater(os.path.getsize(base + ".FCStd"), 10000)
+
+    def test_unwritable_output_folder_fails_with_a_message(self):
+        blocker = os.path.join(temporary_directory(self), "a-file")
+        open(blocker, "w").close()
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "master_bottom_feature.py"),
+                      os.path.join(blocker, "out")])
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("error:", result.stderr + result.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main()
