@@ -1,7 +1,7 @@
 // Points along a curve given as an edge or a wire: the common input of curve nets and toolpaths.
 #pragma once
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
