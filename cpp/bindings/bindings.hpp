@@ -4,4 +4,5 @@
 
 namespace hsm::bindings {
 void bindGeometry(pybind11::module_& module);
+void bindCurvenet(pybind11::module_& module);
 }

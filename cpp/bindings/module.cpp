@@ -27,4 +27,5 @@ PYBIND11_MODULE(_core, module) {
   });
 
   hsm::bindings::bindGeometry(module);
+  hsm::bindings::bindCurvenet(module);
 }

@@ -155,10 +155,11 @@ GuidanceResult guidanceCurves(const Boundaries& boundaries, const GuidanceSettin
     halves[side - 1] = std::move(curve);
     built[side - 1] = true;
   }
-  auto& inflections = report.inflectionStations;  // each guide was measured for two pairs: keep one of each
+  // Each guide was measured for two pairs, and the median inflects next to the boundaries: one per minStep.
+  auto& inflections = report.inflectionStations;
   std::sort(inflections.begin(), inflections.end());
   inflections.erase(std::unique(inflections.begin(), inflections.end(),
-                                [](double a, double b) { return b - a < 1e-6; }),
+                                [&](double a, double b) { return b - a < settings.minStep; }),
                     inflections.end());
 
   net.stations = layout.stations();

@@ -11,6 +11,7 @@
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
+#include <TopoDS.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
 #include <sstream>
@@ -38,6 +39,15 @@ std::string writeBrep(const TopoDS_Shape& shape) {
   std::ostringstream stream;
   BRepTools::Write(shape, stream);
   return stream.str();
+}
+
+TopoDS_Face singleFace(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape faces;
+  if (!shape.IsNull()) TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  if (faces.Extent() != 1)
+    throw InputError("expected one face, the shape has " + std::to_string(faces.Extent()) +
+                     ": pass the bottom face itself (e.g. obj.Shape.getElement('Face4'))");
+  return TopoDS::Face(faces(1));
 }
 
 namespace {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <string>
@@ -14,6 +15,9 @@ TopoDS_Shape readBrep(std::string_view text);
 
 // Writes OCCT BREP text that FreeCAD's Part.Shape().importBrepFromString() reads back.
 std::string writeBrep(const TopoDS_Shape& shape);
+
+// The one face of a shape (a face, or a shell/compound holding exactly one face); InputError otherwise.
+TopoDS_Face singleFace(const TopoDS_Shape& shape);
 
 struct ShapeSummary {
   int solids = 0;

@@ -12,7 +12,9 @@ except ImportError as error:  # the module is built by `make build`; say so inst
         "HSM Planner folder (the module is built for FreeCAD's /usr/bin/python3). Cause: %s" % error
     ) from error
 
-from ._core import ShapeSummary, __version__
+from ._core import BSplineCurve, CurveNet, NetCurve, ShapeSummary, __version__
+from .curvenet import area_regions, as_curve, curve_net, guidance_curves, intermediate_curve
 from .geometry import as_brep, sample_curve, shape_summary
 
-__all__ = ["ShapeSummary", "__version__", "as_brep", "sample_curve", "shape_summary"]
+__all__ = ["BSplineCurve", "CurveNet", "NetCurve", "ShapeSummary", "__version__", "area_regions", "as_brep",
+           "as_curve", "curve_net", "guidance_curves", "intermediate_curve", "sample_curve", "shape_summary"]

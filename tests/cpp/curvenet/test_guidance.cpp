@@ -39,10 +39,10 @@ TEST(GuidanceCurves, FourAreasMedianAndOneCurvePerHalf) {
   // Step 2: the inflection points became planes, and the spacing adapted (never above P0).
   bool at50 = false, at100 = false;
   for (double s : result.report.inflectionStations) {
-    at50 = at50 || std::abs(s - 50) < 0.05;
-    at100 = at100 || std::abs(s - 100) < 0.05;
+    at50 = at50 || std::abs(s - 50) < 0.1;
+    at100 = at100 || std::abs(s - 100) < 0.1;
   }
-  EXPECT_TRUE(at50 && at100);
+  EXPECT_TRUE(at50 && at100) << ::testing::PrintToString(result.report.inflectionStations);
   EXPECT_LE(result.report.largestStep, settings.net.step + 1e-9);
   EXPECT_GT(result.report.smallestStep, 0.0);
 }

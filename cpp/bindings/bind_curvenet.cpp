@@ -1,0 +1,161 @@
+#include "bindings/bindings.hpp"
+
+#include "curvenet/curvenet.hpp"
+#include "curvenet/regions.hpp"
+#include "geometry/brep.hpp"
+#include "geometry/bspline.hpp"
+
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+
+namespace py = pybind11;
+
+namespace hsm::bindings {
+
+namespace {
+using curvenet::NetCurve;
+using Curve = Handle(Geom_BSplineCurve);
+
+// A B-spline curve handed to Python: the inputs of the nets and every curve they return.
+struct BSplineCurve {
+  Curve curve;
+};
+
+std::string roleName(curvenet::CurveRole role) {
+  switch (role) {
+    case curvenet::CurveRole::Boundary: return "boundary";
+    case curvenet::CurveRole::Median: return "median";
+    case curvenet::CurveRole::Intermediate: return "intermediate";
+  }
+  return "?";
+}
+
+curvenet::NetSettings makeSettings(double step, std::optional<Eigen::Vector3d> direction,
+                                   std::optional<std::string> faceBrep, double fitTolerance, double minGap) {
+  curvenet::NetSettings settings;
+  settings.step = step;
+  settings.direction = direction;
+  if (faceBrep) settings.face = geometry::singleFace(geometry::readBrep(*faceBrep));
+  settings.fitTolerance = fitTolerance;
+  settings.minGap = minGap;
+  return settings;
+}
+
+py::list regions(const curvenet::CurveNet& net, const std::string& faceBrep) {
+  py::list result;
+  for (const auto& region : curvenet::areaRegions(net, geometry::singleFace(geometry::readBrep(faceBrep))))
+    result.append(py::make_tuple(region.area.lower, region.area.upper, geometry::writeBrep(region.faces),
+                                 region.surfaceArea));
+  return result;
+}
+}  // namespace
+
+void bindCurvenet(py::module_& m) {
+  py::class_<BSplineCurve>(m, "BSplineCurve", "A B-spline curve of the core (mm)")
+      .def_property_readonly("degree", [](const BSplineCurve& c) { return c.curve->Degree(); })
+      .def_property_readonly("pole_count", [](const BSplineCurve& c) { return c.curve->NbPoles(); })
+      .def_property_readonly("length",
+                             [](const BSplineCurve& c) { return GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(c.curve)); })
+      .def("sample", [](const BSplineCurve& c, int n) { return geometry::sampleByArcLength(Handle(Geom_Curve)(c.curve), n); },
+           py::arg("n"), "(n, 3) points equally spaced by arc length")
+      .def("to_brep", [](const BSplineCurve& c) { return geometry::edgeBrep(c.curve); }, "BREP text of an edge");
+
+  m.def("curve_from_brep", [](const std::string& brep) { return BSplineCurve{geometry::toBSpline(geometry::readBrep(brep))}; },
+        py::arg("brep"), "Exact B-spline of an edge, a wire or a chain of edges given as BREP text");
+  m.def("curve_from_points", [](const geometry::PointArray& points) { return BSplineCurve{geometry::interpolatePoints(points)}; },
+        py::arg("points"), "Cubic B-spline through an (N,3) array of points along a curve");
+
+  py::class_<NetCurve>(m, "NetCurve", "A curve of a net: a boundary, the median or an intermediate curve")
+      .def_readonly("label", &NetCurve::label)
+      .def_property_readonly("role", [](const NetCurve& c) { return roleName(c.role); })
+      .def_property_readonly("curve", [](const NetCurve& c) { return BSplineCurve{c.curve}; })
+      .def_readonly("points", &NetCurve::points, "construction points, one per plane (empty for boundaries)")
+      .def_readonly("k", &NetCurve::k)
+      .def_readonly("start", &NetCurve::from, "label of the curve it was built from")
+      .def_readonly("target", &NetCurve::towards, "label of the curve it was built towards")
+      .def_readonly("net", &NetCurve::net)
+      .def_readonly("rank", &NetCurve::rank)
+      .def_readonly("fit_deviation", &NetCurve::fitDeviation, "mm")
+      .def_property_readonly("degree", [](const NetCurve& c) { return c.curve->Degree(); })
+      .def("sample", [](const NetCurve& c, int n) { return geometry::sampleByArcLength(Handle(Geom_Curve)(c.curve), n); },
+           py::arg("n"), "(n, 3) points equally spaced by arc length")
+      .def("to_brep", [](const NetCurve& c) { return geometry::edgeBrep(c.curve); }, "BREP text of an edge");
+
+  py::class_<curvenet::CurveNet>(m, "CurveNet", "Curves across a bottom feature, from B1 to B2")
+      .def_readonly("curves", &curvenet::CurveNet::curves)
+      .def_readonly("stations", &curvenet::CurveNet::stations, "plane positions along the direction, mm")
+      .def_readonly("direction", &curvenet::CurveNet::direction)
+      .def_readonly("warnings", &curvenet::CurveNet::warnings)
+      .def("elementary_areas",
+           [](const curvenet::CurveNet& n) {
+             std::vector<std::pair<int, int>> pairs;
+             for (const auto& a : n.elementaryAreas()) pairs.emplace_back(a.lower, a.upper);
+             return pairs;
+           },
+           "(lower, upper) indices of consecutive curves")
+      .def("composed_areas",
+           [](const curvenet::CurveNet& n) {
+             std::vector<std::vector<std::pair<int, int>>> result;
+             for (const auto& ma : n.composedAreas()) {
+               result.emplace_back();
+               for (const auto& a : ma) result.back().emplace_back(a.lower, a.upper);
+             }
+             return result;
+           },
+           "MA_1, MA_2…: each a list of (lower, upper) curve indices")
+      .def("regions", &regions, py::arg("face_brep"),
+           "Per elementary area: (lower, upper, BREP of its faces, surface area mm²)");
+
+  py::class_<curvenet::GuidanceHalf>(m, "GuidanceHalf")
+      .def_readonly("start", &curvenet::GuidanceHalf::start)
+      .def_readonly("target", &curvenet::GuidanceHalf::target)
+      .def_readonly("start_min_radius", &curvenet::GuidanceHalf::startMinRadius)
+      .def_readonly("target_min_radius", &curvenet::GuidanceHalf::targetMinRadius)
+      .def_readonly("skipped", &curvenet::GuidanceHalf::skipped);
+  py::class_<curvenet::GuidanceReport>(m, "GuidanceReport")
+      .def_readonly("inflection_stations", &curvenet::GuidanceReport::inflectionStations)
+      .def_readonly("smallest_step", &curvenet::GuidanceReport::smallestStep)
+      .def_readonly("largest_step", &curvenet::GuidanceReport::largestStep)
+      .def_readonly("half1", &curvenet::GuidanceReport::half1)
+      .def_readonly("half2", &curvenet::GuidanceReport::half2);
+
+  m.def(
+      "intermediate_curve",
+      [](const BSplineCurve& a, const BSplineCurve& b, double k, double step, std::optional<Eigen::Vector3d> direction,
+         std::optional<std::string> face, double fitTolerance) {
+        return curvenet::intermediateCurve(a.curve, b.curve, k, makeSettings(step, direction, face, fitTolerance, 0.0));
+      },
+      py::arg("a"), py::arg("b"), py::arg("k"), py::arg("step"), py::arg("direction") = py::none(),
+      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01);
+  m.def(
+      "curve_net",
+      [](const BSplineCurve& b1, const BSplineCurve& b2, double k, double step, const std::string& mode,
+         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap) {
+        return curvenet::curveNet({b1.curve, b2.curve}, k, curvenet::parseNetMode(mode),
+                                  makeSettings(step, direction, face, fitTolerance, minGap));
+      },
+      py::arg("b1"), py::arg("b2"), py::arg("k"), py::arg("step"), py::arg("mode"), py::arg("direction") = py::none(),
+      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01, py::arg("min_gap") = 2.0);
+  m.def(
+      "guidance_curves",
+      [](const BSplineCurve& b1, const BSplineCurve& b2, double step, double kMedian, double k,
+         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap,
+         double minStep) {
+        curvenet::GuidanceSettings settings;
+        settings.net = makeSettings(step, direction, face, fitTolerance, minGap);
+        settings.kMedian = kMedian;
+        settings.k = k;
+        settings.minStep = minStep;
+        const auto result = curvenet::guidanceCurves({b1.curve, b2.curve}, settings);
+        return py::make_tuple(result.net, result.report);
+      },
+      py::arg("b1"), py::arg("b2"), py::arg("step") = 5.0, py::arg("k_median") = 0.5, py::arg("k") = 0.75,
+      py::arg("direction") = py::none(), py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01,
+      py::arg("min_gap") = 2.0, py::arg("min_step") = 0.5);
+}
+
+}  // namespace hsm::bindings
