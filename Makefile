@@ -37,6 +37,11 @@ test-gui: build
 
 demo: build
 	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
+	scripts/run-freecadcmd.sh examples/curve_nets.py $(OUT)
+
+bench: build
+	$(BUILD_DIR)/bin/bench_curvenet
+	scripts/run-freecadcmd.sh tests/bench/bench_preview.py
 
 clean:
 	rm -rf $(BUILD_DIR) python/hsmplanner/_core*.so

@@ -166,6 +166,18 @@ std::pair<Handle(Geom_BSplineCurve), double> fitCurve(const PointArray& points, 
   } catch (const Standard_Failure& failure) {
     throw ComputationError(std::string("OCCT failed to fit an intermediate curve: ") + failure.GetMessageString());
   }
+  // A fit whose poles fly far from its points oscillates between them; refuse it rather than hand on a
+  // curve that later operations (face split, sampling) cannot digest.
+  Eigen::AlignedBox3d pointBox, poleBox;
+  for (int i = 0; i < n; ++i) pointBox.extend(Eigen::Vector3d(points.row(i).transpose()));
+  for (int i = 1; i <= curve->NbPoles(); ++i) {
+    const gp_Pnt pole = curve->Pole(i);
+    poleBox.extend(Eigen::Vector3d(pole.X(), pole.Y(), pole.Z()));
+  }
+  const double size = std::max(pointBox.diagonal().norm(), 1.0);
+  if ((poleBox.min() - pointBox.min()).minCoeff() < -size || (poleBox.max() - pointBox.max()).maxCoeff() > size)
+    throw ComputationError("the B-spline fitted to an intermediate curve oscillates between its points: use a "
+                           "larger step P or fit tolerance");
   // The deviation is measured, not assumed: the approximation may stop short of the tolerance.
   GeomAdaptor_Curve adaptor(curve);
   const double t0 = curve->FirstParameter(), t1 = curve->LastParameter();

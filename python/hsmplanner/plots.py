@@ -59,3 +59,41 @@ def plot_part_with_curves(meshes, curves, path, title, plan_marks=()):
     figure.savefig(path)
     plt.close(figure)
     return path
+
+
+def _area_colour(index):
+    palette = plt.get_cmap("tab20")
+    return palette((2 * index + index // 10) % 20)
+
+
+def plot_net_plan(axes, curves, areas, title, labels=None):
+    """Plan view of a curve net: areas filled between consecutive curves, curves by role.
+
+    curves: list of (points (N,3) ordered along the net's direction, role); areas: (lower, upper) index pairs.
+    """
+    for index, (lower, upper) in enumerate(areas):
+        a, b = curves[lower][0], curves[upper][0]
+        outline = np.vstack([a[:, :2], b[::-1, :2]])
+        axes.fill(outline[:, 0], outline[:, 1], color=_area_colour(index), alpha=0.75, linewidth=0)
+    styles = {"boundary": ("black", 1.8), "median": ("#d00000", 1.6), "intermediate": ("#1a4dd9", 0.9)}
+    for points, role in curves:
+        colour, width = styles.get(role, ("grey", 1.0))
+        axes.plot(points[:, 0], points[:, 1], color=colour, linewidth=width)
+    axes.set_aspect("equal")
+    axes.set_title(title, fontsize=9)
+    axes.tick_params(labelsize=7)
+
+
+def save_net_grid(panels, path, title, columns=3):
+    """One plan view per net: panels is a list of (curves, areas, title) for plot_net_plan."""
+    rows = (len(panels) + columns - 1) // columns
+    figure, grid = plt.subplots(rows, columns, figsize=(5.2 * columns, 2.9 * rows), dpi=110, squeeze=False)
+    for axes, panel in zip(grid.flat, panels):
+        plot_net_plan(axes, *panel)
+    for axes in list(grid.flat)[len(panels):]:
+        axes.axis("off")
+    figure.suptitle(title)
+    figure.tight_layout()
+    figure.savefig(path)
+    plt.close(figure)
+    return path

@@ -8,15 +8,24 @@ mkdir -p "$HOME/.config/FreeCAD" "$HSM_GUI_TEST_OUT"
 cp "$here/user.cfg" "$HOME/.config/FreeCAD/user.cfg"
 
 export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
-# The macro ends FreeCAD itself; `timeout` is the last resort if something blocks the event loop.
-timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$here/gui_smoke.py" \
-  > "$HSM_GUI_TEST_OUT/freecad.log" 2>&1
-status=$?
-result="$HSM_GUI_TEST_OUT/result.json"
-if [ ! -f "$result" ]; then
-  echo "GUI test: FreeCAD ended (exit $status) without a verdict; log:" >&2
-  tail -40 "$HSM_GUI_TEST_OUT/freecad.log" >&2
-  exit 1
-fi
-cat "$result"; echo
-/usr/bin/python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["ok"] else 1)' "$result"
+failed=0
+for macro in "$here"/gui_*.py; do
+  name=$(basename "$macro" .py)
+  [ "$name" = gui_harness ] && continue
+  out="$HSM_GUI_TEST_OUT/$name"
+  mkdir -p "$out"
+  # The macro ends FreeCAD itself; `timeout` is the last resort if something blocks the event loop.
+  HSM_GUI_TEST_OUT=$out timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$macro" > "$out/freecad.log" 2>&1
+  status=$?
+  result="$out/result.json"
+  echo "--- $name"
+  if [ ! -f "$result" ]; then
+    echo "GUI test $name: FreeCAD ended (exit $status) without a verdict; log:" >&2
+    tail -40 "$out/freecad.log" >&2
+    failed=1
+    continue
+  fi
+  cat "$result"; echo
+  /usr/bin/python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["ok"] else 1)' "$result" || failed=1
+done
+exit $failed

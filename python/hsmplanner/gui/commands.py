@@ -4,7 +4,7 @@ import FreeCADGui
 
 from hsmplanner.resources import icon
 
-COMMAND_NAMES = ["HSM_MasterBottomFeature"]
+COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet"]
 
 
 class CommandMasterBottomFeature:
@@ -37,5 +37,33 @@ class CommandMasterBottomFeature:
         return obj
 
 
+class CommandGuideCurveNet:
+    """Add a guide curve net and open its panel (the selected edges and face are taken as its inputs)."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("GuideCurveNet"),
+            "MenuText": "Guide curve net",
+            "ToolTip": "Intermediate curves between two boundary edges of a bottom face, with K and P set live; "
+                       "select the two edges (and the bottom face) first, or pick them in the panel",
+        }
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from hsmplanner.app import guide_curve_net_object
+        from hsmplanner.gui.view_providers import ViewProviderGuideCurveNet
+
+        document = FreeCAD.ActiveDocument
+        document.openTransaction("Add guide curve net")
+        obj = guide_curve_net_object.create(document)
+        view_provider = ViewProviderGuideCurveNet(obj.ViewObject)
+        view_provider.created = True
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        return obj
+
+
 def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
+    FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())

@@ -1,8 +1,14 @@
-"""View providers of HSM Planner document objects."""
+"""View providers of HSM Planner document objects (their class names are saved in documents)."""
 from hsmplanner.resources import icon
 
+from .colors import CURVE_COLORS, REGION_BORDER, area_color
 
-class ViewProviderMasterBottomFeature:
+
+class _StatelessViewProvider:
+    """Common part: the object, the icon, nothing to save (0.20 and 1.x spellings)."""
+
+    ICON = "HSMPlanner"
+
     def __init__(self, view_object):
         view_object.Proxy = self
 
@@ -10,7 +16,7 @@ class ViewProviderMasterBottomFeature:
         self.Object = view_object.Object
 
     def getIcon(self):
-        return icon("MasterBottomFeature")
+        return icon(self.ICON)
 
     def __getstate__(self):
         return None
@@ -23,3 +29,54 @@ class ViewProviderMasterBottomFeature:
 
     def loads(self, state):
         return None
+
+
+class ViewProviderMasterBottomFeature(_StatelessViewProvider):
+    ICON = "MasterBottomFeature"
+
+
+class ViewProviderGuideCurveNet(_StatelessViewProvider):
+    """Elementary areas in distinct colours, curves by role (boundary, median, intermediate)."""
+
+    ICON = "GuideCurveNet"
+    COLOURED_BY = ("Shape", "FaceAreas", "CurveRoles")
+
+    def attach(self, view_object):
+        super().attach(view_object)
+        view_object.LineWidth = 3.0
+
+    def updateData(self, obj, prop):
+        if prop in self.COLOURED_BY:
+            self.colour(obj)
+
+    def colour(self, obj):
+        view = obj.ViewObject
+        faces, edges = obj.Shape.Faces, obj.Shape.Edges
+        if view is None or len(faces) != len(obj.FaceAreas) or len(edges) < len(obj.CurveRoles):
+            return  # mid-recompute: the properties do not match yet
+        view.DiffuseColor = [area_color(index) + (0.0,) for index in obj.FaceAreas]
+        border_count = len(edges) - len(obj.CurveRoles)  # the curve edges come last in the compound
+        view.LineColorArray = [REGION_BORDER + (0.0,)] * border_count + [
+            CURVE_COLORS.get(role, (0, 0, 0)) + (0.0,) for role in obj.CurveRoles]
+
+    def doubleClicked(self, view_object):
+        import FreeCADGui
+
+        FreeCADGui.ActiveDocument.setEdit(view_object.Object.Name)
+        return True
+
+    def setEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        from .guide_curve_net_panel import GuideCurveNetPanel
+
+        FreeCADGui.Control.showDialog(GuideCurveNetPanel(view_object.Object,
+                                                         created=getattr(self, "created", False)))
+        self.created = False
+        return True
+
+    def unsetEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True

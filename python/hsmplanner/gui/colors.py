@@ -1,0 +1,18 @@
+"""Colours of HSM Planner views: the roles of curves and the elementary areas."""
+
+CURVE_COLORS = {
+    "boundary": (0.10, 0.10, 0.10),
+    "median": (0.85, 0.10, 0.10),
+    "intermediate": (0.10, 0.30, 0.85),
+}
+REGION_BORDER = (0.55, 0.55, 0.55)
+
+# Distinct, light enough that the curves read on top of them.
+AREA_PALETTE = [
+    (0.99, 0.75, 0.44), (0.65, 0.85, 0.62), (0.62, 0.78, 0.95), (0.96, 0.62, 0.70), (0.85, 0.76, 0.96),
+    (0.99, 0.90, 0.55), (0.60, 0.90, 0.88), (0.92, 0.80, 0.70), (0.78, 0.90, 0.55), (0.90, 0.68, 0.90),
+]
+
+
+def area_color(index):
+    return AREA_PALETTE[index % len(AREA_PALETTE)]
