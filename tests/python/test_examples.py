@@ -36,5 +36,23 @@ class MasterBottomFeatureExample(unittest.TestCase):
         self.assertIn("error:", result.stderr + result.stdout)
 
 
+class CurveNetsExample(unittest.TestCase):
+    def test_writes_the_tables_as_csv_and_pictures(self):
+        import csv
+
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "curve_nets.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
+        with open(os.path.join(out, "curve_nets.csv")) as stream:
+            rows = list(csv.DictReader(stream))
+        by_key = {(r["building_direction"], r["K"], r["P_mm"]): r for r in rows}
+        self.assertEqual(by_key[("b1_to_b2", "0.25", "5.0")]["intermediate_curves"], "9")
+        self.assertEqual(by_key[("boundaries_to_median", "0.25", "5.0")]["composed_areas"], "2 4 6 8 10 12 14")
+        self.assertEqual(by_key[("4-step method", "0.5 / 0.75", "adapted")]["elementary_areas"], "4")
+        for name in ("curve_nets_table1.png", "curve_nets_table2.png", "curve_nets_4step.png"):
+            with open(os.path.join(out, name), "rb") as stream:
+                self.assertEqual(stream.read(4), b"\x89PNG")
+
+
 if __name__ == "__main__":
     unittest.main()

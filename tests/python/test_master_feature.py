@@ -176,3 +176,21 @@ class StepExport(unittest.TestCase):
         self.assertEqual(len(reread.Solids), 1)
         self.assertAlmostEqual(reread.Volume, feature.shape.Volume, delta=1e-4 * feature.shape.Volume)
         self.assertEqual(len(reread.Faces), len(feature.shape.Faces))
+
+
+class CommittedTestData(unittest.TestCase):
+    def test_tests_data_matches_the_generator(self):
+        """tests/data feeds the C++ tests; rewrite it with scripts/make_test_data.py when the part changes."""
+        import json
+
+        from helpers import REPO
+
+        base = os.path.join(REPO, "tests", "data", "master_bottom_feature")
+        with open(base + ".json") as stream:
+            names = json.load(stream)
+        feature = make_master_bottom_feature()
+        self.assertEqual((names["bottom_face"], names["boundary_1"], names["boundary_2"]),
+                         (feature.bottom_face, feature.boundary_1, feature.boundary_2))
+        stored = Part.Shape()
+        stored.read(base + ".brep")
+        self.assertAlmostEqual(stored.Volume, feature.shape.Volume, delta=1e-6 * feature.shape.Volume)
