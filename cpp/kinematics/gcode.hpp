@@ -1,0 +1,99 @@
+// G-code reader: FreeCAD/LinuxCNC and Siemens 840D dialects, streamed line by line into motion blocks.
+//
+// Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21, G90 G91,
+// G90.1 G91.1, G9 G60 G61 G61.1 G64 [P] G641 G642 G643 G644 G645, SOFT BRISK, CYCLE832(tolerance…),
+// F S T D H M N, comments in ( ) and after ;, block delete /, % lines. Words that change nothing the
+// simulation sees (G40, G43, G54…, G80, G94, M3, COMPCAD, FFWON…) are accepted. Anything else is an
+// unknown word: skipped and counted, or refused, by option. A malformed line throws ParseError naming the
+// line number and the word.
+#pragma once
+
+#include "common/error.hpp"
+
+#include <Eigen/Core>
+
+#include <istream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsm::kinematics {
+
+class ParseError : public InputError {
+public:
+  ParseError(long line, const std::string& message)
+      : InputError("line " + std::to_string(line) + ": " + message), line_(line) {}
+  long line() const { return line_; }
+
+private:
+  long line_;
+};
+
+enum class Motion { Rapid, Linear, ArcClockwise, ArcCounterClockwise };
+
+// How the controller may pass from this block to the next.
+enum class PathMode {
+  ExactStop,   // G60, G61, G9 (this block only): stop at the end
+  Continuous,  // G64 on the 840D: no rounding, bounded axis velocity jumps; LinuxCNC G64 without P
+  Rounding,    // G641/G642…, LinuxCNC G64 P: corners blended within `tolerance`
+};
+
+struct Block {
+  Motion motion = Motion::Linear;
+  Eigen::Vector3d start = Eigen::Vector3d::Zero(), end = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // arcs: centre, in the plane of the start point
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // arcs: axis of the active plane
+  double radius = 0.0;                                // arcs, mm
+  double sweep = 0.0;                                 // arcs: signed angle about `normal`, radians
+  double feed = 0.0;                                  // programmed, mm/s (0 for G0: rapid)
+  PathMode pathMode = PathMode::Continuous;
+  double tolerance = 0.0;                             // mm, for Rounding
+  int jerkLimited = -1;                               // 1 SOFT, 0 BRISK, −1 the machine's default
+  long line = 0;                                      // source line number, 1-based
+
+  bool isArc() const { return motion == Motion::ArcClockwise || motion == Motion::ArcCounterClockwise; }
+  double length() const;
+  // Unit tangent at the start (s = 0) or end (s = 1) of the block.
+  Eigen::Vector3d tangent(bool atEnd) const;
+  // Point `distance` mm along the block.
+  Eigen::Vector3d pointAt(double distance) const;
+};
+
+struct ReaderOptions {
+  bool refuseUnknownWords = false;   // true: an unknown word is a ParseError
+  bool feedInMmPerSecond = false;    // FreeCAD Path commands store F in mm/s; G-code files use mm/min
+  Eigen::Vector3d startPosition = Eigen::Vector3d::Zero();  // where the machine is before the first move
+  double arcRadiusTolerance = 0.01;  // mm (plus 0.1 % of the radius) between the start and end radius of an arc
+};
+
+struct ReaderStats {
+  long lines = 0;
+  long motionBlocks = 0;
+  long unknownWords = 0;
+  std::map<std::string, long> unknownWordCounts;  // the first 50 distinct unknown words, with counts
+  double dwellTime = 0.0;                          // s, from G4
+  long toolChanges = 0;
+};
+
+// Reads a program from a stream, a block at a time, without loading it whole.
+class GcodeReader {
+public:
+  GcodeReader(std::istream& input, ReaderOptions options = {});
+  ~GcodeReader();
+  GcodeReader(const GcodeReader&) = delete;
+  GcodeReader& operator=(const GcodeReader&) = delete;
+
+  // The next motion block; false at the end of the program.
+  bool next(Block& block);
+  const ReaderStats& stats() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Convenience: every motion block of a program given as text.
+std::vector<Block> readProgram(const std::string& text, const ReaderOptions& options = {});
+
+}  // namespace hsm::kinematics

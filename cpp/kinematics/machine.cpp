@@ -1,0 +1,151 @@
+#include "kinematics/machine.hpp"
+
+#include "common/error.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace hsm::kinematics {
+
+namespace {
+using nlohmann::json;
+
+constexpr const char* kAxes[] = {"X", "Y", "Z"};
+
+[[noreturn]] void bad(const std::string& origin, const std::string& what) {
+  throw InputError(origin + ": " + what);
+}
+
+double number(const json& node, const std::string& key, const std::string& origin, double scale, bool positive) {
+  if (!node.contains(key)) bad(origin, "missing \"" + key + "\": add it (see resources/machines/README)");
+  const json& value = node.at(key);
+  if (!value.is_number()) bad(origin, "\"" + key + "\" must be a number, got " + value.dump());
+  const double x = value.get<double>();
+  if (!std::isfinite(x) || (positive ? x <= 0.0 : x < 0.0))
+    bad(origin, "\"" + key + "\" = " + value.dump() + (positive ? " must be positive" : " must be 0 or more"));
+  return x * scale;
+}
+
+Eigen::Vector3d perAxis(const json& axes, const std::string& key, const std::string& origin, double scale,
+                        bool positive) {
+  Eigen::Vector3d result;
+  for (int i = 0; i < 3; ++i) {
+    if (!axes.contains(kAxes[i])) bad(origin, std::string("missing axis \"") + kAxes[i] + "\" in \"axes\"");
+    result[i] = number(axes.at(kAxes[i]), key, origin + " axis " + kAxes[i], scale, positive);
+  }
+  return result;
+}
+
+ControllerKind controllerKind(const std::string& name, const std::string& origin) {
+  if (name == "siemens-840d") return ControllerKind::Siemens840D;
+  if (name == "linuxcnc") return ControllerKind::LinuxCNC;
+  if (name == "grbl") return ControllerKind::Grbl;
+  bad(origin, "controller \"" + name + "\" is unknown: use siemens-840d, linuxcnc or grbl");
+}
+
+constexpr double kPerMinute = 1.0 / 60.0;  // mm/min -> mm/s
+constexpr double kMetres = 1000.0;         // m/s², m/s³ -> mm/s², mm/s³
+}  // namespace
+
+std::string controllerName(ControllerKind kind) {
+  switch (kind) {
+    case ControllerKind::Siemens840D: return "siemens-840d";
+    case ControllerKind::LinuxCNC: return "linuxcnc";
+    case ControllerKind::Grbl: return "grbl";
+  }
+  return "?";
+}
+
+MachineModel machineFromJson(const std::string& text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    bad(origin, std::string("not valid JSON (") + error.what() + ")");
+  }
+  if (!root.is_object()) bad(origin, "the top level must be an object");
+  MachineModel m;
+  m.name = root.value("name", "");
+  if (m.name.empty()) bad(origin, "missing \"name\"");
+  m.description = root.value("description", "");
+  if (!root.contains("controller") || !root["controller"].is_string()) bad(origin, "missing \"controller\"");
+  m.controller = controllerKind(root["controller"].get<std::string>(), origin);
+  if (!root.contains("axes") || !root["axes"].is_object()) bad(origin, "missing \"axes\" with X, Y and Z");
+  const json& axes = root["axes"];
+  m.maxVelocity = perAxis(axes, "max_velocity_mm_min", origin, kPerMinute, true);
+  m.maxAcceleration = perAxis(axes, "max_acceleration_m_s2", origin, kMetres, true);
+  m.maxJerk = perAxis(axes, "max_jerk_m_s3", origin, kMetres, true);
+  m.rapidVelocity = perAxis(axes, "rapid_velocity_mm_min", origin, kPerMinute, true);
+  m.velocityJump = perAxis(axes, "velocity_jump_mm_min", origin, kPerMinute, false);
+  m.interpolationCycle = number(root, "interpolation_cycle_ms", origin, 1e-3, false);
+  const double lookAhead = number(root, "look_ahead_blocks", origin, 1.0, true);
+  if (lookAhead != std::floor(lookAhead) || lookAhead > 100000)
+    bad(origin, "\"look_ahead_blocks\" must be a whole number up to 100000");
+  m.lookAheadBlocks = static_cast<int>(lookAhead);
+  m.cornerTolerance = number(root, "corner_tolerance_mm", origin, 1.0, false);
+  m.jerkLimitedByDefault = root.value("jerk_limited_by_default", m.controller == ControllerKind::Siemens840D);
+  if (root.contains("arc_tolerance_mm")) m.arcTolerance = number(root, "arc_tolerance_mm", origin, 1.0, true);
+  return m;
+}
+
+std::string machineToJson(const MachineModel& m) {
+  json axes;
+  for (int i = 0; i < 3; ++i)
+    axes[kAxes[i]] = {{"max_velocity_mm_min", m.maxVelocity[i] * 60.0},
+                      {"max_acceleration_m_s2", m.maxAcceleration[i] / kMetres},
+                      {"max_jerk_m_s3", m.maxJerk[i] / kMetres},
+                      {"rapid_velocity_mm_min", m.rapidVelocity[i] * 60.0},
+                      {"velocity_jump_mm_min", m.velocityJump[i] * 60.0}};
+  json root = {{"name", m.name},
+               {"description", m.description},
+               {"controller", controllerName(m.controller)},
+               {"axes", axes},
+               {"interpolation_cycle_ms", m.interpolationCycle * 1e3},
+               {"look_ahead_blocks", m.lookAheadBlocks},
+               {"corner_tolerance_mm", m.cornerTolerance},
+               {"jerk_limited_by_default", m.jerkLimitedByDefault},
+               {"arc_tolerance_mm", m.arcTolerance}};
+  return root.dump(2);
+}
+
+std::vector<std::string> machineNames(const std::vector<std::string>& folders) {
+  std::vector<std::string> names;
+  for (const auto& folder : folders) {
+    std::error_code ignored;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ignored))
+      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+MachineModel loadMachine(const std::string& nameOrFile, const std::vector<std::string>& folders) {
+  namespace fs = std::filesystem;
+  fs::path path(nameOrFile);
+  if (!fs::is_regular_file(path)) {
+    path.clear();
+    for (const auto& folder : folders)
+      if (fs::is_regular_file(fs::path(folder) / (nameOrFile + ".json"))) {
+        path = fs::path(folder) / (nameOrFile + ".json");
+        break;
+      }
+  }
+  if (path.empty()) {
+    std::string known;
+    for (const auto& name : machineNames(folders)) known += (known.empty() ? "" : ", ") + name;
+    throw InputError("machine '" + nameOrFile + "' is neither a file nor a known machine: use one of " +
+                     (known.empty() ? std::string("(none found)") : known) + ", or the path of a machine JSON file");
+  }
+  std::ifstream stream(path);
+  std::stringstream text;
+  text << stream.rdbuf();
+  return machineFromJson(text.str(), path.string());
+}
+
+}  // namespace hsm::kinematics

@@ -1,0 +1,247 @@
+#include "kinematics/planner.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hsm::kinematics::detail {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kTangentCosine = 1.0 - 1e-12;  // junctions straighter than this are not corners
+// LinuxCNC 2.9 splits the acceleration on arcs and blends: 0.866·a normal, 0.5·a tangential (0.866² + 0.5² = 1).
+constexpr double kLinuxCncNormalShare = 0.866;
+constexpr double kLinuxCncTangentShare = 0.5;
+constexpr double kLinuxCncKinkShare = 0.2165;  // a kink φ in one cycle T is taken while v·φ/T ≤ 0.2165·a
+
+// min over the axes of limit_i / |u_i|: the per-axis limits projected on direction u.
+double projected(const Eigen::Vector3d& limits, const Eigen::Vector3d& u) {
+  double result = kInfinity;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(u[i]) > 1e-12) result = std::min(result, limits[i] / std::abs(u[i]));
+  return result;
+}
+
+// Radius of the arc that rounds a corner of deflection φ within `tolerance` of the corner point, using at most
+// half of each block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
+double blendRadius(double phi, double tolerance, double shorter) {
+  const double c = std::cos(0.5 * phi);
+  const double byTolerance = std::isfinite(tolerance) ? tolerance * c / std::max(1e-300, 1.0 - c) : kInfinity;
+  const double byLength = 0.5 * shorter / std::tan(0.5 * phi);
+  return std::min(byTolerance, byLength);
+}
+
+double curvatureSpeed(double radius, const Dynamics& d) {
+  double v = std::sqrt(d.acceleration * radius);
+  if (d.jerkLimited) v = std::min(v, std::cbrt(d.jerk * radius * radius));
+  return v;
+}
+}  // namespace
+
+Planner::Planner(const MachineModel& machine, Commit commit) : machine_(machine), commit_(std::move(commit)) {
+  if (machine.lookAheadBlocks < 2)
+    throw InputError("look_ahead_blocks = " + std::to_string(machine.lookAheadBlocks) + ": the planner needs 2 or more");
+  ring_.resize(static_cast<size_t>(machine.lookAheadBlocks));
+}
+
+Segment Planner::prepare(const Block& block, long source) const {
+  const MachineModel& m = machine_;
+  Segment s;
+  s.block = block;
+  s.source = source;
+  s.length = block.length();
+  s.startTangent = block.tangent(false);
+  s.endTangent = block.tangent(true);
+  const bool linuxcnc = m.controller == ControllerKind::LinuxCNC;
+  const bool rapid = block.motion == Motion::Rapid;
+  s.dynamics.jerkLimited = m.controller == ControllerKind::Siemens840D &&
+                           (block.jerkLimited >= 0 ? block.jerkLimited == 1 : m.jerkLimitedByDefault);
+
+  double velocity, rapidVelocity, curvatureLimit = kInfinity;
+  if (block.isArc()) {
+    // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
+    const Eigen::Vector3d inPlane = Eigen::Vector3d::Ones() - block.normal.cwiseAbs();
+    const double along = std::abs(block.normal.dot(block.end - block.start)) / std::max(s.length, 1e-12);
+    auto weakest = [&](const Eigen::Vector3d& limits) {
+      double w = kInfinity;
+      for (int i = 0; i < 3; ++i)
+        if (inPlane[i] > 0.5) w = std::min(w, limits[i]);
+      return along > 1e-12 ? std::min(w, projected(limits, block.normal.cwiseAbs() * along)) : w;
+    };
+    s.dynamics.acceleration = weakest(m.maxAcceleration);
+    s.dynamics.jerk = weakest(m.maxJerk);
+    velocity = weakest(m.maxVelocity);
+    rapidVelocity = weakest(m.rapidVelocity);
+    Dynamics normal = s.dynamics;
+    if (linuxcnc) {
+      normal.acceleration *= kLinuxCncNormalShare;
+      s.dynamics.acceleration *= kLinuxCncTangentShare;
+    }
+    curvatureLimit = curvatureSpeed(block.radius, normal);
+  } else {
+    const Eigen::Vector3d u = s.startTangent;
+    s.dynamics.acceleration = projected(m.maxAcceleration, u);
+    s.dynamics.jerk = projected(m.maxJerk, u);
+    velocity = projected(m.maxVelocity, u);
+    rapidVelocity = projected(m.rapidVelocity, u);
+    if (linuxcnc && block.pathMode != PathMode::ExactStop)
+      s.dynamics.acceleration *= kLinuxCncTangentShare;  // blendable lines keep half for the blends
+  }
+  s.programmed = rapid ? rapidVelocity : block.feed;
+  s.cruise = std::min({s.programmed, velocity, curvatureLimit});
+  if (m.interpolationCycle > 0.0) s.cruise = std::min(s.cruise, s.length / m.interpolationCycle);
+  return s;
+}
+
+Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
+  const MachineModel& m = machine_;
+  const double limit = std::min(before.cruise, after.cruise);
+  const bool grbl = m.controller == ControllerKind::Grbl;
+  if (before.block.pathMode == PathMode::ExactStop && !grbl) return {};
+  const bool rapidBefore = before.block.motion == Motion::Rapid, rapidAfter = after.block.motion == Motion::Rapid;
+  if (m.controller == ControllerKind::Siemens840D && rapidBefore != rapidAfter) return {};  // G0 ends in exact stop
+
+  const double cosine = std::clamp(before.endTangent.dot(after.startTangent), -1.0, 1.0);
+  Junction j;
+  if (cosine >= kTangentCosine) {
+    j.speed = limit;
+    return j;
+  }
+  if (cosine <= -1.0 + 1e-9) return j;  // the path turns back
+  const double phi = std::acos(cosine);
+  const double shorter = std::min(before.length, after.length);
+  Dynamics d = before.dynamics;
+  d.acceleration = std::min(before.dynamics.acceleration, after.dynamics.acceleration);
+  d.jerk = std::min(before.dynamics.jerk, after.dynamics.jerk);
+  d.jerkLimited = before.dynamics.jerkLimited || after.dynamics.jerkLimited;
+
+  double v = 0.0;
+  switch (m.controller) {
+    case ControllerKind::Siemens840D: {
+      const double jump = projected(m.velocityJump, after.startTangent - before.endTangent);
+      v = jump;
+      if (before.block.pathMode == PathMode::Rounding)
+        v = std::max(v, curvatureSpeed(blendRadius(phi, before.block.tolerance, shorter), d));
+      // A chain of short blocks is a curve: its radius through the three points bounds the speed, at the
+      // junction and along both blocks (the look-ahead sees the curve, not the chords).
+      const double chord = (after.block.end - before.block.start).norm();
+      j.adjacentCap = curvatureSpeed(chord / (2.0 * std::sin(phi)), d);
+      v = std::min(v, j.adjacentCap);
+      break;
+    }
+    case ControllerKind::LinuxCNC: {
+      const double tolerance = before.block.pathMode == PathMode::Rounding ? before.block.tolerance : kInfinity;
+      const double full = std::min(projected(m.maxAcceleration, before.endTangent),
+                                   projected(m.maxAcceleration, after.startTangent));
+      const double radius = blendRadius(phi, tolerance, shorter);
+      const double blend = std::sqrt(kLinuxCncNormalShare * full * radius);
+      // A blend that takes half of each block leaves no straight part: the blocks run at the blend's speed.
+      if (radius < blendRadius(phi, tolerance, kInfinity)) j.adjacentCap = blend;
+      const double kink = kLinuxCncKinkShare * full * m.interpolationCycle / phi;
+      v = std::max(blend, kink);
+      break;
+    }
+    case ControllerKind::Grbl: {
+      const double full = std::min(projected(m.maxAcceleration, before.endTangent),
+                                   projected(m.maxAcceleration, after.startTangent));
+      v = std::sqrt(full * blendRadius(phi, m.cornerTolerance, kInfinity));
+      break;
+    }
+  }
+  j.speed = std::min(v, limit);
+  return j;
+}
+
+void Planner::add(const Block& block, long source) {
+  Segment segment = prepare(block, source);
+  if (!(segment.length > 0.0) || !(segment.cruise > 0.0)) return;  // nothing to move
+  // A block waits here until its successor is known: the junction between them may lower both cruises.
+  if (havePending_) {
+    const Junction j = junction(pending_, segment);
+    pending_.cruise = std::min(pending_.cruise, j.adjacentCap);
+    segment.cruise = std::min(segment.cruise, j.adjacentCap);
+    pending_.junction = std::min(pending_.junction, pending_.cruise);
+    segment.junction = std::min({j.speed, segment.cruise, pending_.cruise});
+    if (count_ == ring_.size()) commitOldest();
+    push(std::move(pending_));
+  }
+  pending_ = std::move(segment);
+  havePending_ = true;
+}
+
+Dynamics weakest(const Dynamics& a, const Dynamics& b) {
+  return {std::min(a.acceleration, b.acceleration), std::min(a.jerk, b.jerk), a.jerkLimited || b.jerkLimited};
+}
+
+void Planner::push(Segment segment) {
+  segment.position = nextPosition_;
+  nextPosition_ += segment.length;
+  if (count_ == 0 && segment.position == 0.0) segment.entry = 0.0;  // the program starts from rest
+  const size_t index = count_;
+  at(count_++) = std::move(segment);
+  // Backward pass. A junction binds when its own limit is below what the machine could reach backwards
+  // from the next binding junction downstream (or from the end of the newest block, where it must be
+  // able to stop). A new block only moves the end further, so junctions stop binding from the back: each
+  // is dropped once, and a pass costs O(1) on average instead of a walk over the whole look-ahead.
+  const Segment& newest = at(index);
+  const double end = nextPosition_;
+  const bool newestBinds =
+      index > 0 && newest.junction <= reachableSpeed(0.0, end - newest.position, newest.dynamics);
+  while (!binding_.empty()) {
+    const Segment& b = at(binding_.back() - committed_);
+    const double downstreamSpeed = newestBinds ? newest.junction : 0.0;
+    const double downstreamPosition = newestBinds ? newest.position : end;
+    const double reachable = reachableSpeed(downstreamSpeed, downstreamPosition - b.position,
+                                            weakest(b.dynamics, newest.dynamics));
+    if (b.junction <= reachable) break;
+    binding_.pop_back();
+  }
+  if (newestBinds) binding_.push_back(committed_ + index);
+}
+
+// The planned entry of the block at ring index i (> 0): its junction's own limit if it binds, else what
+// the machine can reach backwards from the next binding junction (or the stop at the end).
+double Planner::plannedEntry(size_t i) {
+  const long number = committed_ + static_cast<long>(i);
+  while (!binding_.empty() && binding_.front() < number) binding_.pop_front();
+  const Segment& s = at(i);
+  if (!binding_.empty() && binding_.front() == number) return s.junction;
+  const Segment& downstream = binding_.empty() ? at(count_ - 1) : at(binding_.front() - committed_);
+  const double speed = binding_.empty() ? 0.0 : downstream.junction;
+  const double position = binding_.empty() ? nextPosition_ : downstream.position;
+  return std::min(s.junction, reachableSpeed(speed, position - s.position, weakest(s.dynamics, downstream.dynamics)));
+}
+
+void Planner::commitOldest() {
+  Segment& s = at(0);
+  const bool hasNext = count_ > 1;
+  const double end = s.position + s.length;
+  forwardDynamics_ = weakest(forwardDynamics_, s.dynamics);
+  const double planned = hasNext ? plannedEntry(1) : 0.0;  // the machine stops at the end of the program
+  const double cap = hasNext ? at(1).junction : 0.0;
+  const double exit = std::min(planned, reachableSpeed(forwardSpeed_, end - forwardPosition_, forwardDynamics_));
+  const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12);
+  if (pinned) {
+    forwardSpeed_ = exit;
+    forwardPosition_ = end;
+    forwardDynamics_ = hasNext ? at(1).dynamics : s.dynamics;
+  }
+  if (hasNext) at(1).entry = exit;
+  commit_(s, s.entry, exit, pinned);
+  head_ = (head_ + 1) % ring_.size();
+  --count_;
+  ++committed_;
+}
+
+void Planner::finish() {
+  if (havePending_) {
+    if (count_ == ring_.size()) commitOldest();
+    push(std::move(pending_));
+    havePending_ = false;
+  }
+  while (count_ > 0) commitOldest();
+}
+
+}  // namespace hsm::kinematics::detail

@@ -1,0 +1,74 @@
+// Internal: the look-ahead planner. Blocks go in; each comes out once its entry and exit speeds are final.
+//
+// Junction speeds come from a backward pass (the machine must be able to stop at the end of the last block
+// it sees) and a forward pass (what it can reach from the last point where the speed was pinned), each
+// following one S-curve from the binding constraint over the whole distance, not one per block: chaining a
+// zero-acceleration S-curve per short block would make accelerating over a chain of short blocks far
+// slower than any controller. A junction is pinned when its speed is its own limit (a corner, a stop, the
+// start and the end); the motion between two pinned junctions is timed as one run (runs.hpp).
+#pragma once
+
+#include "kinematics/gcode.hpp"
+#include "kinematics/machine.hpp"
+#include "kinematics/profile.hpp"
+
+#include <deque>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace hsm::kinematics::detail {
+
+struct Segment {
+  Block block;
+  long source = 0;          // index of the program block (several segments when grbl cuts an arc)
+  double length = 0.0;
+  double programmed = 0.0;  // mm/s: F, or the rapid speed projected on the block
+  double cruise = 0.0;      // mm/s: the most the block allows
+  double junction = 0.0;    // mm/s: the most the junction with the previous block allows (0 for the first)
+  Dynamics dynamics;
+  double position = 0.0;    // mm: distance along the program at the start of the block
+  double entry = 0.0;       // entry speed, final once the block before it is committed
+  Eigen::Vector3d startTangent, endTangent;
+};
+
+// The weaker of two dynamics: a run over blocks of different directions obeys the weakest of them.
+Dynamics weakest(const Dynamics& a, const Dynamics& b);
+
+class Planner {
+public:
+  // A block with its final entry and exit speeds; pinnedExit: the exit speed is the junction's own limit.
+  using Commit = std::function<void(const Segment&, double entry, double exit, bool pinnedExit)>;
+  Planner(const MachineModel& machine, Commit commit);
+
+  void add(const Block& block, long source);
+  void finish();  // the machine stops at the end of the last block
+
+private:
+  struct Junction {
+    double speed = 0.0;                                          // the most the junction allows
+    double adjacentCap = std::numeric_limits<double>::infinity();  // the most both blocks allow when the
+                                                                 // junction is really a curve (short blocks)
+  };
+  Segment prepare(const Block& block, long source) const;
+  Junction junction(const Segment& before, const Segment& after) const;
+  void push(Segment segment);
+  void commitOldest();
+  double plannedEntry(size_t i);
+  Segment& at(size_t i) { return ring_[(head_ + i) % ring_.size()]; }
+
+  const MachineModel& machine_;
+  Commit commit_;
+  std::vector<Segment> ring_;
+  size_t head_ = 0, count_ = 0;
+  bool havePending_ = false;
+  Segment pending_;  // the newest block, until its successor (and so its own junction caps) is known
+  double nextPosition_ = 0.0;
+  long committed_ = 0;              // blocks committed so far: ring index i is block committed_ + i
+  std::deque<long> binding_;        // blocks (by number) whose entry junction binds, oldest first
+  // Forward pass: the last pinned junction and the weakest dynamics since.
+  double forwardSpeed_ = 0.0, forwardPosition_ = 0.0;
+  Dynamics forwardDynamics_{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false};
+};
+
+}  // namespace hsm::kinematics::detail

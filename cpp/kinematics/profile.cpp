@@ -1,0 +1,113 @@
+#include "kinematics/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsm::kinematics {
+
+namespace {
+// Time of a change by Δv ≥ 0.
+double deltaTime(double dv, const Dynamics& d) {
+  if (dv <= 0.0) return 0.0;
+  if (!d.jerkLimited) return dv / d.acceleration;
+  const double a = d.acceleration, j = d.jerk;
+  return dv <= a * a / j ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
+}
+}  // namespace
+
+double changeTime(double v0, double v1, const Dynamics& d) { return deltaTime(std::abs(v1 - v0), d); }
+
+double changeDistance(double v0, double v1, const Dynamics& d) {
+  return 0.5 * (v0 + v1) * changeTime(v0, v1, d);
+}
+
+double reachableSpeed(double v0, double distance, const Dynamics& d) {
+  if (distance <= 0.0) return v0;
+  const double a = d.acceleration;
+  if (!d.jerkLimited) return std::sqrt(v0 * v0 + 2.0 * a * distance);
+  const double j = d.jerk;
+  // Jerk only: distance = (2·v0 + s²)·s/√J with s = sqrt(Δv): s³ + p·s − q = 0, one real root (Cardano).
+  const double p = 2.0 * v0, q = distance * std::sqrt(j);
+  const double root = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
+  const double s = std::cbrt(q / 2.0 + root) + std::cbrt(q / 2.0 - root);
+  const double dv = s * s;
+  if (dv <= a * a / j) return v0 + dv;
+  // Acceleration reached: (v1² − v0²)/(2A) + (v0 + v1)·A/(2J) = distance, a quadratic in v1.
+  const double b = a * a / j;
+  const double c = v0 * b - v0 * v0 - 2.0 * a * distance;
+  return 0.5 * (-b + std::sqrt(b * b - 4.0 * c));
+}
+
+BlockProfile blockProfile(double length, double v0, double v1, double vCruise, const Dynamics& d) {
+  BlockProfile profile;
+  profile.v0 = v0;
+  profile.v1 = v1;
+  const double up = changeDistance(v0, vCruise, d), down = changeDistance(vCruise, v1, d);
+  double peak = vCruise;
+  if (up + down > length) {
+    // No cruise: the peak where accelerating and decelerating distances add up to the length.
+    double lo = std::max(v0, v1), hi = vCruise;
+    if (!d.jerkLimited) {
+      peak = std::sqrt(std::max(lo * lo, (2.0 * d.acceleration * length + v0 * v0 + v1 * v1) / 2.0));
+    } else {
+      for (int i = 0; i < 60 && hi - lo > 1e-9 * (1.0 + hi); ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (changeDistance(v0, mid, d) + changeDistance(mid, v1, d) > length ? hi : lo) = mid;
+      }
+      peak = lo;
+    }
+    peak = std::min(peak, vCruise);
+  }
+  profile.peak = peak;
+  profile.accelTime = changeTime(v0, peak, d);
+  profile.decelTime = changeTime(peak, v1, d);
+  const double rest = length - changeDistance(v0, peak, d) - changeDistance(peak, v1, d);
+  profile.cruiseTime = peak > 0.0 ? std::max(0.0, rest) / peak : 0.0;
+  profile.time = profile.accelTime + profile.cruiseTime + profile.decelTime;
+  return profile;
+}
+
+namespace {
+// State `t` into a change from v0 to v1 that lasts `duration` (t in [0, duration]).
+ProfileState changeStateAt(double v0, double v1, double duration, double t, const Dynamics& d) {
+  if (duration <= 0.0) return {0.0, v0};
+  const double sign = v1 >= v0 ? 1.0 : -1.0, dv = std::abs(v1 - v0);
+  if (!d.jerkLimited) {
+    const double a = sign * dv / duration;
+    return {v0 * t + 0.5 * a * t * t, v0 + a * t};
+  }
+  const double j = d.jerk;
+  const double ramp = std::min(d.acceleration / j, 0.5 * duration);  // time to reach the top acceleration
+  const double top = j * ramp;
+  // Phases: jerk up for `ramp`, constant acceleration for `hold`, jerk down for `ramp`.
+  const double hold = duration - 2.0 * ramp;
+  double s = 0.0, v = v0;
+  auto advance = [&](double dt, double a0, double jj) {
+    s += v * dt + 0.5 * sign * a0 * dt * dt + sign * jj * dt * dt * dt / 6.0;
+    v += sign * (a0 * dt + 0.5 * jj * dt * dt);
+  };
+  if (t <= ramp) {
+    advance(t, 0.0, j);
+    return {s, v};
+  }
+  advance(ramp, 0.0, j);
+  if (t <= ramp + hold) {
+    advance(t - ramp, top, 0.0);
+    return {s, v};
+  }
+  advance(hold, top, 0.0);
+  advance(t - ramp - hold, top, -j);
+  return {s, v};
+}
+}  // namespace
+
+ProfileState stateAt(const BlockProfile& p, double t, const Dynamics& d) {
+  t = std::clamp(t, 0.0, p.time);
+  if (t <= p.accelTime) return changeStateAt(p.v0, p.peak, p.accelTime, t, d);
+  const double accelDistance = changeDistance(p.v0, p.peak, d);
+  if (t <= p.accelTime + p.cruiseTime) return {accelDistance + p.peak * (t - p.accelTime), p.peak};
+  const ProfileState tail = changeStateAt(p.peak, p.v1, p.decelTime, t - p.accelTime - p.cruiseTime, d);
+  return {accelDistance + p.peak * p.cruiseTime + tail.distance, tail.speed};
+}
+
+}  // namespace hsm::kinematics

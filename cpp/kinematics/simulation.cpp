@@ -1,0 +1,189 @@
+#include "kinematics/simulation.hpp"
+
+#include "kinematics/planner.hpp"
+#include "kinematics/runs.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsm::kinematics {
+
+namespace {
+
+int feedClass(double ratio) {
+  int k = 0;
+  while (k < static_cast<int>(kFeedClassEdges.size()) && ratio >= kFeedClassEdges[k] - 1e-9) ++k;
+  return k;
+}
+
+int lengthClass(double length) {
+  int k = 0;
+  while (k < static_cast<int>(kLengthClassEdges.size()) && length >= kLengthClassEdges[k]) ++k;
+  return k;
+}
+
+// Collects committed segments into program blocks (grbl cuts arcs into several segments), the summary,
+// and what the options ask for.
+class Collector {
+public:
+  Collector(const MachineModel& machine, const SimulationOptions& options, SimulationResult& result)
+      : machine_(machine), options_(options), result_(result) {
+    result_.summary.machine = machine.name;
+  }
+
+  void commit(const detail::Segment& s, const detail::BlockTiming& p) {
+    if (s.source != currentSource_) flush();
+    if (!open_) {
+      open_ = true;
+      currentSource_ = s.source;
+      current_ = BlockResult{};
+      current_.line = s.block.line;
+      current_.motion = s.block.motion;
+      current_.start = s.block.start;
+      current_.programmedFeed = s.programmed;
+      current_.entryFeed = p.entry;
+      current_.minFeed = p.min;
+      current_.startTime = clock_;
+      naive_ = 0.0;
+    }
+    current_.end = s.block.end;
+    current_.length += s.length;
+    current_.exitFeed = p.exit;
+    current_.peakFeed = std::max(current_.peakFeed, p.peak);
+    current_.minFeed = std::min(current_.minFeed, p.min);
+    current_.time += p.time;
+    naive_ += s.length / s.programmed;
+    clock_ += p.time;
+  }
+
+  void flush() {
+    if (!open_) return;
+    open_ = false;
+    BlockResult& b = current_;
+    b.meanFeed = b.time > 0.0 ? b.length / b.time : 0.0;
+    SimulationSummary& sum = result_.summary;
+    ++sum.blockCount;
+    sum.totalTime += b.time;
+    sum.naiveTime += naive_;
+    if (b.motion == Motion::Rapid) {
+      ++sum.rapidBlocks;
+      sum.rapidTime += b.time;
+      sum.rapidLength += b.length;
+    } else {
+      ++sum.cuttingBlocks;
+      sum.cuttingTime += b.time;
+      sum.cuttingLength += b.length;
+      sum.naiveCuttingTime += naive_;
+      const int k = feedClass(b.meanFeed / b.programmedFeed);
+      sum.feedClasses.blocks[k] += 1.0;
+      sum.feedClasses.length[k] += b.length;
+      sum.feedClasses.time[k] += b.time;
+      ++sum.lengthClasses[lengthClass(b.length)];
+    }
+    if (options_.onBlock) options_.onBlock(b);
+    if (options_.keepBlocks) result_.blocks.push_back(b);
+    if (options_.onProgress && (sum.blockCount & 0xFFFF) == 0) options_.onProgress(b.line);
+  }
+
+  void sample(double t, double speed, const Eigen::Vector3d& x) {
+    const TraceSample sample{t, x.x(), x.y(), x.z(), speed};
+    if (options_.onTraceSample) {
+      options_.onTraceSample(sample);
+    } else {
+      result_.trace.push_back(sample);
+    }
+  }
+
+  void finish(const ReaderStats& reader) {
+    flush();
+    SimulationSummary& sum = result_.summary;
+    sum.reader = reader;
+    sum.dwellTime = reader.dwellTime;
+    sum.totalTime += reader.dwellTime;
+    sum.naiveTime += reader.dwellTime;
+    FeedClasses& fc = sum.feedClasses;
+    for (int k = 0; k < 5; ++k) {
+      if (sum.cuttingBlocks > 0) fc.blocks[k] /= double(sum.cuttingBlocks);
+      if (sum.cuttingLength > 0) fc.length[k] /= sum.cuttingLength;
+      if (sum.cuttingTime > 0) fc.time[k] /= sum.cuttingTime;
+    }
+  }
+
+private:
+  const MachineModel& machine_;
+  const SimulationOptions& options_;
+  SimulationResult& result_;
+  BlockResult current_;
+  bool open_ = false;
+  long currentSource_ = -1;
+  double clock_ = 0.0, naive_ = 0.0;
+};
+
+// grbl executes arcs as chords within its arc tolerance; the other controllers interpolate them.
+template <class Sink>
+void feed(detail::Planner& planner, const MachineModel& machine, const Block& block, long source, Sink&&) {
+  if (machine.controller != ControllerKind::Grbl || !block.isArc()) {
+    planner.add(block, source);
+    return;
+  }
+  const double r = block.radius, tol = std::min(machine.arcTolerance, 0.5 * r);
+  const double step = 2.0 * std::acos(1.0 - tol / r);
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(block.sweep) / step)));
+  const double length = block.length();
+  Eigen::Vector3d from = block.start;
+  for (int i = 1; i <= pieces; ++i) {
+    Block chord = block;
+    chord.motion = Motion::Linear;
+    chord.start = from;
+    chord.end = i == pieces ? block.end : block.pointAt(length * i / pieces);
+    planner.add(chord, source);
+    from = chord.end;
+  }
+}
+
+template <class Next>
+SimulationResult run(const MachineModel& machine, const SimulationOptions& options, Next&& next,
+                     const std::function<ReaderStats()>& stats) {
+  SimulationResult result;
+  Collector collector(machine, options, result);
+  detail::RunTimer runs([&](const detail::Segment& s, const detail::BlockTiming& t) { collector.commit(s, t); },
+                        options.tracePeriod,
+                        [&](double t, double v, const Eigen::Vector3d& x) { collector.sample(t, v, x); });
+  detail::Planner planner(machine, [&](const detail::Segment& s, double entry, double exit, bool pinned) {
+    runs.add(s, entry, exit, pinned);
+  });
+  Block block;
+  long source = 0;
+  while (next(block)) feed(planner, machine, block, source++, 0);
+  planner.finish();
+  runs.finish();
+  collector.finish(stats());
+  return result;
+}
+
+}  // namespace
+
+SimulationResult simulate(std::istream& program, const MachineModel& machine, const ReaderOptions& reading,
+                          const SimulationOptions& options) {
+  GcodeReader reader(program, reading);
+  return run(machine, options, [&](Block& b) { return reader.next(b); }, [&] { return reader.stats(); });
+}
+
+SimulationResult simulateBlocks(const std::vector<Block>& blocks, const MachineModel& machine,
+                                const SimulationOptions& options) {
+  size_t i = 0;
+  return run(
+      machine, options,
+      [&](Block& b) {
+        if (i == blocks.size()) return false;
+        b = blocks[i++];
+        return true;
+      },
+      [&] {
+        ReaderStats stats;
+        stats.motionBlocks = static_cast<long>(blocks.size());
+        return stats;
+      });
+}
+
+}  // namespace hsm::kinematics

@@ -1,0 +1,85 @@
+// Feed-rate simulation throughput, measured in one run: reading alone, reading + simulating with the 840D
+// model (summary only), and the heap in use while simulating 1 M and 4 M blocks (it must not grow).
+// Issue figure: at least 1,000,000 blocks/s end to end on one core. Run: build/bin/bench_feedsim
+#include "kinematics/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <malloc.h>
+#include <sstream>
+
+using namespace hsm::kinematics;
+
+namespace {
+// A finishing-like program: zigzag passes of 0.2-0.8 mm G1 blocks along gently curved lines, 0.4 mm apart.
+std::string finishingProgram(long blocks) {
+  std::string text = "G90 G17 G21\nCYCLE832(0.01,_ORI_FINISH,1)\nG0 X0 Y0 Z5\nG1 Z0 F6000\n";
+  text.reserve(static_cast<size_t>(blocks) * 32);
+  char line[96];
+  double x = 0.0, y = 0.0;
+  int direction = 1;
+  for (long i = 0; i < blocks; ++i) {
+    x += direction * (0.2 + 0.6 * (0.5 + 0.5 * std::sin(i * 0.37)));
+    if (x > 140.0 || x < 0.0) {
+      direction = -direction;
+      y += 0.4;
+    }
+    const double z = -0.5 * std::sin(x / 20.0) * std::cos(y / 15.0);
+    std::snprintf(line, sizeof line, "X%.4f Y%.4f Z%.4f\n", x, y + 0.8 * std::sin(x / 9.0), z);
+    text += line;
+  }
+  return text + "M30\n";
+}
+
+double seconds(const std::function<void()>& work) {
+  double best = 1e300;
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+size_t heapInUse() { return mallinfo2().uordblks; }
+}  // namespace
+
+int main() {
+  const MachineModel machine = loadMachine("mikron-ucp710-840d", {HSM_MACHINES_DIR});
+  const long blocks = 2000000;
+  const std::string program = finishingProgram(blocks);
+
+  long read = 0;
+  const double readTime = seconds([&] {
+    std::istringstream stream(program);
+    GcodeReader reader(stream);
+    Block b;
+    read = 0;
+    while (reader.next(b)) ++read;
+  });
+  SimulationSummary summary;
+  const double simulateTime = seconds([&] {
+    std::istringstream stream(program);
+    summary = simulate(stream, machine).summary;
+  });
+  std::printf("program: %ld G1 blocks of 0.2-0.8 mm, %.0f MB of G-code\n", read, program.size() / 1e6);
+  std::printf("read only:           %8.2f s  %10.0f blocks/s\n", readTime, read / readTime);
+  std::printf("read + simulate:     %8.2f s  %10.0f blocks/s  (840D model, summary only)\n", simulateTime,
+              summary.blockCount / simulateTime);
+  std::printf("simulate / read time ratio: %.2f\n", simulateTime / readTime);
+  std::printf("simulated machining time %.1f s, length/feed %.1f s (x%.2f)\n", summary.totalTime, summary.naiveTime,
+              summary.totalTime / summary.naiveTime);
+
+  for (long n : {1000000L, 4000000L}) {
+    std::istringstream stream(finishingProgram(n));
+    const size_t before = heapInUse();
+    size_t peak = before;
+    SimulationOptions options;
+    options.onProgress = [&](long) { peak = std::max(peak, heapInUse()); };
+    simulate(stream, machine, {}, options);
+    std::printf("heap in use while simulating %ld blocks: %.2f MB above the program text\n", n,
+                (peak - before) / 1e6);
+  }
+  return 0;
+}

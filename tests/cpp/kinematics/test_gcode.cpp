@@ -1,0 +1,174 @@
+#include "kinematics/gcode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+using namespace hsm::kinematics;
+
+namespace {
+std::string errorOf(const std::string& program, ReaderOptions options = {}) {
+  try {
+    readProgram(program, options);
+  } catch (const ParseError& error) {
+    return error.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Gcode, LinesFeedsAndModalState) {
+  const auto blocks = readProgram(
+      "%\n(FreeCAD post)\nG21 G90 G17\nG0 Z5.000\nG0 X10 Y20\nG1 Z-1 F600\nX20 ; modal G1\nG91 Y5\r\nG90\n"
+      "G1 X20 Y25 Z-1\n%\n");
+  ASSERT_EQ(blocks.size(), 5u);  // the last G1 goes nowhere
+  EXPECT_EQ(blocks[0].motion, Motion::Rapid);
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(10, 20, 5));
+  EXPECT_EQ(blocks[2].motion, Motion::Linear);
+  EXPECT_DOUBLE_EQ(blocks[2].feed, 10.0);  // 600 mm/min
+  EXPECT_EQ(blocks[3].end, Eigen::Vector3d(20, 20, -1));
+  EXPECT_EQ(blocks[4].end, Eigen::Vector3d(20, 25, -1));
+  EXPECT_EQ(blocks[4].line, 8);
+}
+
+TEST(Gcode, InchesAndFreeCadFeedsInMmPerSecond) {
+  const auto inch = readProgram("G20 G1 X1 F10\n");
+  EXPECT_DOUBLE_EQ(inch[0].end.x(), 25.4);
+  EXPECT_DOUBLE_EQ(inch[0].feed, 254.0 / 60.0);
+  ReaderOptions path;
+  path.feedInMmPerSecond = true;
+  EXPECT_DOUBLE_EQ(readProgram("G1 X1 F10\n", path)[0].feed, 10.0);
+}
+
+TEST(Gcode, ArcsByCentreAndByRadius) {
+  // Quarter circle radius 10 from (10,0) to (0,10) about the origin, counter-clockwise, three ways.
+  for (const char* program : {"G0 X10 Y0\nG3 X0 Y10 I-10 J0 F600\n", "G0 X10 Y0\nG3 X0 Y10 R10 F600\n",
+                              "G0 X10 Y0\nG3 X0 Y10 CR=10 F600\n", "G0 X10 Y0\nG90.1 G3 X0 Y10 I0 J0 F600\n"}) {
+    const Block arc = readProgram(program)[1];
+    EXPECT_NEAR(arc.radius, 10.0, 1e-12) << program;
+    EXPECT_NEAR(arc.sweep, M_PI / 2, 1e-12) << program;
+    EXPECT_NEAR(arc.center.norm(), 0.0, 1e-9) << program;
+    EXPECT_NEAR(arc.length(), 5 * M_PI, 1e-9);
+    EXPECT_NEAR((arc.pointAt(arc.length() / 2) - Eigen::Vector3d(std::sqrt(50), std::sqrt(50), 0)).norm(), 0, 1e-9);
+    EXPECT_NEAR((arc.tangent(false) - Eigen::Vector3d(0, 1, 0)).norm(), 0, 1e-12);
+  }
+  // R < 0: the long way round (270°), clockwise.
+  const Block longArc = readProgram("G0 X10 Y0\nG2 X0 Y10 R-10 F600\n")[1];
+  EXPECT_NEAR(longArc.sweep, -1.5 * M_PI, 1e-12);
+  // Full circle and a helix in G18 (ZX plane, normal Y).
+  EXPECT_NEAR(readProgram("G0 X5\nG2 I-5 F100\n")[1].sweep, -2 * M_PI, 1e-12);
+  const Block helix = readProgram("G18 G0 X10 Y0 Z0\nG3 X10 Y4 Z0 K0 I-10 F100\n")[1];
+  EXPECT_EQ(helix.normal, Eigen::Vector3d::UnitY());
+  EXPECT_NEAR(helix.length(), std::hypot(2 * M_PI * 10, 4.0), 1e-9);
+}
+
+TEST(Gcode, Siemens840dDialect) {
+  const auto blocks = readProgram(
+      "N10 G54 G17 G90 T=\"BALL4\" M6\nN20 CYCLE832(0.01,_ORI_FINISH,1)\nN30 G0 X0 Y0 Z5\nN40 G1 Z0 F2000\n"
+      "N50 BRISK\nN60 G1 X10\nN70 G60 X20\nN80 G64 X30\nN90 G641 ADIS=0.05 X40\nN100 G4 F2.5\nN110 M30\n");
+  ASSERT_EQ(blocks.size(), 6u);
+  EXPECT_EQ(blocks[1].pathMode, PathMode::Rounding);  // CYCLE832: G642 within 0.01 mm, SOFT
+  EXPECT_DOUBLE_EQ(blocks[1].tolerance, 0.01);
+  EXPECT_EQ(blocks[1].jerkLimited, 1);
+  EXPECT_EQ(blocks[2].jerkLimited, 0);
+  EXPECT_EQ(blocks[3].pathMode, PathMode::ExactStop);
+  EXPECT_EQ(blocks[4].pathMode, PathMode::Continuous);
+  EXPECT_EQ(blocks[5].pathMode, PathMode::Rounding);
+  EXPECT_DOUBLE_EQ(blocks[5].tolerance, 0.05);
+  std::istringstream stream("G4 F2.5\nG4 P1\n");
+  GcodeReader reader(stream);
+  Block b;
+  while (reader.next(b)) {
+  }
+  EXPECT_DOUBLE_EQ(reader.stats().dwellTime, 3.5);
+}
+
+TEST(Gcode, LinuxCncPathModes) {
+  const auto blocks = readProgram("G61 G1 X1 F100\nG64 P0.02 X2\nG64 X3\nG9 X4\nX5\n");
+  EXPECT_EQ(blocks[0].pathMode, PathMode::ExactStop);
+  EXPECT_EQ(blocks[1].pathMode, PathMode::Rounding);
+  EXPECT_DOUBLE_EQ(blocks[1].tolerance, 0.02);
+  EXPECT_EQ(blocks[2].pathMode, PathMode::Continuous);
+  EXPECT_EQ(blocks[3].pathMode, PathMode::ExactStop);  // G9: this block only
+  EXPECT_EQ(blocks[4].pathMode, PathMode::Continuous);
+}
+
+TEST(Gcode, UnknownWordsAreCountedOrRefused) {
+  std::istringstream stream("G1 X1 F100 A5\nG28\nFOO\nG1 X2 E0.5\nTRANS X10\nG1 X3\n");
+  GcodeReader reader(stream);
+  Block b;
+  int moves = 0;
+  while (reader.next(b)) ++moves;
+  EXPECT_EQ(moves, 3);  // TRANS X10 shifts a frame: not a move
+  EXPECT_EQ(reader.stats().unknownWords, 5);
+  EXPECT_EQ(reader.stats().unknownWordCounts.at("G28"), 1);
+  ReaderOptions strict;
+  strict.refuseUnknownWords = true;
+  EXPECT_EQ(errorOf("G1 X1 F100\nG1 X2 A5\n", strict).rfind("line 2: 'A5' is not understood", 0), 0u);
+}
+
+TEST(Gcode, MalformedLinesNameTheirLine) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"G1 X1 F100\nG1 X1.2.3\n", "line 2: 'X1.2"},
+      {"G1 X F100\n", "line 1: 'X "},
+      {"G1 X1 F100\n(unclosed\n", "line 2: comment '(' is not closed"},
+      {"X10\n", "line 1: coordinates before any motion mode"},
+      {"G1 X10\n", "line 1: no feed rate"},
+      {"G0 X10\nG2 X0 Y0 I-3 F100\n", "line 2: arc end point is not on the circle"},
+      {"G0 X10\nG2 X-10 Y0 R3 F100\n", "line 2: arc radius 3.000000 mm is less than half the chord"},
+      {"G0 X10\nG2 X0 Y10 F100\n", "line 2: arc without centre"},
+      {"G1 X1 X2 F100\n", "line 1: axis X given twice"},
+      {"G1 X1 F-5\n", "line 1: feed rate F-5"},
+      {"G1 X1 F100 #5\n", "line 1: unexpected character '#'"},
+      {"CYCLE832(0.01\n", "line 1: 'CYCLE832(' is not closed"},
+  };
+  for (const auto& [program, expected] : cases)
+    EXPECT_EQ(errorOf(program).rfind(expected, 0), 0u) << program << " -> " << errorOf(program);
+}
+
+TEST(Gcode, LargeProgramsAreStreamed) {
+  std::ostringstream text;
+  text << "G1 F1000\n";
+  for (int i = 0; i < 300000; ++i) text << "X" << (i % 2 ? 1.5 : 0.5) << " Y" << i * 0.001 << "\n";
+  std::istringstream stream(text.str());
+  GcodeReader reader(stream);
+  Block b;
+  long n = 0;
+  while (reader.next(b)) ++n;
+  EXPECT_EQ(n, 300000);
+  EXPECT_EQ(reader.stats().lines, 300001);
+}
+
+TEST(Gcode, FuzzedProgramsNeverCrash) {
+  const std::string seed =
+      "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F600\nG2 X10 Y0 I5 J0\nG3 X0 Y0 R5\nCYCLE832(0.01,1)\nG64 P0.01\n"
+      "G1 X-3.5 Y+2 (c) ; c\nSOFT\nG4 P1\nM30\n";
+  const std::string alphabet = "GXYZIJKFRPMNT0123456789.-+ ()\n;=CYCLE832SOFT%/\t\r#abc";
+  std::mt19937 random(11);
+  int parsed = 0, refused = 0;
+  for (int round = 0; round < 20000; ++round) {
+    std::string program = seed;
+    const int edits = 1 + static_cast<int>(random() % 8);
+    for (int e = 0; e < edits; ++e) {
+      const size_t at = random() % (program.size() + 1);
+      switch (random() % 3) {
+        case 0: program.insert(at, 1, alphabet[random() % alphabet.size()]); break;
+        case 1: if (at < program.size()) program.erase(at, 1); break;
+        default: if (at < program.size()) program[at] = alphabet[random() % alphabet.size()];
+      }
+    }
+    try {
+      for (const Block& b : readProgram(program)) {
+        ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
+        ASSERT_TRUE(std::isfinite(b.length()));
+      }
+      ++parsed;
+    } catch (const hsm::InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(parsed, 1000);
+  EXPECT_GT(refused, 1000);
+}

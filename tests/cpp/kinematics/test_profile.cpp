@@ -1,0 +1,65 @@
+#include "kinematics/profile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace hsm::kinematics;
+
+namespace {
+const Dynamics kJerk{2500.0, 5000.0, true};    // Mikron X: A²/J = 1250 mm/s (75 m/min)
+const Dynamics kBrisk{2500.0, 5000.0, false};
+}  // namespace
+
+TEST(Profile, ChangeTimesFollowTheClosedForms) {
+  EXPECT_NEAR(changeTime(0, 100, kJerk), 2.0 * std::sqrt(100.0 / 5000.0), 1e-12);   // jerk-limited
+  EXPECT_NEAR(changeTime(0, 2000, kJerk), 2000.0 / 2500.0 + 2500.0 / 5000.0, 1e-12);  // reaches A
+  EXPECT_NEAR(changeTime(100, 0, kBrisk), 100.0 / 2500.0, 1e-12);
+  EXPECT_NEAR(changeDistance(20, 80, kJerk), 50.0 * changeTime(20, 80, kJerk), 1e-12);
+}
+
+TEST(Profile, ReachableSpeedInvertsChangeDistance) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> speed(0.0, 3000.0), distance(1e-4, 500.0);
+  for (const Dynamics& d : {kJerk, kBrisk}) {
+    for (int i = 0; i < 2000; ++i) {
+      const double v0 = speed(random), s = distance(random);
+      const double v1 = reachableSpeed(v0, s, d);
+      ASSERT_GT(v1, v0);
+      ASSERT_NEAR(changeDistance(v0, v1, d), s, 1e-8 * (1 + s)) << v0 << " " << s;
+    }
+  }
+}
+
+TEST(Profile, LongLineRestToRest) {
+  const double length = 200.0, v = 100.0;  // 6 m/min
+  EXPECT_NEAR(blockProfile(length, 0, 0, v, kJerk).time, length / v + 2.0 * std::sqrt(v / kJerk.jerk), 1e-12);
+  EXPECT_NEAR(blockProfile(length, 0, 0, v, kBrisk).time, length / v + v / kBrisk.acceleration, 1e-12);
+}
+
+TEST(Profile, ShortBlockPeaksBelowCruise) {
+  for (const Dynamics& d : {kJerk, kBrisk}) {
+    const BlockProfile p = blockProfile(2.0, 10.0, 20.0, 500.0, d);
+    EXPECT_LT(p.peak, 500.0);
+    EXPECT_GE(p.peak, 20.0);
+    EXPECT_NEAR(changeDistance(10, p.peak, d) + changeDistance(p.peak, 20, d), 2.0, 1e-6);
+    EXPECT_NEAR(p.cruiseTime, 0.0, 1e-8);
+  }
+}
+
+TEST(Profile, StateAtWalksTheWholeBlock) {
+  for (const Dynamics& d : {kJerk, kBrisk}) {
+    const BlockProfile p = blockProfile(30.0, 5.0, 12.0, 80.0, d);
+    const ProfileState end = stateAt(p, p.time, d);
+    EXPECT_NEAR(end.distance, 30.0, 1e-6);
+    EXPECT_NEAR(end.speed, 12.0, 1e-6);
+    double last = -1.0;
+    for (int i = 0; i <= 1000; ++i) {
+      const ProfileState s = stateAt(p, p.time * i / 1000.0, d);
+      EXPECT_GE(s.distance, last - 1e-12);
+      EXPECT_LE(s.speed, p.peak + 1e-9);
+      last = s.distance;
+    }
+  }
+}
