@@ -38,9 +38,11 @@ test-gui: build
 demo: build
 	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
 	scripts/run-freecadcmd.sh examples/curve_nets.py $(OUT)
+	scripts/run-freecadcmd.sh examples/feedrate_study.py $(OUT)
 
 bench: build
 	$(BUILD_DIR)/bin/bench_curvenet
+	$(BUILD_DIR)/bin/bench_feedsim
 	scripts/run-freecadcmd.sh tests/bench/bench_preview.py
 
 clean:

@@ -2,6 +2,7 @@
 
 #include "geometry/brep.hpp"
 #include "geometry/curve_sampling.hpp"
+#include "geometry/face_drop.hpp"
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -43,6 +44,15 @@ void bindGeometry(py::module_& module) {
       [](const std::string& brep, int count) { return geometry::sampleByArcLength(geometry::readBrep(brep), count); },
       py::arg("brep"), py::arg("count"),
       "(count, 3) points equally spaced by arc length along an edge, a wire or a chain of edges");
+  module.def(
+      "drop_on_face",
+      [](const std::string& faceBrep, geometry::PointArray points, const Eigen::Vector3d& axis) {
+        const geometry::FaceDropper dropper(geometry::singleFace(geometry::readBrep(faceBrep)), axis);
+        const std::vector<char> inside = dropper.dropAndClassify(points);
+        return std::make_pair(points, std::vector<bool>(inside.begin(), inside.end()));
+      },
+      py::arg("face_brep"), py::arg("points"), py::arg("axis") = Eigen::Vector3d::UnitZ(),
+      "Points moved onto the face along the axis, and whether each landed inside the face");
 }
 
 }  // namespace hsm::bindings

@@ -5,4 +5,5 @@
 namespace hsm::bindings {
 void bindGeometry(pybind11::module_& module);
 void bindCurvenet(pybind11::module_& module);
+void bindKinematics(pybind11::module_& module);
 }

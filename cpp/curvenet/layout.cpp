@@ -98,7 +98,7 @@ Layout::Layout(const Boundaries& boundaries, const NetSettings& settings, std::v
     throw InputError("step P = " + mm(settings.step) + " is longer than the common extent of the boundaries (" +
                      mm(to_ - from_) + "): use a step of at most a fifth of it so that the curves keep degree 5");
   placeStations(std::move(stations));
-  if (settings.face) dropper_ = std::make_unique<FaceDropper>(*settings.face, frame_.axis);
+  if (settings.face) dropper_ = std::make_unique<geometry::FaceDropper>(*settings.face, frame_.axis);
   checkBoundaries(warnings);
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "curvenet/plane_cuts.hpp"
+#include "geometry/face_drop.hpp"
 
 #include <memory>
 #include <optional>
@@ -46,7 +47,7 @@ private:
   std::vector<double> stations_;
   PointArray b1Points_, b2Points_;
   std::vector<char> contact_;  // per station: the boundaries pinch there (ignored by the stop rule)
-  std::unique_ptr<FaceDropper> dropper_;
+  std::unique_ptr<geometry::FaceDropper> dropper_;
 };
 
 // K must lie in ]0,1[ (InputError names `name` and the fix).

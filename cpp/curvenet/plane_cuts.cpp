@@ -2,7 +2,6 @@
 
 #include "common/error.hpp"
 
-#include <BRep_Tool.hxx>
 #include <Extrema_LocateExtPC.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <GeomAdaptor_Curve.hxx>
@@ -103,52 +102,6 @@ PlaneCutter::Cuts PlaneCutter::cut(const std::vector<double>& stations) const {
     cuts.points.row(static_cast<Eigen::Index>(k)) = toEigen(curve_->Value(chosen)).transpose();
   }
   return cuts;
-}
-
-FaceDropper::FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis)
-    : surface_(BRep_Tool::Surface(face)), axis_(axis.normalized()) {
-  if (surface_.IsNull()) throw InputError("the bottom face has no surface: pass a face of the model");
-  analysis_ = new ShapeAnalysis_Surface(surface_);
-  surface_->Bounds(u0_, u1_, v0_, v1_);
-  e1_ = axis_.unitOrthogonal();
-  e2_ = axis_.cross(e1_);
-}
-
-int FaceDropper::drop(PointArray& points) const {
-  int failures = 0;
-  bool haveGuess = false;
-  double u = 0.0, v = 0.0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::Vector3d target = points.row(i).transpose();
-    if (!haveGuess) {
-      const gp_Pnt2d uv = analysis_->ValueOfUV(gp_Pnt(target.x(), target.y(), target.z()), 1e-6);
-      u = uv.X();
-      v = uv.Y();
-    }
-    // Newton on the two plan components of S(u,v) − target (the component along the axis is free).
-    bool converged = false;
-    for (int iteration = 0; iteration < 30 && !converged; ++iteration) {
-      gp_Pnt p;
-      gp_Vec su, sv;
-      surface_->D1(u, v, p, su, sv);
-      const Eigen::Vector3d r = toEigen(p) - target;
-      const double r1 = e1_.dot(r), r2 = e2_.dot(r);
-      if (std::hypot(r1, r2) < 1e-9) {
-        converged = true;
-        points.row(i) = toEigen(p).transpose();
-        break;
-      }
-      const double a = e1_.dot(toEigen(su)), b = e1_.dot(toEigen(sv));
-      const double c = e2_.dot(toEigen(su)), d = e2_.dot(toEigen(sv));
-      const double det = a * d - b * c;
-      if (std::abs(det) < 1e-14) break;  // the surface is vertical here: no drop along the axis
-      u = std::clamp(u - (d * r1 - b * r2) / det, u0_, u1_);
-      v = std::clamp(v - (a * r2 - c * r1) / det, v0_, v1_);
-    }
-    haveGuess = converged;
-    if (!converged) ++failures;
-  }
-  return failures;
 }
 
 std::pair<Handle(Geom_BSplineCurve), double> fitCurve(const PointArray& points, double tolerance) {

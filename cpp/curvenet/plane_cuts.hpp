@@ -4,9 +4,6 @@
 
 #include "curvenet/curvenet.hpp"
 
-#include <Geom_Surface.hxx>
-#include <ShapeAnalysis_Surface.hxx>
-
 #include <utility>
 #include <vector>
 
@@ -47,20 +44,6 @@ private:
 
 // Copy of `curve` oriented so that d·x grows from its first to its last point.
 Handle(Geom_BSplineCurve) orientedAlong(const Handle(Geom_BSplineCurve)& curve, const Eigen::Vector3d& direction);
-
-// Moves points along the tool axis onto the face's surface, keeping their plan position.
-class FaceDropper {
-public:
-  FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis);
-  // Returns the number of points that could not be dropped (left where they were).
-  int drop(PointArray& points) const;
-
-private:
-  Handle(Geom_Surface) surface_;
-  Handle(ShapeAnalysis_Surface) analysis_;
-  Eigen::Vector3d axis_, e1_, e2_;
-  double u0_, u1_, v0_, v1_;
-};
 
 // Degree-5 (or points−1) B-spline approximating the points within `tolerance`, chord-length parameters, C2.
 // Also returns the largest distance from a point to the curve.

@@ -40,6 +40,9 @@ public:
       current_.line = s.block.line;
       current_.motion = s.block.motion;
       current_.start = s.block.start;
+      current_.center = s.block.center;
+      current_.normal = s.block.normal;
+      current_.sweep = s.block.isArc() ? s.block.sweep : 0.0;
       current_.programmedFeed = s.programmed;
       current_.entryFeed = p.entry;
       current_.minFeed = p.min;

@@ -24,6 +24,8 @@ struct BlockResult {
   long line = 0;                   // source line
   Motion motion = Motion::Linear;
   Eigen::Vector3d start = Eigen::Vector3d::Zero(), end = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();  // arcs
+  double sweep = 0.0;              // arcs: signed angle about `normal`, radians (0 for lines)
   double length = 0.0;             // mm
   double programmedFeed = 0.0;     // mm/s (rapid: the rapid speed along the block)
   double entryFeed = 0.0, exitFeed = 0.0, peakFeed = 0.0;  // mm/s

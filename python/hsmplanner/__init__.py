@@ -14,7 +14,9 @@ except ImportError as error:  # the module is built by `make build`; say so inst
 
 from ._core import BSplineCurve, CurveNet, NetCurve, ShapeSummary, __version__
 from .curvenet import area_regions, as_curve, curve_net, guidance_curves, intermediate_curve
-from .geometry import as_brep, sample_curve, shape_summary
+from .feedsim import load_machine, machine_names, simulate
+from .geometry import as_brep, drop_on_face, sample_curve, shape_summary
 
 __all__ = ["BSplineCurve", "CurveNet", "NetCurve", "ShapeSummary", "__version__", "area_regions", "as_brep",
-           "as_curve", "curve_net", "guidance_curves", "intermediate_curve", "sample_curve", "shape_summary"]
+           "as_curve", "curve_net", "drop_on_face", "guidance_curves", "intermediate_curve", "load_machine", "machine_names",
+           "sample_curve", "shape_summary", "simulate"]

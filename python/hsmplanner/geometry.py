@@ -27,3 +27,10 @@ def shape_summary(shape):
 def sample_curve(curve, count):
     """(count, 3) numpy array of points equally spaced by arc length along an edge or a wire."""
     return np.asarray(_core.sample_curve_brep(as_brep(curve), int(count)))
+
+
+def drop_on_face(face, points, axis=(0.0, 0.0, 1.0)):
+    """Points moved onto `face` along `axis` (plan position kept): ((N,3) array, (N,) bool inside the face)."""
+    dropped, inside = _core.drop_on_face(as_brep(face), np.asarray(points, dtype=float).reshape(-1, 3),
+                                         np.asarray(tuple(axis), dtype=float))
+    return np.asarray(dropped), np.asarray(inside, dtype=bool)

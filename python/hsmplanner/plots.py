@@ -1,10 +1,29 @@
-"""Pictures written by examples and reports (matplotlib, headless Agg backend). No FreeCAD needed."""
-import matplotlib
+"""Pictures written by examples and reports, and drawn in the GUI's panels. No FreeCAD needed.
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+Figures are made without pyplot (matplotlib.figure.Figure with an Agg canvas), so importing this module
+never changes the matplotlib backend of the FreeCAD session it runs in.
+"""
+import matplotlib
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+
+def new_figure(width, height, dpi=110):
+    """A Figure with an Agg canvas, ready for savefig."""
+    figure = Figure(figsize=(width, height), dpi=dpi)
+    FigureCanvasAgg(figure)
+    return figure
+
+
+def subplots(rows, columns, width, height, dpi=110):
+    figure = new_figure(width, height, dpi)
+    axes = np.array([[figure.add_subplot(rows, columns, r * columns + c + 1) for c in range(columns)]
+                     for r in range(rows)])
+    return figure, axes
 
 _LIGHT = np.array([0.3, -0.5, 0.8]) / np.linalg.norm([0.3, -0.5, 0.8])
 
@@ -24,7 +43,7 @@ def plot_part_with_curves(meshes, curves, path, title, plan_marks=()):
     meshes: list of (vertices (N,3), triangles (M,3), rgb); curves: list of (points (N,3), colour, label);
     plan_marks: list of (x, y, text) annotated on the plan view.
     """
-    figure = plt.figure(figsize=(14, 6), dpi=110)
+    figure = new_figure(14, 6)
     view3d = figure.add_subplot(1, 2, 1, projection="3d")
     for vertices, triangles, rgb in meshes:
         polygons = Poly3DCollection(vertices[triangles], facecolors=_shaded(vertices, triangles, rgb),
@@ -57,12 +76,11 @@ def plot_part_with_curves(meshes, curves, path, title, plan_marks=()):
     figure.suptitle(title)
     figure.subplots_adjust(left=0.02, right=0.98, wspace=0.12)
     figure.savefig(path)
-    plt.close(figure)
     return path
 
 
 def _area_colour(index):
-    palette = plt.get_cmap("tab20")
+    palette = matplotlib.colormaps["tab20"]
     return palette((2 * index + index // 10) % 20)
 
 
@@ -87,7 +105,7 @@ def plot_net_plan(axes, curves, areas, title, labels=None):
 def save_net_grid(panels, path, title, columns=3):
     """One plan view per net: panels is a list of (curves, areas, title) for plot_net_plan."""
     rows = (len(panels) + columns - 1) // columns
-    figure, grid = plt.subplots(rows, columns, figsize=(5.2 * columns, 2.9 * rows), dpi=110, squeeze=False)
+    figure, grid = subplots(rows, columns, 5.2 * columns, 2.9 * rows)
     for axes, panel in zip(grid.flat, panels):
         plot_net_plan(axes, *panel)
     for axes in list(grid.flat)[len(panels):]:
@@ -95,5 +113,98 @@ def save_net_grid(panels, path, title, columns=3):
     figure.suptitle(title)
     figure.tight_layout()
     figure.savefig(path)
-    plt.close(figure)
+    return path
+
+
+# --- feed-rate reports ------------------------------------------------------------------------------------
+
+FEED_COLORMAP = "RdYlGn"  # red where the machine slows down, green at the programmed feed
+FEED_CLASS_LABELS = ("<0.3", "0.3-0.5", "0.5-0.7", "0.7-0.9", "≥0.9")
+
+
+def feed_colors(ratios):
+    """RGB per value of reached / programmed feed (0..1), the same in PNG maps and in the 3D view."""
+    cmap = matplotlib.colormaps[FEED_COLORMAP]
+    return cmap(np.clip(np.asarray(ratios, dtype=float), 0.0, 1.0))[:, :3]
+
+
+def block_polylines(blocks, arc_points=16):
+    """One (k,3) polyline per block: lines as 2 points, arcs (and helices) sampled."""
+    lines = []
+    for i in range(len(blocks["line"])):
+        start, end, sweep = blocks["start"][i], blocks["end"][i], blocks["sweep"][i]
+        if sweep == 0.0:
+            lines.append(np.vstack([start, end]))
+            continue
+        n, c = blocks["normal"][i], blocks["center"][i]
+        radial = start - c
+        rise = np.dot(end - start, n)
+        f = np.linspace(0.0, 1.0, max(3, int(arc_points * abs(sweep) / np.pi) + 2))[:, None]
+        angle = f * sweep
+        cross = np.cross(n, radial)
+        rotated = radial * np.cos(angle) + cross * np.sin(angle)
+        lines.append(c + rotated + f * rise * n)
+    return lines
+
+
+def draw_feed_histograms(figure, summary):
+    """Feed classes (share of blocks, length, time) and block-length classes of a summary dict (JSON keys)."""
+    figure.clear()
+    left, right = figure.add_subplot(1, 2, 1), figure.add_subplot(1, 2, 2)
+    classes = summary["feed_classes"]
+    x = np.arange(5)
+    for offset, (key, label, colour) in zip((-0.27, 0, 0.27), (
+            ("share_of_blocks", "blocks", "#8da0cb"), ("share_of_length", "length", "#66c2a5"),
+            ("share_of_time", "time", "#fc8d62"))):
+        left.bar(x + offset, 100 * np.asarray(classes[key]), width=0.26, label=label, color=colour)
+    left.set_xticks(x)
+    left.set_xticklabels(FEED_CLASS_LABELS)
+    left.set_xlabel("reached / programmed feed")
+    left.set_ylabel("% of cutting")
+    left.legend(fontsize=8)
+    left.set_title("feed classes", fontsize=10)
+    edges = summary["block_length_classes"]["edges_mm"]
+    labels = ["<%g" % edges[0]] + ["%g-%g" % (a, b) for a, b in zip(edges, edges[1:])] + ["≥%g" % edges[-1]]
+    right.bar(np.arange(len(labels)), summary["block_length_classes"]["cutting_blocks"], color="#8da0cb")
+    right.set_xticks(np.arange(len(labels)))
+    right.set_xticklabels(labels, rotation=35, fontsize=8)
+    right.set_xlabel("block length (mm)")
+    right.set_ylabel("cutting blocks")
+    right.set_title("block lengths", fontsize=10)
+    figure.suptitle("%s: %.1f s simulated, %.1f s by length/feed (x%.2f)" % (
+        summary["machine"], summary["total_time_s"], summary["naive_time_s"], summary["time_over_naive"]),
+        fontsize=10)
+    figure.tight_layout()
+
+
+def save_feed_histograms(summary, path):
+    figure = new_figure(11, 4.2)
+    draw_feed_histograms(figure, summary)
+    figure.savefig(path)
+    return path
+
+
+def save_feed_map(blocks, path, title):
+    """Plan view of the path, each cutting block coloured by its mean reached / programmed feed."""
+    from matplotlib.collections import LineCollection
+
+    figure = new_figure(11, 6.5)
+    axes = figure.add_subplot(1, 1, 1)
+    ratios = blocks["mean_feed"] / np.maximum(blocks["programmed_feed"], 1e-12)
+    lines = block_polylines(blocks)
+    cutting = blocks["motion"] != 0
+    segments = [p[:, :2] for p, cut in zip(lines, cutting) if cut]
+    collection = LineCollection(segments, colors=feed_colors(ratios[cutting]), linewidths=2.0)
+    axes.add_collection(collection)
+    rapids = [p[:, :2] for p, cut in zip(lines, cutting) if not cut]
+    axes.add_collection(LineCollection(rapids, colors="#999999", linewidths=0.5, linestyles="dotted"))
+    axes.autoscale()
+    axes.set_aspect("equal")
+    axes.set_xlabel("X (mm)")
+    axes.set_ylabel("Y (mm)")
+    scalar = ScalarMappable(cmap=FEED_COLORMAP, norm=Normalize(0, 100))
+    figure.colorbar(scalar, ax=axes, label="mean reached feed, % of programmed", shrink=0.8)
+    axes.set_title(title, fontsize=10)
+    figure.tight_layout()
+    figure.savefig(path)
     return path

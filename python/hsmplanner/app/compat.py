@@ -43,6 +43,7 @@ _MODULES = {
     "tool_bit": ("Path.Tool.Bit", "PathScripts.PathToolBit"),
     "utils": ("Path.Base.Util", "PathScripts.PathUtil"),
     "post_processor": ("Path.Post.Processor", "PathScripts.PostUtils"),
+    "custom_op": ("Path.Op.Custom", "PathScripts.PathCustom"),
 }
 
 

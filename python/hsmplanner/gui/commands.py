@@ -4,7 +4,7 @@ import FreeCADGui
 
 from hsmplanner.resources import icon
 
-COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet"]
+COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_FeedRateAnalysis"]
 
 
 class CommandMasterBottomFeature:
@@ -64,6 +64,45 @@ class CommandGuideCurveNet:
         return obj
 
 
+class CommandFeedRateAnalysis:
+    """Simulate the selected Job or operation on a machine model: feed-rate map, histograms, times."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("FeedRateAnalysis"),
+            "MenuText": "Feed-rate analysis",
+            "ToolTip": "Simulate what the machine really does on the selected Job or operation: machining time "
+                       "against length/feed, feed classes, and a map of the reached feed on the path",
+        }
+
+    @staticmethod
+    def selected_source():
+        from hsmplanner.app.feedrate import is_simulatable
+
+        selection = FreeCADGui.Selection.getSelection()
+        return selection[0] if len(selection) == 1 and is_simulatable(selection[0]) else None
+
+    def IsActive(self):
+        return self.selected_source() is not None
+
+    def Activated(self):
+        from hsmplanner.app import feedrate_object
+        from hsmplanner.gui.view_providers import ViewProviderFeedRateAnalysis
+
+        source = self.selected_source()
+        document = source.Document
+        document.openTransaction("Feed-rate analysis")
+        try:
+            obj = feedrate_object.create(source, document=document)
+            ViewProviderFeedRateAnalysis(obj.ViewObject)
+            obj.ViewObject.Proxy.redraw(obj)
+        finally:
+            document.commitTransaction()
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        return obj
+
+
 def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
     FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())
+    FreeCADGui.addCommand("HSM_FeedRateAnalysis", CommandFeedRateAnalysis())

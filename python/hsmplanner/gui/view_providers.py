@@ -80,3 +80,62 @@ class ViewProviderGuideCurveNet(_StatelessViewProvider):
 
         FreeCADGui.Control.closeDialog()
         return True
+
+
+class ViewProviderFeedRateAnalysis(_StatelessViewProvider):
+    """The feed-rate map of the simulated path, with its legend."""
+
+    ICON = "FeedRateAnalysis"
+
+    def attach(self, view_object):
+        from pivy import coin
+
+        super().attach(view_object)
+        self.root = coin.SoSeparator()
+        view_object.addDisplayMode(self.root, "Map")
+
+    def getDisplayModes(self, view_object):
+        return ["Map"]
+
+    def getDefaultDisplayMode(self):
+        return "Map"
+
+    def setDisplayMode(self, mode):
+        return mode
+
+    def updateData(self, obj, prop):
+        if prop in ("TotalTime", "ColorBy"):
+            self.redraw(obj)
+
+    def onChanged(self, view_object, prop):
+        pass
+
+    def redraw(self, obj):
+        from .feedmap import map_node
+
+        if not hasattr(self, "root"):
+            return
+        self.root.removeAllChildren()
+        result = obj.Proxy.ensure_result(obj) if obj.Proxy else None
+        if result is not None and len(result.blocks["line"]):
+            self.root.addChild(map_node(result.blocks, obj.ColorBy))
+
+    def doubleClicked(self, view_object):
+        import FreeCADGui
+
+        FreeCADGui.ActiveDocument.setEdit(view_object.Object.Name)
+        return True
+
+    def setEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        from .feedrate_panel import FeedRatePanel
+
+        FreeCADGui.Control.showDialog(FeedRatePanel(view_object.Object))
+        return True
+
+    def unsetEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True

@@ -1,0 +1,171 @@
+#include "bindings/bindings.hpp"
+
+#include "kinematics/report.hpp"
+#include "kinematics/simulation.hpp"
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace py = pybind11;
+
+namespace hsm::bindings {
+
+namespace {
+using namespace kinematics;
+
+// Per-block results as a dict of numpy arrays (speeds in mm/s, as everywhere inside).
+py::dict blockArrays(const std::vector<BlockResult>& blocks) {
+  const auto n = static_cast<py::ssize_t>(blocks.size());
+  py::array_t<long> line(n), motion(n);
+  py::array_t<double> start({n, py::ssize_t(3)}), end({n, py::ssize_t(3)});
+  py::array_t<double> center({n, py::ssize_t(3)}), normal({n, py::ssize_t(3)}), sweep(n);
+  const char* names[] = {"length", "programmed_feed", "entry_feed", "exit_feed", "min_feed", "mean_feed",
+                         "peak_feed", "start_time", "time"};
+  std::vector<py::array_t<double>> columns;
+  for (size_t c = 0; c < 9; ++c) columns.emplace_back(n);
+  auto l = line.mutable_unchecked<1>();
+  auto m = motion.mutable_unchecked<1>();
+  auto s = start.mutable_unchecked<2>();
+  auto e = end.mutable_unchecked<2>();
+  auto c = center.mutable_unchecked<2>();
+  auto nn = normal.mutable_unchecked<2>();
+  auto sw = sweep.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const BlockResult& b = blocks[static_cast<size_t>(i)];
+    l(i) = b.line;
+    m(i) = static_cast<long>(b.motion);
+    for (int k = 0; k < 3; ++k) {
+      s(i, k) = b.start[k];
+      e(i, k) = b.end[k];
+      c(i, k) = b.center[k];
+      nn(i, k) = b.normal[k];
+    }
+    sw(i) = b.sweep;
+    const double values[] = {b.length, b.programmedFeed, b.entryFeed, b.exitFeed, b.minFeed,
+                             b.meanFeed, b.peakFeed, b.startTime, b.time};
+    for (size_t c = 0; c < 9; ++c) columns[c].mutable_at(i) = values[c];
+  }
+  py::dict result;
+  result["line"] = line;
+  result["motion"] = motion;
+  result["start"] = start;
+  result["end"] = end;
+  result["center"] = center;
+  result["normal"] = normal;
+  result["sweep"] = sweep;
+  for (size_t c = 0; c < 9; ++c) result[names[c]] = columns[c];
+  return result;
+}
+
+py::array_t<double> traceArray(const std::vector<TraceSample>& trace) {
+  py::array_t<double> array({static_cast<py::ssize_t>(trace.size()), py::ssize_t(5)});
+  auto a = array.mutable_unchecked<2>();
+  for (size_t i = 0; i < trace.size(); ++i) {
+    const TraceSample& t = trace[i];
+    const double row[] = {t.t, t.x, t.y, t.z, t.v};
+    for (int k = 0; k < 5; ++k) a(static_cast<py::ssize_t>(i), k) = row[k];
+  }
+  return array;
+}
+
+SimulationResult run(std::istream& stream, const MachineModel& machine, bool keepBlocks, double tracePeriod,
+                     bool refuseUnknown, bool feedPerSecond) {
+  ReaderOptions reading;
+  reading.refuseUnknownWords = refuseUnknown;
+  reading.feedInMmPerSecond = feedPerSecond;
+  SimulationOptions options;
+  options.keepBlocks = keepBlocks;
+  options.tracePeriod = tracePeriod;
+  py::gil_scoped_release release;  // long programs: let other Python threads (the GUI) run
+  return simulate(stream, machine, reading, options);
+}
+}  // namespace
+
+void bindKinematics(py::module_& m) {
+  py::class_<MachineModel>(m, "MachineModel", "Axis limits and controller behaviour (mm, s inside)")
+      .def(py::init<>())
+      .def_static("from_json", &machineFromJson, py::arg("text"), py::arg("origin") = "machine file")
+      .def_static("load", &loadMachine, py::arg("name_or_file"), py::arg("folders"))
+      .def("to_json", &machineToJson)
+      .def_readwrite("name", &MachineModel::name)
+      .def_readwrite("description", &MachineModel::description)
+      .def_property_readonly("controller", [](const MachineModel& x) { return controllerName(x.controller); })
+      .def_readwrite("max_velocity", &MachineModel::maxVelocity, "mm/s per axis X, Y, Z")
+      .def_readwrite("max_acceleration", &MachineModel::maxAcceleration, "mm/s² per axis")
+      .def_readwrite("max_jerk", &MachineModel::maxJerk, "mm/s³ per axis")
+      .def_readwrite("rapid_velocity", &MachineModel::rapidVelocity, "mm/s per axis")
+      .def_readwrite("velocity_jump", &MachineModel::velocityJump, "mm/s per axis")
+      .def_readwrite("interpolation_cycle", &MachineModel::interpolationCycle, "s")
+      .def_readwrite("look_ahead_blocks", &MachineModel::lookAheadBlocks)
+      .def_readwrite("corner_tolerance", &MachineModel::cornerTolerance, "mm")
+      .def_readwrite("jerk_limited_by_default", &MachineModel::jerkLimitedByDefault);
+  m.def("machine_names", &machineNames, py::arg("folders"));
+
+  py::class_<SimulationSummary>(m, "SimulationSummary", "Times in s, lengths in mm")
+      .def_readonly("machine", &SimulationSummary::machine)
+      .def_readonly("total_time", &SimulationSummary::totalTime)
+      .def_readonly("cutting_time", &SimulationSummary::cuttingTime)
+      .def_readonly("rapid_time", &SimulationSummary::rapidTime)
+      .def_readonly("dwell_time", &SimulationSummary::dwellTime)
+      .def_readonly("naive_time", &SimulationSummary::naiveTime)
+      .def_readonly("naive_cutting_time", &SimulationSummary::naiveCuttingTime)
+      .def_readonly("block_count", &SimulationSummary::blockCount)
+      .def_readonly("cutting_blocks", &SimulationSummary::cuttingBlocks)
+      .def_readonly("rapid_blocks", &SimulationSummary::rapidBlocks)
+      .def_readonly("cutting_length", &SimulationSummary::cuttingLength)
+      .def_readonly("rapid_length", &SimulationSummary::rapidLength)
+      .def_property_readonly("feed_classes_blocks", [](const SimulationSummary& s) { return s.feedClasses.blocks; })
+      .def_property_readonly("feed_classes_length", [](const SimulationSummary& s) { return s.feedClasses.length; })
+      .def_property_readonly("feed_classes_time", [](const SimulationSummary& s) { return s.feedClasses.time; })
+      .def_readonly("length_classes", &SimulationSummary::lengthClasses)
+      .def_property_readonly("unknown_words", [](const SimulationSummary& s) { return s.reader.unknownWords; })
+      .def_property_readonly("unknown_word_counts",
+                             [](const SimulationSummary& s) { return s.reader.unknownWordCounts; })
+      .def_property_readonly("lines", [](const SimulationSummary& s) { return s.reader.lines; })
+      .def("to_json", &summaryJson, py::arg("program") = "")
+      .def("to_text", &summaryText);
+  m.attr("FEED_CLASS_EDGES") = kFeedClassEdges;
+  m.attr("LENGTH_CLASS_EDGES_MM") = kLengthClassEdges;
+
+  py::class_<SimulationResult>(m, "SimulationResult")
+      .def_readonly("summary", &SimulationResult::summary)
+      .def_property_readonly("blocks", [](const SimulationResult& r) { return blockArrays(r.blocks); },
+                             "dict of numpy arrays, one entry per block (empty unless blocks were kept)")
+      .def_property_readonly("trace", [](const SimulationResult& r) { return traceArray(r.trace); },
+                             "(N, 5) array of t, x, y, z, speed (s, mm, mm/s)")
+      .def(
+          "blocks_csv",
+          [](const SimulationResult& r) {
+            std::ostringstream out;
+            out << blockCsvHeader();
+            for (const BlockResult& b : r.blocks) writeBlockCsv(out, b);
+            return out.str();
+          },
+          "the kept blocks as CSV text, feeds in mm/min");
+
+  m.def(
+      "simulate_text",
+      [](const std::string& text, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
+         bool perSecond) {
+        std::istringstream stream(text);
+        return run(stream, machine, keepBlocks, tracePeriod, refuse, perSecond);
+      },
+      py::arg("text"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
+  m.def(
+      "simulate_file",
+      [](const std::string& path, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
+         bool perSecond) {
+        std::ifstream stream(path, std::ios::binary);
+        if (!stream) throw InputError("cannot read the program '" + path + "': check the path");
+        return run(stream, machine, keepBlocks, tracePeriod, refuse, perSecond);
+      },
+      py::arg("path"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
+}
+
+}  // namespace hsm::bindings

@@ -1,0 +1,44 @@
+"""Feed-rate simulation of FreeCAD Path/CAM objects: a Job, an operation, or any object with a Path.
+
+Pure functions here; the document object is feedrate_object.py.
+"""
+from hsmplanner import feedsim
+
+
+def is_job(obj):
+    return hasattr(obj, "Operations") and hasattr(obj.Operations, "Group")
+
+
+def is_simulatable(obj):
+    return obj is not None and (is_job(obj) or hasattr(obj, "Path"))
+
+
+def program_commands(obj):
+    """Path commands as the machine would get them: for a Job, each active operation in order, with its tool
+    controller's tool change when the tool changes (as FreeCAD's posts emit them); else the object's Path."""
+    if is_job(obj):
+        commands, tool = [], None
+        for op in obj.Operations.Group:
+            if not getattr(op, "Active", True) or not hasattr(op, "Path"):
+                continue
+            controller = getattr(op, "ToolController", None)
+            if controller is not None and controller is not tool and hasattr(controller, "Path"):
+                commands += controller.Path.Commands
+                tool = controller
+            commands += op.Path.Commands
+        return commands
+    if hasattr(obj, "Path"):
+        return list(obj.Path.Commands)
+    raise ValueError("%s has no toolpath: pick a Path/CAM Job or operation" % getattr(obj, "Label", obj))
+
+
+def simulate_object(obj, machine="mikron-ucp710-840d", blocks=True, trace_period=None):
+    """Simulate a Job or an operation; FreeCAD's feeds (mm/s) are read as they are stored."""
+    commands = program_commands(obj)
+    if not commands:
+        raise ValueError("%s has an empty toolpath: recompute it first" % obj.Label)
+    return feedsim.simulate(commands, machine, blocks=blocks, trace_period=trace_period)
+
+
+def machine_choices():
+    return feedsim.machine_names()

@@ -1,0 +1,106 @@
+"""Parametric "Feed-rate analysis" document object (App::FeaturePython): a Job or operation simulated on a
+machine model. Thin: properties wired to hsmplanner.app.feedrate.simulate_object. The per-block result is
+kept in memory (not in the file) and rebuilt on recompute; the view provider draws it as a feed-rate map.
+"""
+import FreeCAD
+
+from hsmplanner import feedsim
+
+from .feedrate import is_simulatable, simulate_object
+
+TYPE_NAME = "App::FeaturePython"
+DEFAULT_MACHINE = "mikron-ucp710-840d"
+CUSTOM_MACHINE = "(machine file)"
+COLOR_MODES = ["Share of programmed feed", "Feed (mm/min)"]
+
+_OUTPUTS = [
+    ("App::PropertyFloat", "TotalTime", "simulated machining time, s"),
+    ("App::PropertyFloat", "CuttingTime", "time in G1/G2/G3, s"),
+    ("App::PropertyFloat", "RapidTime", "time in G0, s"),
+    ("App::PropertyFloat", "NaiveTime", "length / programmed feed, as CAM systems estimate it, s"),
+    ("App::PropertyFloat", "TimeOverNaive", "simulated time / naive time"),
+    ("App::PropertyInteger", "BlockCount", "motion blocks"),
+    ("App::PropertyFloatList", "FeedClassesTime", "share of cutting time per feed class (<0.3 … ≥0.9 of F)"),
+    ("App::PropertyFloatList", "FeedClassesBlocks", "share of cutting blocks per feed class"),
+    ("App::PropertyFloatList", "FeedClassesLength", "share of cutting length per feed class"),
+    ("App::PropertyIntegerList", "LengthClasses", "cutting blocks per block-length class"),
+    ("App::PropertyString", "Report", "the summary as JSON"),
+]
+
+
+class FeedRateAnalysis:
+    def __init__(self, obj):
+        obj.addProperty("App::PropertyLink", "Source", "Feed-rate analysis", "Job or operation to simulate")
+        obj.addProperty("App::PropertyEnumeration", "Machine", "Feed-rate analysis", "machine model")
+        obj.Machine = feedsim.machine_names() + [CUSTOM_MACHINE]
+        obj.Machine = DEFAULT_MACHINE
+        obj.addProperty("App::PropertyFile", "MachineFile", "Feed-rate analysis",
+                        "machine JSON file, used when Machine is '%s'" % CUSTOM_MACHINE)
+        obj.addProperty("App::PropertyEnumeration", "ColorBy", "Display", "what the colours of the map show")
+        obj.ColorBy = COLOR_MODES
+        for prop_type, name, tooltip in _OUTPUTS:
+            obj.addProperty(prop_type, name, "Result", tooltip)
+            obj.setEditorMode(name, 1)
+        obj.Proxy = self
+        self.result = None
+
+    def machine(self, obj):
+        if obj.Machine == CUSTOM_MACHINE:
+            if not obj.MachineFile:
+                raise ValueError("Machine is '%s' but MachineFile is empty: choose a machine JSON file" % CUSTOM_MACHINE)
+            return obj.MachineFile
+        return obj.Machine
+
+    def execute(self, obj):
+        if not is_simulatable(obj.Source):
+            raise ValueError("Source is not a Path/CAM Job or operation: link one")
+        self.result = simulate_object(obj.Source, self.machine(obj), blocks=True)
+        summary = feedsim.summary_dict(self.result.summary, obj.Source.Label)
+        obj.CuttingTime, obj.RapidTime = summary["cutting_time_s"], summary["rapid_time_s"]
+        obj.NaiveTime, obj.TimeOverNaive = summary["naive_time_s"], summary["time_over_naive"]
+        obj.BlockCount = summary["block_count"]
+        classes = summary["feed_classes"]
+        obj.FeedClassesTime = classes["share_of_time"]
+        obj.FeedClassesBlocks = classes["share_of_blocks"]
+        obj.FeedClassesLength = classes["share_of_length"]
+        obj.LengthClasses = summary["block_length_classes"]["cutting_blocks"]
+        obj.Report = self.result.summary.to_json(obj.Source.Label)
+        obj.TotalTime = summary["total_time_s"]  # last: the view provider redraws on it
+
+    def ensure_result(self, obj):
+        """The per-block result, simulated again after the document was reopened."""
+        if getattr(self, "result", None) is None and is_simulatable(obj.Source):
+            self.execute(obj)
+        return self.result
+
+    def onDocumentRestored(self, obj):
+        self.result = None
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        self.result = None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        self.result = None
+
+
+def create(source, machine=DEFAULT_MACHINE, document=None, name="FeedRateAnalysis"):
+    """Add a feed-rate analysis of `source` (a Job or an operation) on `machine`, recomputed."""
+    if not is_simulatable(source):
+        raise ValueError("%s is not a Path/CAM Job or operation" % getattr(source, "Label", source))
+    document = document or source.Document
+    obj = document.addObject(TYPE_NAME, name)
+    FeedRateAnalysis(obj)
+    obj.Source = source
+    if machine in obj.getEnumerationsOfProperty("Machine"):
+        obj.Machine = machine
+    else:
+        obj.Machine = CUSTOM_MACHINE
+        obj.MachineFile = machine
+    obj.recompute()
+    return obj

@@ -1,0 +1,110 @@
+"""Feed-rate simulation from Python: what the machine really does on a program (no FreeCAD needed).
+
+    result = hsmplanner.simulate("part.ngc", machine="mikron-ucp710-840d", blocks=True)
+    result.summary.total_time, result.summary.naive_time, result.blocks["mean_feed"]
+
+A program is a G-code file path, G-code text, or FreeCAD Path commands (a Path, an object with a Path, or a
+list of commands: their F is in mm/s, as FreeCAD stores it). Speeds are mm/s inside; reports write mm/min.
+"""
+import json
+import os
+
+from . import _core
+from .resources import RESOURCES_DIR
+
+MACHINES_DIR = os.path.join(RESOURCES_DIR, "machines")
+FEED_CLASS_LABELS = ("<0.3", "0.3-0.5", "0.5-0.7", "0.7-0.9", ">=0.9")
+MOTION_NAMES = ("G0", "G1", "G2", "G3")  # result.blocks["motion"] indexes this
+
+
+def machine_folders():
+    """Where machine files are looked up by name: $HSM_MACHINES_DIR, then resources/machines."""
+    folders = [os.environ["HSM_MACHINES_DIR"]] if os.environ.get("HSM_MACHINES_DIR") else []
+    return folders + [MACHINES_DIR]
+
+
+def machine_names():
+    return _core.machine_names(machine_folders())
+
+
+def load_machine(machine):
+    """A MachineModel from a preset name, a JSON file path, a dict of the JSON keys, or a MachineModel."""
+    if isinstance(machine, _core.MachineModel):
+        return machine
+    if isinstance(machine, dict):
+        return _core.MachineModel.from_json(json.dumps(machine), "machine dict")
+    if isinstance(machine, (str, os.PathLike)):
+        return _core.MachineModel.load(os.fspath(machine), machine_folders())
+    raise TypeError("machine must be a preset name (%s), a JSON file, a dict or a MachineModel, got %s"
+                    % (", ".join(machine_names()), type(machine).__name__))
+
+
+def _path_commands(program):
+    """FreeCAD Path commands of `program`, or None when it is not a Path-like object."""
+    if hasattr(program, "Path") and hasattr(program.Path, "Commands"):
+        program = program.Path
+    if hasattr(program, "Commands"):
+        return list(program.Commands)
+    if isinstance(program, (list, tuple)) and program and all(hasattr(c, "toGCode") for c in program):
+        return list(program)
+    return None
+
+
+def path_to_gcode(commands):
+    """G-code text of FreeCAD Path commands, with FreeCAD's feeds in mm/s."""
+    return "\n".join(c.toGCode() for c in commands) + "\n"
+
+
+def simulate(program, machine="mikron-ucp710-840d", blocks=False, trace_period=None, refuse_unknown_words=False):
+    """Simulate `program` on `machine`; returns a SimulationResult (summary, blocks, trace).
+
+    blocks=True keeps one result per block (arrays in result.blocks); trace_period (s) samples t, x, y, z,
+    speed along the run into result.trace. Without them memory does not grow with the program.
+    """
+    model = load_machine(machine)
+    period = float(trace_period or 0.0)
+    if period < 0:
+        raise ValueError("trace_period %g s must be positive (or None for no trace)" % period)
+    commands = _path_commands(program)
+    if commands is not None:
+        return _core.simulate_text(path_to_gcode(commands), model, bool(blocks), period, refuse_unknown_words, True)
+    if isinstance(program, os.PathLike) or (isinstance(program, str) and "\n" not in program
+                                            and os.path.isfile(program)):
+        return _core.simulate_file(os.fspath(program), model, bool(blocks), period, refuse_unknown_words, False)
+    if isinstance(program, str):
+        if "\n" not in program and program.strip() and not any(c in program for c in " ;("):
+            raise ValueError("program %r is neither an existing file nor G-code text: check the path" % program)
+        return _core.simulate_text(program, model, bool(blocks), period, refuse_unknown_words, False)
+    raise TypeError("program must be a G-code file, G-code text or FreeCAD Path commands, got %s"
+                    % type(program).__name__)
+
+
+def summary_dict(summary, program=""):
+    """The summary as the JSON report's dict (total_time_s, cutting_time_s, …, feed_classes)."""
+    return json.loads(summary.to_json(program))
+
+
+def write_blocks_csv(result, path):
+    """One row per block, feeds in mm/min (needs simulate(..., blocks=True))."""
+    if len(result.blocks["line"]) == 0:
+        raise ValueError("the result holds no blocks: simulate with blocks=True to write them")
+    with open(path, "w") as stream:
+        stream.write(result.blocks_csv())
+    return path
+
+
+def write_report(result, folder, stem="feedrate", program=""):
+    """JSON summary, per-block CSV, histogram and feed-map PNGs of a result kept with blocks=True.
+    Returns the paths written."""
+    from . import plots
+
+    os.makedirs(folder, exist_ok=True)
+    base = os.path.join(folder, stem)
+    summary = summary_dict(result.summary, program)
+    with open(base + ".json", "w") as stream:
+        json.dump(summary, stream, indent=2)
+    paths = [base + ".json", write_blocks_csv(result, base + "_blocks.csv"),
+             plots.save_feed_histograms(summary, base + "_histograms.png"),
+             plots.save_feed_map(result.blocks, base + "_map.png",
+                                 "%s on %s: feed-rate map" % (program or stem, summary["machine"]))]
+    return paths

@@ -1,0 +1,111 @@
+"""Coin scene of a feed-rate map: each block of the path in the colour of its reached feed, rapids dotted,
+and a legend drawn in screen space (its own camera), so that it shows in screenshots and saved images."""
+import numpy as np
+from pivy import coin
+
+from hsmplanner import plots
+
+LEGEND_STEPS = 20
+
+
+def _packed(rgb):
+    r, g, b = (np.clip(np.asarray(rgb), 0, 1) * 255).astype(np.uint32).T
+    return (r << 24) | (g << 16) | (b << 8) | 0xFF
+
+
+def _line_set(polylines, colors=None, width=2.0, pattern=None):
+    group = coin.SoSeparator()
+    style = coin.SoDrawStyle()
+    style.lineWidth = width
+    if pattern:
+        style.linePattern = pattern
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    vertices = coin.SoVertexProperty()
+    points = np.vstack(polylines) if polylines else np.zeros((0, 3))
+    vertices.vertex.setValues(0, len(points), points.tolist())
+    if colors is None:
+        vertices.orderedRGBA.setValue(0x999999FF)
+        vertices.materialBinding = coin.SoMaterialBinding.OVERALL
+    else:
+        vertices.orderedRGBA.setValues(0, len(colors), [int(c) for c in _packed(colors)])
+        vertices.materialBinding = coin.SoMaterialBinding.PER_FACE  # one colour per polyline (block)
+    lines = coin.SoLineSet()
+    lines.vertexProperty = vertices
+    lines.numVertices.setValues(0, len(polylines), [len(p) for p in polylines])
+    for node in (light, style, lines):
+        group.addChild(node)
+    return group
+
+
+def block_colors(blocks, color_by):
+    """RGB per block and the legend's (low, high, unit) for `color_by` ('Share…' or 'Feed (mm/min)')."""
+    if color_by.startswith("Feed"):
+        top = max(float(np.max(blocks["programmed_feed"])) * 60.0, 1e-9)
+        return plots.feed_colors(blocks["mean_feed"] * 60.0 / top), (0.0, top, "mm/min")
+    ratios = blocks["mean_feed"] / np.maximum(blocks["programmed_feed"], 1e-12)
+    return plots.feed_colors(ratios), (0.0, 100.0, "% of F")
+
+
+def map_node(blocks, color_by):
+    root = coin.SoSeparator()
+    lines = plots.block_polylines(blocks)
+    cutting = blocks["motion"] != 0
+    colors, scale = block_colors(blocks, color_by)
+    cut = [p for p, c in zip(lines, cutting) if c]
+    if cut:
+        root.addChild(_line_set(cut, colors[cutting], width=2.5))
+    rapid = [p for p, c in zip(lines, cutting) if not c]
+    if rapid:
+        root.addChild(_line_set(rapid, None, width=1.0, pattern=0xF0F0))
+    root.addChild(legend_node(*scale))
+    return root
+
+
+def legend_node(low, high, unit):
+    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates."""
+    root = coin.SoSeparator()
+    camera = coin.SoOrthographicCamera()
+    camera.viewportMapping = coin.SoCamera.LEAVE_ALONE
+    camera.position = (0.0, 0.0, 1.0)
+    camera.height = 2.0
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    root.addChild(camera)
+    root.addChild(light)
+    x0, x1, y0, y1 = 0.86, 0.92, -0.6, 0.6  # at the right edge; labels to the left of the bar
+    vertices, colors = [], []
+    for k in range(LEGEND_STEPS):
+        a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS
+        vertices += [(x0, a, 0), (x1, a, 0), (x1, b, 0), (x0, b, 0)]
+        colors.append(plots.feed_colors([(k + 0.5) / LEGEND_STEPS])[0])
+    property_ = coin.SoVertexProperty()
+    property_.vertex.setValues(0, len(vertices), vertices)
+    property_.orderedRGBA.setValues(0, len(colors), [int(c) for c in _packed(colors)])
+    property_.materialBinding = coin.SoMaterialBinding.PER_FACE
+    faces = coin.SoFaceSet()
+    faces.vertexProperty = property_
+    faces.numVertices.setValues(0, LEGEND_STEPS, [4] * LEGEND_STEPS)
+    root.addChild(faces)
+    font = coin.SoFont()
+    font.size = 13
+    root.addChild(font)
+    text_colour = coin.SoBaseColor()
+    text_colour.rgb = (1, 1, 1)
+    root.addChild(text_colour)
+    for value, y in ((low, y0), (0.5 * (low + high), 0.5 * (y0 + y1)), (high, y1)):
+        root.addChild(_label("%g %s" % (round(value, 0), unit), x0 - 0.02, y - 0.02))
+    root.addChild(_label("mean reached feed", x1, y1 + 0.06))
+    return root
+
+
+def _label(text, x, y):
+    group = coin.SoSeparator()
+    move = coin.SoTranslation()
+    move.translation = (x, y, 0)
+    label = coin.SoText2()
+    label.string = text
+    label.justification = coin.SoText2.RIGHT
+    group.addChild(move)
+    group.addChild(label)
+    return group

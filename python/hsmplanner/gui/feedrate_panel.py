@@ -1,0 +1,119 @@
+"""Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
+import FreeCADGui
+from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
+from matplotlib.figure import Figure
+from PySide2 import QtWidgets
+
+from hsmplanner import feedsim, plots
+from hsmplanner.app.feedrate_object import COLOR_MODES
+
+ACTIVE_PANEL = None  # the open panel, for tests and macros
+
+
+def summary_rows(summary):
+    """(label, value) rows of the summary table; feeds and times as people read them."""
+    classes = summary["feed_classes"]["share_of_time"]
+    rows = [
+        ("Machine", summary["machine"]),
+        ("Simulated time", "%.1f s" % summary["total_time_s"]),
+        ("  cutting / rapid", "%.1f s / %.1f s" % (summary["cutting_time_s"], summary["rapid_time_s"])),
+        ("Length / feed estimate", "%.1f s" % summary["naive_time_s"]),
+        ("Simulated / estimate", "× %.2f" % summary["time_over_naive"]),
+        ("Blocks (cutting / rapid)", "%d (%d / %d)" % (summary["block_count"], summary["cutting_blocks"],
+                                                       summary["rapid_blocks"])),
+        ("Cutting length", "%.1f mm" % summary["cutting_length_mm"]),
+    ]
+    rows += [("Time at %s of F" % label, "%.1f %%" % (100 * share))
+             for label, share in zip(plots.FEED_CLASS_LABELS, classes)]
+    return rows
+
+
+class FeedRatePanel:
+    def __init__(self, obj):
+        global ACTIVE_PANEL
+        self.obj = obj
+        self.form = self._build_form()
+        self.refresh()
+        ACTIVE_PANEL = self
+
+    def _build_form(self):
+        form = QtWidgets.QWidget()
+        form.setWindowTitle("Feed-rate analysis")
+        form.setMinimumWidth(420)
+        layout = QtWidgets.QVBoxLayout(form)
+        settings = QtWidgets.QFormLayout()
+        self.machine = QtWidgets.QComboBox()
+        self.machine.addItems(self.obj.getEnumerationsOfProperty("Machine"))
+        self.machine.setCurrentText(self.obj.Machine)
+        settings.addRow("Machine", self.machine)
+        self.color_by = QtWidgets.QComboBox()
+        self.color_by.addItems(COLOR_MODES)
+        self.color_by.setCurrentText(self.obj.ColorBy)
+        settings.addRow("Colours show", self.color_by)
+        layout.addLayout(settings)
+        self.simulate_button = QtWidgets.QPushButton("Simulate")
+        layout.addWidget(self.simulate_button)
+        self.table = QtWidgets.QTableWidget(0, 2)
+        self.table.horizontalHeader().setVisible(False)
+        self.table.verticalHeader().setVisible(False)
+        self.table.horizontalHeader().setStretchLastSection(True)
+        layout.addWidget(self.table)
+        self.figure = Figure(figsize=(5, 2.6), dpi=80)
+        self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.setMinimumHeight(230)
+        layout.addWidget(self.canvas)
+        self.export_button = QtWidgets.QPushButton("Export report (JSON, CSV, PNG)…")
+        layout.addWidget(self.export_button)
+        self.message = QtWidgets.QLabel()
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.simulate_button.clicked.connect(self.simulate)
+        self.color_by.currentTextChanged.connect(self.recolor)
+        self.export_button.clicked.connect(self.choose_export_folder)
+        return form
+
+    def simulate(self):
+        self.obj.Machine = self.machine.currentText()
+        self.obj.recompute()
+        self.refresh()
+
+    def recolor(self, mode):
+        self.obj.ColorBy = mode
+        self.obj.ViewObject.Proxy.redraw(self.obj)
+
+    def refresh(self):
+        if not self.obj.Report:
+            self.message.setText("Not simulated: %s" % ", ".join(self.obj.State) if self.obj.State else "")
+            return
+        summary = feedsim.summary_dict(self.obj.Proxy.ensure_result(self.obj).summary, self.obj.Source.Label)
+        rows = summary_rows(summary)
+        self.table.setRowCount(len(rows))
+        for i, (label, value) in enumerate(rows):
+            self.table.setItem(i, 0, QtWidgets.QTableWidgetItem(label))
+            self.table.setItem(i, 1, QtWidgets.QTableWidgetItem(value))
+        self.table.resizeColumnsToContents()
+        plots.draw_feed_histograms(self.figure, summary)
+        self.canvas.draw()
+
+    def choose_export_folder(self):
+        folder = QtWidgets.QFileDialog.getExistingDirectory(self.form, "Folder for the feed-rate report")
+        if folder:
+            self.export(folder)
+
+    def export(self, folder):
+        result = self.obj.Proxy.ensure_result(self.obj)
+        stem = "%s_%s" % (self.obj.Source.Label, self.obj.Machine)
+        paths = feedsim.write_report(result, folder, stem, self.obj.Source.Label)
+        self.message.setText("written: " + ", ".join(paths))
+        return paths
+
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Close)
+
+    def reject(self):
+        global ACTIVE_PANEL
+        ACTIVE_PANEL = None
+        FreeCADGui.Control.closeDialog()
+        if FreeCADGui.ActiveDocument is not None:
+            FreeCADGui.ActiveDocument.resetEdit()
+        return True

@@ -1,0 +1,85 @@
+"""GUI test: a Job on the master feature, the Feed-rate analysis command, its map, panel and report export."""
+import os
+import sys
+
+import FreeCAD
+import FreeCADGui as Gui
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import OUT, GuiRun  # noqa: E402
+
+run = GuiRun()
+state = {}
+
+
+def panel():
+    from hsmplanner.gui import feedrate_panel
+
+    return feedrate_panel.ACTIVE_PANEL
+
+
+@run.step
+def job_with_a_toolpath(run):
+    from hsmplanner.app import probe_paths
+
+    Gui.activateWorkbench("HSMPlannerWorkbench")
+    Gui.runCommand("HSM_MasterBottomFeature")
+    run.process_events(0.5)
+    part = FreeCAD.ActiveDocument.getObject("MasterBottomFeature")
+    state["job"], state["op"] = probe_paths.make_probe_job(part, 4000.0)
+    part.ViewObject.Transparency = 70
+    run.process_events(0.5)
+
+
+@run.step
+def command_needs_a_job_selected(run):
+    Gui.Selection.clearSelection()
+    run.check("inactive without a Job", not Gui.Command.get("HSM_FeedRateAnalysis").isActive())
+    Gui.Selection.addSelection(state["job"])
+    run.process_events(0.3)
+    run.check("active with a Job", Gui.Command.get("HSM_FeedRateAnalysis").isActive())
+
+
+@run.step
+def analysis_draws_the_map_and_fills_the_panel(run):
+    Gui.runCommand("HSM_FeedRateAnalysis")
+    run.process_events(1.5)
+    analysis = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis")
+    run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
+    run.check("panel open", panel() is not None)
+    run.check("map drawn", analysis.ViewObject.Proxy.root.getNumChildren() > 0)
+    run.check("summary table filled", panel().table.rowCount() >= 8, str(panel().table.rowCount()))
+    run.notes["simulated s, naive s"] = [round(analysis.TotalTime, 2), round(analysis.NaiveTime, 2)]
+    for name in ("Job", "ProbeRaster"):
+        FreeCAD.ActiveDocument.getObject(name).ViewObject.Visibility = False  # the map in its own colours
+    Gui.Selection.clearSelection()
+    Gui.activeDocument().activeView().viewTop()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("feedrate_map_panel")
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    image = os.path.join(OUT, "feedrate_map_view3d.png")
+    Gui.ActiveDocument.ActiveView.saveImage(image, 1200, 800, "Current")
+    run.screenshots.append(image)
+
+
+@run.step
+def other_machine_colours_and_export(run):
+    p = panel()
+    before = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").TotalTime
+    p.machine.setCurrentText("grbl")
+    p.simulate_button.click()
+    run.process_events(1.0)
+    after = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").TotalTime
+    run.check("another machine, another time", abs(after - before) > 1.0, "%s %s" % (before, after))
+    p.color_by.setCurrentText("Feed (mm/min)")
+    run.process_events(0.5)
+    run.screenshot("feedrate_map_grbl_mm_min")
+    folder = os.path.join(OUT, "report")
+    paths = p.export(folder)
+    run.check("report written", len(paths) == 4 and all(os.path.getsize(x) > 0 for x in paths), str(paths))
+    p.reject()
+    run.process_events(0.3)
+
+
+run.start()
