@@ -20,11 +20,6 @@ namespace {
 using curvenet::NetCurve;
 using Curve = Handle(Geom_BSplineCurve);
 
-// A B-spline curve handed to Python: the inputs of the nets and every curve they return.
-struct BSplineCurve {
-  Curve curve;
-};
-
 std::string roleName(curvenet::CurveRole role) {
   switch (role) {
     case curvenet::CurveRole::Boundary: return "boundary";

@@ -29,4 +29,5 @@ PYBIND11_MODULE(_core, module) {
   hsm::bindings::bindGeometry(module);
   hsm::bindings::bindCurvenet(module);
   hsm::bindings::bindKinematics(module);
+  hsm::bindings::bindToolpath(module);
 }

@@ -2,8 +2,10 @@
 
 #include "common/error.hpp"
 
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -15,6 +17,46 @@ namespace {
 Eigen::Vector3d toEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 Eigen::Vector3d toEigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 }  // namespace
+
+UVClassifier::UVClassifier(const TopoDS_Face& face) {
+  constexpr int kSamplesPerEdge = 400;
+  double vMax = -1e300;
+  vMin_ = 1e300;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    double first = 0.0, last = 0.0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, first, last);
+    if (pcurve.IsNull()) continue;
+    gp_Pnt2d previous = pcurve->Value(first);
+    for (int k = 1; k <= kSamplesPerEdge; ++k) {
+      const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / kSamplesPerEdge);
+      segments_.push_back({previous.X(), previous.Y(), p.X(), p.Y()});
+      vMin_ = std::min({vMin_, previous.Y(), p.Y()});
+      vMax = std::max({vMax, previous.Y(), p.Y()});
+      previous = p;
+    }
+  }
+  if (segments_.empty()) throw InputError("the face has no boundary in its parameters: pass a trimmed face");
+  const int bands = 512;
+  bandHeight_ = std::max((vMax - vMin_) / bands, 1e-12);
+  bands_.resize(bands);
+  for (size_t i = 0; i < segments_.size(); ++i) {
+    const Segment& s = segments_[i];
+    const int b0 = std::clamp(int((std::min(s.v0, s.v1) - vMin_) / bandHeight_), 0, bands - 1);
+    const int b1 = std::clamp(int((std::max(s.v0, s.v1) - vMin_) / bandHeight_), 0, bands - 1);
+    for (int b = b0; b <= b1; ++b) bands_[b].push_back(static_cast<int>(i));
+  }
+}
+
+bool UVClassifier::inside(double u, double v) const {
+  const int band = int((v - vMin_) / bandHeight_);
+  if (band < 0 || band >= static_cast<int>(bands_.size())) return false;
+  bool in = false;
+  for (int i : bands_[band]) {
+    const Segment& s = segments_[i];
+    if ((s.v0 > v) != (s.v1 > v) && u < s.u0 + (v - s.v0) * (s.u1 - s.u0) / (s.v1 - s.v0)) in = !in;
+  }
+  return in;
+}
 
 FaceDropper::FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis)
     : face_(face), surface_(BRep_Tool::Surface(face)), axis_(axis.normalized()) {
@@ -28,12 +70,20 @@ FaceDropper::FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis)
 FaceDropper::~FaceDropper() = default;
 
 bool FaceDropper::dropOne(Eigen::Ref<Eigen::RowVector3d> point, double& u, double& v, bool haveGuess) const {
+  // Newton from the previous point's parameters (the usual case: points follow each other); if that
+  // fails, once more from the point's projection on the surface (slower, but from anywhere).
+  if (haveGuess && newton(point, u, v)) return true;
   const Eigen::Vector3d target = point.transpose();
-  if (!haveGuess) {
-    const gp_Pnt2d uv = analysis_->ValueOfUV(gp_Pnt(target.x(), target.y(), target.z()), 1e-6);
-    u = uv.X();
-    v = uv.Y();
-  }
+  const gp_Pnt2d uv = analysis_->ValueOfUV(gp_Pnt(target.x(), target.y(), target.z()), 1e-6);
+  double u1 = uv.X(), v1 = uv.Y();
+  if (!newton(point, u1, v1)) return false;
+  u = u1;
+  v = v1;
+  return true;
+}
+
+bool FaceDropper::newton(Eigen::Ref<Eigen::RowVector3d> point, double& u, double& v) const {
+  const Eigen::Vector3d target = point.transpose();
   // Newton on the two plan components of S(u,v) - target (the component along the axis is free).
   for (int iteration = 0; iteration < 30; ++iteration) {
     gp_Pnt p;
@@ -60,8 +110,9 @@ int FaceDropper::drop(PointArray& points) const {
   bool haveGuess = false;
   double u = 0.0, v = 0.0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    haveGuess = dropOne(points.row(i), u, v, haveGuess);
-    if (!haveGuess) ++failures;
+    const bool dropped = dropOne(points.row(i), u, v, haveGuess);
+    haveGuess = haveGuess || dropped;
+    if (!dropped) ++failures;
   }
   return failures;
 }
@@ -71,12 +122,16 @@ std::vector<char> FaceDropper::dropAndClassify(PointArray& points) const {
   bool haveGuess = false;
   double u = 0.0, v = 0.0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    haveGuess = dropOne(points.row(i), u, v, haveGuess);
-    if (!haveGuess) continue;
-    if (!classifier_) classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, 1e-7);
-    inside[static_cast<size_t>(i)] = classifier_->Perform(gp_Pnt2d(u, v)) != TopAbs_OUT;
+    const bool dropped = dropOne(points.row(i), u, v, haveGuess);
+    haveGuess = haveGuess || dropped;
+    if (dropped) inside[static_cast<size_t>(i)] = this->inside(u, v);
   }
   return inside;
+}
+
+bool FaceDropper::inside(double u, double v) const {
+  if (!classifier_) classifier_ = std::make_unique<UVClassifier>(face_);
+  return classifier_->inside(u, v);
 }
 
 }  // namespace hsm::geometry

@@ -10,9 +10,24 @@
 #include <memory>
 #include <vector>
 
-class BRepTopAdaptor_FClass2d;
-
 namespace hsm::geometry {
+
+// Point-in-face test in the face's (u, v) parameters: its boundary edges sampled as segments (400 per
+// edge), sorted into bands of v, and an even-odd ray count over the segments of one band. OCCT's
+// BRepTopAdaptor_FClass2d tests every boundary point and was most of a toolpath's time.
+class UVClassifier {
+public:
+  explicit UVClassifier(const TopoDS_Face& face);
+  bool inside(double u, double v) const;
+
+private:
+  struct Segment {
+    double u0, v0, u1, v1;
+  };
+  std::vector<Segment> segments_;
+  std::vector<std::vector<int>> bands_;
+  double vMin_ = 0.0, bandHeight_ = 1.0;
+};
 
 class FaceDropper {
 public:
@@ -24,14 +39,19 @@ public:
   int drop(PointArray& points) const;
   // As drop(), and tells for each point whether it landed inside the face's boundaries.
   std::vector<char> dropAndClassify(PointArray& points) const;
+  // One point: moved onto the surface (true) or left (false); (u, v) in: the guess when `haveGuess`, out:
+  // the surface parameters found.
+  bool dropOne(Eigen::Ref<Eigen::RowVector3d> point, double& u, double& v, bool haveGuess) const;
+  bool inside(double u, double v) const;
+  const Handle(Geom_Surface)& surface() const { return surface_; }
 
 private:
-  bool dropOne(Eigen::Ref<Eigen::RowVector3d> point, double& u, double& v, bool haveGuess) const;
+  bool newton(Eigen::Ref<Eigen::RowVector3d> point, double& u, double& v) const;
 
   TopoDS_Face face_;
   Handle(Geom_Surface) surface_;
   Handle(ShapeAnalysis_Surface) analysis_;
-  mutable std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;  // built on first use
+  mutable std::unique_ptr<UVClassifier> classifier_;  // built on first use
   Eigen::Vector3d axis_, e1_, e2_;
   double u0_, u1_, v0_, v1_;
 };

@@ -1,0 +1,92 @@
+#include "bindings/bindings.hpp"
+
+#include "common/error.hpp"
+#include "geometry/brep.hpp"
+#include "toolpath/finishing.hpp"
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace hsm::bindings {
+
+namespace {
+using namespace toolpath;
+
+FinishingSettings settingsFrom(const py::dict& d) {
+  FinishingSettings s;
+  for (const auto& [key, value] : d) {
+    const std::string k = py::str(key);
+    if (k == "tool_radius") s.toolRadius = value.cast<double>();
+    else if (k == "cusp_height") s.cuspHeight = value.cast<double>();
+    else if (k == "tolerance") s.tolerance = value.cast<double>();
+    else if (k == "zigzag") s.zigzag = value.cast<bool>();
+    else if (k == "sweep") {
+      const std::string sweep = value.cast<std::string>();
+      if (sweep != "upward" && sweep != "downward")
+        throw InputError("sweep '" + sweep + "' is unknown: use upward or downward");
+      s.sweep = sweep == "upward" ? Sweep::Upward : Sweep::Downward;
+    } else if (k == "clearance") s.clearance = value.cast<double>();
+    else if (k == "extension") s.extension = value.cast<double>();
+    else if (k == "mesh_deflection") s.meshDeflection = value.cast<double>();
+    else if (k == "sampling") s.sampling = value.cast<double>();
+    else if (k == "threads") s.threads = value.cast<int>();
+    else throw InputError("unknown finishing setting '" + k + "'");
+  }
+  return s;
+}
+
+py::tuple output(const Toolpath& path) {
+  py::array_t<double> moves({static_cast<py::ssize_t>(path.moves.size()), py::ssize_t(4)});
+  auto m = moves.mutable_unchecked<2>();
+  for (size_t i = 0; i < path.moves.size(); ++i) {
+    const auto k = static_cast<py::ssize_t>(i);
+    for (int c = 0; c < 3; ++c) m(k, c) = path.moves[i].point[c];
+    m(k, 3) = path.moves[i].rapid ? 1.0 : 0.0;
+  }
+  py::dict stats;
+  stats["passes"] = path.passes;
+  stats["dropped_points"] = path.droppedPoints;
+  stats["safe_height"] = path.safeHeight;
+  stats["warnings"] = path.warnings;
+  return py::make_tuple(moves, stats);
+}
+}  // namespace
+
+void bindToolpath(py::module_& m) {
+  m.def(
+      "parallel_finishing",
+      [](const std::string& part, int bottomFace, double angle, const py::dict& settings) {
+        const FinishingSettings s = settingsFrom(settings);
+        const TopoDS_Shape shape = geometry::readBrep(part);
+        Toolpath path;
+        {
+          py::gil_scoped_release release;
+          path = parallelPlaneFinishing(shape, bottomFace, angle, s);
+        }
+        return output(path);
+      },
+      py::arg("part_brep"), py::arg("bottom_face"), py::arg("angle_deg"), py::arg("settings"),
+      "Parallel-plane ball-end finishing: (moves (N,4) x, y, z, rapid flag; stats dict)");
+  m.def(
+      "guide_finishing",
+      [](const std::string& part, int bottomFace, const std::vector<std::pair<BSplineCurve, BSplineCurve>>& areas,
+         const Eigen::Vector3d& direction, const py::dict& settings) {
+        const FinishingSettings s = settingsFrom(settings);
+        const TopoDS_Shape shape = geometry::readBrep(part);
+        std::vector<GuideArea> guides;
+        for (const auto& [a, b] : areas) guides.push_back({a.curve, b.curve});
+        Toolpath path;
+        {
+          py::gil_scoped_release release;
+          path = guideCurveFinishing(shape, bottomFace, guides, direction, s);
+        }
+        return output(path);
+      },
+      py::arg("part_brep"), py::arg("bottom_face"), py::arg("areas"), py::arg("direction"), py::arg("settings"),
+      "Guide-curve finishing, areas as (first, second) curve pairs: (moves (N,4), stats dict)");
+}
+
+}  // namespace hsm::bindings

@@ -1,0 +1,464 @@
+#include "toolpath/finishing.hpp"
+
+#include "common/error.hpp"
+#include "curvenet/plane_cuts.hpp"
+#include "geometry/face_drop.hpp"
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+
+namespace hsm::toolpath {
+
+namespace {
+
+using Vector2 = Eigen::Vector2d;
+using Vector3 = Eigen::Vector3d;
+using Pass = std::vector<Vector3>;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kStationStep = 1.0;  // mm between the points that decide the stepover
+
+void validate(const FinishingSettings& s) {
+  if (!(s.toolRadius > 0.0)) throw InputError("tool radius " + std::to_string(s.toolRadius) + " mm must be positive");
+  if (!(s.cuspHeight > 0.0 && s.cuspHeight < s.toolRadius))
+    throw InputError("cusp height " + std::to_string(s.cuspHeight) + " mm must be positive and below the tool radius");
+  if (!(s.tolerance > 0.0)) throw InputError("machining tolerance " + std::to_string(s.tolerance) + " mm must be positive");
+  if (!(s.sampling > 0.0)) throw InputError("sampling " + std::to_string(s.sampling) + " mm must be positive");
+  if (!(s.clearance >= 0.0)) throw InputError("clearance must be 0 or more");
+}
+
+struct SurfacePoint {
+  Vector3 p;
+  double u = 0, v = 0;
+  bool inside = false;
+};
+
+// What every strategy needs: the part meshed for the drop-cutter, the bottom face for contact points.
+class Context {
+public:
+  Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettings& settings)
+      : settings_(settings), bottomFace_(bottomFace) {
+    validate(settings);
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(part, TopAbs_FACE, faces);
+    if (bottomFace < 1 || bottomFace > faces.Extent())
+      throw InputError("bottom face " + std::to_string(bottomFace) + " does not exist: the part has " +
+                       std::to_string(faces.Extent()) + " faces");
+    bottom_ = TopoDS::Face(faces(bottomFace));
+    const TriangleMesh mesh = meshFaces(part, settings.meshDeflection, faceAndNeighbours(part, bottomFace));
+    cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
+    dropper_ = std::make_unique<geometry::FaceDropper>(bottom_, Vector3::UnitZ());
+    Bnd_Box box;
+    BRepBndLib::Add(part, box);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    safeHeight_ = z1 + settings.clearance;
+    Bnd_Box faceBox;
+    BRepBndLib::AddOptimal(bottom_, faceBox, false, false);
+    faceBox.Get(x0, y0, z0, x1, y1, z1);
+    faceMin_ = Vector2(x0, y0);
+    faceMax_ = Vector2(x1, y1);
+    faceTop_ = z1;
+    extension_ = settings.extension >= 0.0 ? settings.extension : settings.toolRadius;
+  }
+
+  const FinishingSettings& settings() const { return settings_; }
+  // The stepover on a flat face.
+  double flatStep() const {
+    const double r = settings_.toolRadius, h = settings_.cuspHeight;
+    return 2.0 * std::sqrt(2.0 * r * h - h * h);
+  }
+  double safeHeight() const { return safeHeight_; }
+  const BallDropCutter& cutter() const { return *cutter_; }
+  Vector2 faceMin() const { return faceMin_; }
+  Vector2 faceMax() const { return faceMax_; }
+  long dropped = 0;
+
+  // Points of the bottom face under plan positions.
+  std::vector<SurfacePoint> onFace(const std::vector<Vector2>& plan) const {
+    std::vector<SurfacePoint> result(plan.size());
+    bool haveGuess = false;
+    double u = 0, v = 0;
+    for (size_t i = 0; i < plan.size(); ++i) {
+      Eigen::RowVector3d p(plan[i].x(), plan[i].y(), faceTop_ + 1.0);
+      haveGuess = dropper_->dropOne(p, u, v, haveGuess);
+      result[i] = {p.transpose(), u, v, haveGuess && dropper_->inside(u, v)};
+    }
+    return result;
+  }
+
+  // The stepover that leaves the cusp height, at a face point, for passes next to each other along `across`.
+  double allowedStep(const SurfacePoint& sp, const Vector3& across) const {
+    GeomLProp_SLProps props(dropper_->surface(), sp.u, sp.v, 2, 1e-9);
+    const double r = settings_.toolRadius, h = settings_.cuspHeight;
+    double kappa = 0.0;
+    if (props.IsNormalDefined()) {
+      gp_Dir n = props.Normal();
+      const double sign = n.Z() < 0 ? -1.0 : 1.0;  // the face's upward side is where the tool is
+      const gp_Vec su = props.D1U(), sv = props.D1V();
+      const Eigen::Matrix<double, 3, 2> basis = (Eigen::Matrix<double, 3, 2>() << su.X(), sv.X(), su.Y(), sv.Y(),
+                                                 su.Z(), sv.Z()).finished();
+      const Eigen::Vector2d ab = basis.colPivHouseholderQr().solve(across);
+      const gp_Vec duu = props.D2U(), duv = props.DUV(), dvv = props.D2V();
+      const gp_Vec nv(n.X() * sign, n.Y() * sign, n.Z() * sign);
+      const double L = nv.Dot(duu), M = nv.Dot(duv), N = nv.Dot(dvv);
+      const double E = su.Dot(su), F = su.Dot(sv), G = sv.Dot(sv);
+      const double a = ab.x(), b = ab.y();
+      const double first = E * a * a + 2 * F * a * b + G * b * b;
+      if (first > 1e-18) kappa = (L * a * a + 2 * M * a * b + N * b * b) / first;
+    }
+    const double inverse = std::max(1.0 / r - kappa, 1.0 / (100.0 * r));  // concave tighter than the ball: no cusp
+    const double effective = 1.0 / inverse;
+    return std::min(2.0 * std::sqrt(std::max(0.0, 2.0 * effective * h - h * h)), r);
+  }
+
+  // Cutter passes along a plan polyline: dropped, kept over the bottom face (extended past open ends),
+  // refined within the tolerance and reduced to G1 points. A polyline may give several passes.
+  std::vector<Pass> cut(const std::vector<Vector2>& plan) {
+    std::vector<Pass> passes;
+    if (plan.size() < 2) return passes;
+    geometry::PointArray points(static_cast<Eigen::Index>(plan.size()), 3);
+    for (size_t i = 0; i < plan.size(); ++i) points.row(static_cast<Eigen::Index>(i)) << plan[i].x(), plan[i].y(), 0.0;
+    cutter_->dropAll(points, nullptr, settings_.threads);
+    dropped += points.rows();
+    const std::vector<SurfacePoint> face = onFace(plan);
+    size_t i = 0;
+    while (i < plan.size()) {
+      while (i < plan.size() && !face[i].inside) ++i;
+      if (i == plan.size()) break;
+      size_t j = i;
+      while (j + 1 < plan.size() && face[j + 1].inside) ++j;
+      // [i, j] over the face; extend each end past an open boundary (no wall lifting the tool).
+      const size_t first = extend(points, plan, i, -1), last = extend(points, plan, j, +1);
+      std::vector<size_t> indices;
+      for (size_t k = first; k <= last; ++k) indices.push_back(k);
+      Pass pass = refine(points, plan, indices);
+      if (pass.size() >= 2) passes.push_back(simplify(pass));
+      i = j + 1;
+    }
+    return passes;
+  }
+
+private:
+  size_t extend(const geometry::PointArray& points, const std::vector<Vector2>& plan, size_t end, int step) const {
+    const double zEnd = points(static_cast<Eigen::Index>(end), 2);
+    size_t k = end;
+    while (true) {
+      const long next = static_cast<long>(k) + step;
+      if (next < 0 || next >= static_cast<long>(plan.size())) break;
+      if ((plan[static_cast<size_t>(next)] - plan[end]).norm() > extension_ + 1e-9) break;
+      const double z = points(next, 2);
+      if (!std::isfinite(z) || z > zEnd + settings_.tolerance) break;  // a wall, or nothing at all
+      k = static_cast<size_t>(next);
+    }
+    return k;
+  }
+
+  Pass refine(const geometry::PointArray& points, const std::vector<Vector2>& plan, const std::vector<size_t>& indices) {
+    Pass pass;
+    const double limit = 0.25 * settings_.tolerance;
+    std::function<void(const Vector3&, const Vector3&, int)> bisect = [&](const Vector3& a, const Vector3& b, int depth) {
+      const Vector2 mid = 0.5 * (a.head<2>() + b.head<2>());
+      const Contact c = cutter_->drop(mid.x(), mid.y());
+      ++dropped;
+      if (!c.touches()) return;
+      const Vector3 m(mid.x(), mid.y(), c.z);
+      if (depth < 8 && std::abs(c.z - 0.5 * (a.z() + b.z())) > limit) {
+        bisect(a, m, depth + 1);
+        pass.push_back(m);
+        bisect(m, b, depth + 1);
+      }
+    };
+    for (size_t n = 0; n < indices.size(); ++n) {
+      const Eigen::Index k = static_cast<Eigen::Index>(indices[n]);
+      const Vector3 p(points(k, 0), points(k, 1), points(k, 2));
+      if (!std::isfinite(p.z())) continue;
+      if (!pass.empty()) bisect(pass.back(), p, 0);
+      pass.push_back(p);
+    }
+    (void)plan;
+    return pass;
+  }
+
+  // Douglas-Peucker: the fewest points within 3/4 of the tolerance of the refined polyline.
+  Pass simplify(const Pass& pass) const {
+    const double tolerance = 0.75 * settings_.tolerance;
+    std::vector<char> keep(pass.size(), 0);
+    keep.front() = keep.back() = 1;
+    std::vector<std::pair<size_t, size_t>> stack{{0, pass.size() - 1}};
+    while (!stack.empty()) {
+      const auto [a, b] = stack.back();
+      stack.pop_back();
+      const Vector3 d = pass[b] - pass[a];
+      const double length = d.norm();
+      double worst = 0.0;
+      size_t at = a;
+      for (size_t k = a + 1; k < b; ++k) {
+        const Vector3 w = pass[k] - pass[a];
+        const double distance = length > 0 ? (w - (w.dot(d) / (length * length)) * d).norm() : w.norm();
+        if (distance > worst) {
+          worst = distance;
+          at = k;
+        }
+      }
+      if (worst > tolerance) {
+        keep[at] = 1;
+        stack.push_back({a, at});
+        stack.push_back({at, b});
+      }
+    }
+    Pass result;
+    for (size_t k = 0; k < pass.size(); ++k)
+      if (keep[k]) result.push_back(pass[k]);
+    return result;
+  }
+
+  FinishingSettings settings_;
+  int bottomFace_;
+  TopoDS_Face bottom_;
+  std::unique_ptr<BallDropCutter> cutter_;
+  std::unique_ptr<geometry::FaceDropper> dropper_;
+  double safeHeight_ = 0.0, faceTop_ = 0.0, extension_ = 0.0;
+  Vector2 faceMin_, faceMax_;
+};
+
+// A one-parameter family of passes: parameter → plan polyline (coarse for the stepover, fine for cutting).
+struct Family {
+  std::function<std::vector<Vector2>(double parameter, double spacing)> plan;
+  double begin = 0.0, end = 1.0;
+};
+
+// The parameters of the passes from `begin` to `end`: each the farthest that keeps the cusp height.
+std::vector<double> passParameters(const Context& context, const Family& family, bool skipFirst) {
+  std::vector<double> parameters;
+  double current = family.begin;
+  if (!skipFirst) parameters.push_back(current);
+  const double span = std::abs(family.end - family.begin), sense = family.end > family.begin ? 1.0 : -1.0;
+  double lastStep = 1e-3 * span;
+  while (std::abs(current - family.begin) < span - 1e-12) {
+    const std::vector<Vector2> plan = family.plan(current, kStationStep);
+    const std::vector<SurfacePoint> here = context.onFace(plan);
+    // Allowed stepover at each station, measured across the passes.
+    const std::vector<Vector2> ahead = family.plan(current + sense * 1e-3 * span, kStationStep);
+    const std::vector<SurfacePoint> near = context.onFace(ahead);
+    std::vector<double> allowed(here.size(), kInfinity);
+    for (size_t k = 0; k < here.size() && k < near.size(); ++k) {
+      if (!here[k].inside || !near[k].inside) continue;
+      const Vector3 across = near[k].p - here[k].p;
+      if (across.norm() > 1e-12) allowed[k] = context.allowedStep(here[k], across.normalized());
+    }
+    // Where the current pass is off the face, the next may not step by more than the largest stepover
+    // allowed where it is on it (or the flat-surface stepover): the passes must not jump over a corner.
+    double largest = 0.0;
+    for (double a : allowed)
+      if (std::isfinite(a)) largest = std::max(largest, a);
+    if (largest == 0.0) largest = context.flatStep();
+    auto fits = [&](double candidate) {
+      const std::vector<SurfacePoint> there = context.onFace(family.plan(candidate, kStationStep));
+      for (size_t k = 0; k < here.size() && k < there.size(); ++k) {
+        if (!there[k].inside) continue;
+        const double limit = here[k].inside ? allowed[k] : largest;
+        const Vector2 planGap = there[k].p.head<2>() - here[k].p.head<2>();
+        if ((here[k].inside ? (there[k].p - here[k].p).norm() : planGap.norm()) > limit) return false;
+      }
+      return true;
+    };
+    // Bracket the next pass from the last step (doubling while it fits), then bisect to 1 % of the step.
+    double lo = current, step = std::max(lastStep, 1e-6 * span), hi = current;
+    for (;;) {
+      hi = sense > 0 ? std::min(current + sense * step, family.end) : std::max(current + sense * step, family.end);
+      if (!fits(hi)) break;
+      lo = hi;
+      if (hi == family.end) break;
+      step *= 2.0;
+    }
+    if (lo != family.end) {
+      const double resolution = 0.01 * std::abs(hi - current);
+      while (std::abs(hi - lo) > resolution) {
+        const double mid = 0.5 * (lo + hi);
+        (fits(mid) ? lo : hi) = mid;
+      }
+    }
+    lastStep = std::max(std::abs(lo - current), 1e-6 * span);
+    if (std::abs(lo - current) < 1e-9 * span) lo = current + sense * 1e-3 * span;  // always move on
+    current = sense > 0 ? std::min(lo, family.end) : std::max(lo, family.end);
+    parameters.push_back(current);
+  }
+  return parameters;
+}
+
+double meanHeight(const std::vector<Pass>& passes) {
+  double sum = 0.0;
+  long n = 0;
+  for (const Pass& p : passes)
+    for (const Vector3& x : p) {
+      sum += x.z();
+      ++n;
+    }
+  return n ? sum / n : 0.0;
+}
+
+// Links passes into moves: zigzag neighbours by a surface-following G1 when close, else retract.
+Toolpath assemble(const Context& context, std::vector<Pass> passes) {
+  const FinishingSettings& s = context.settings();
+  Toolpath path;
+  path.safeHeight = context.safeHeight();
+  for (size_t k = 0; k < passes.size(); ++k)
+    if (s.zigzag ? (k % 2 == 1) : false) std::reverse(passes[k].begin(), passes[k].end());
+  const double linkLimit = 2.0 * s.toolRadius;
+  bool inside = false;  // the tool is down at the end of the previous pass
+  for (const Pass& pass : passes) {
+    if (pass.size() < 2) continue;
+    ++path.passes;
+    const Vector3& start = pass.front();
+    if (inside && s.zigzag && (start - path.moves.back().point).norm() <= linkLimit) {
+      // Short G1 link over the surface: dropped at a few points so that it cannot gouge.
+      const Vector3 from = path.moves.back().point;
+      const int steps = std::max(2, int(std::ceil((start - from).head<2>().norm() / s.sampling)));
+      for (int i = 1; i < steps; ++i) {
+        Vector3 p = from + (start - from) * double(i) / steps;
+        const Contact c = context.cutter().drop(p.x(), p.y());
+        p.z() = std::max(p.z(), c.z);
+        path.moves.push_back({p, false});
+      }
+    } else {
+      if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});
+      path.moves.push_back({Vector3(start.x(), start.y(), path.safeHeight), true});
+      path.moves.push_back({Vector3(start.x(), start.y(), start.z() + 1.0), true});
+    }
+    for (const Vector3& p : pass) path.moves.push_back({p, false});
+    inside = true;
+  }
+  if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});
+  if (path.passes == 0) path.warnings.push_back("no pass touches the bottom face: check the face and the guides");
+  return path;
+}
+
+// Passes in sweeping order: upward starts on the lower side.
+void orderForSweep(std::vector<std::vector<Pass>>& groups, Sweep sweep) {
+  if (groups.size() < 1) return;
+  std::vector<Pass> all;
+  const double firstHeight = meanHeight(groups.front()), lastHeight = meanHeight(groups.back());
+  const bool climbing = lastHeight >= firstHeight;
+  if (climbing != (sweep == Sweep::Upward)) {
+    std::reverse(groups.begin(), groups.end());
+    for (auto& g : groups) std::reverse(g.begin(), g.end());
+  }
+}
+
+std::vector<Pass> flatten(const std::vector<std::vector<Pass>>& groups) {
+  std::vector<Pass> passes;
+  for (const auto& g : groups) passes.insert(passes.end(), g.begin(), g.end());
+  return passes;
+}
+
+}  // namespace
+
+Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double angleDeg,
+                                const FinishingSettings& settings) {
+  if (!std::isfinite(angleDeg)) throw InputError("the angle of the planes must be a number of degrees");
+  Context context(part, bottomFace, settings);
+  const double a = angleDeg * M_PI / 180.0;
+  const Vector2 along(std::cos(a), std::sin(a)), across(-std::sin(a), std::cos(a));
+  const Vector2 lo = context.faceMin(), hi = context.faceMax();
+  double a0 = kInfinity, a1 = -kInfinity, q0 = kInfinity, q1 = -kInfinity;
+  for (const Vector2& corner : {lo, hi, Vector2(lo.x(), hi.y()), Vector2(hi.x(), lo.y())}) {
+    a0 = std::min(a0, corner.dot(along));
+    a1 = std::max(a1, corner.dot(along));
+    q0 = std::min(q0, corner.dot(across));
+    q1 = std::max(q1, corner.dot(across));
+  }
+  const double margin = settings.toolRadius + 1.0;
+  Family family;
+  family.begin = q0 + 1e-3;
+  family.end = q1 - 1e-3;
+  family.plan = [=](double q, double spacing) {
+    std::vector<Vector2> plan;
+    for (double t = a0 - margin; t <= a1 + margin + 1e-9; t += spacing) plan.push_back(t * along + q * across);
+    return plan;
+  };
+  std::vector<std::vector<Pass>> groups;
+  for (double q : passParameters(context, family, false)) {
+    std::vector<Pass> cut = context.cut(family.plan(q, settings.sampling));
+    if (!cut.empty()) groups.push_back(cut);
+  }
+  orderForSweep(groups, settings.sweep);
+  Toolpath path = assemble(context, flatten(groups));
+  path.droppedPoints = context.dropped;
+  return path;
+}
+
+Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std::vector<GuideArea>& areas,
+                             const Eigen::Vector3d& directionIn, const FinishingSettings& settings) {
+  if (areas.empty()) throw InputError("no area to machine: give at least one pair of guide curves");
+  if (!directionIn.allFinite() || directionIn.head<2>().norm() < 1e-9)
+    throw InputError("the machining direction must be a horizontal vector, e.g. (1, 0, 0)");
+  Context context(part, bottomFace, settings);
+  const Vector3 direction = Vector3(directionIn.x(), directionIn.y(), 0.0).normalized();
+  std::vector<std::vector<Pass>> groups;
+  for (size_t index = 0; index < areas.size(); ++index) {
+    const GuideArea& area = areas[index];
+    if (area.first.IsNull() || area.second.IsNull()) throw InputError("area " + std::to_string(index + 1) + " lacks a guide");
+    const curvenet::detail::PlaneCutter first(area.first, direction), second(area.second, direction);
+    const double s0 = std::max(first.extent().first, second.extent().first);
+    const double s1 = std::min(first.extent().second, second.extent().second);
+    if (s1 - s0 < settings.sampling)
+      throw InputError("the guides of area " + std::to_string(index + 1) + " do not overlap along the direction");
+    const double extension = (settings.extension >= 0 ? settings.extension : settings.toolRadius) + 1.0;
+    // The guides cut by the planes, once per spacing: every pass is a blend of the same two point lists.
+    std::map<double, std::pair<geometry::PointArray, geometry::PointArray>> guidePoints;
+    auto pointsAt = [&, s0, s1](double spacing) -> const std::pair<geometry::PointArray, geometry::PointArray>& {
+      auto found = guidePoints.find(spacing);
+      if (found != guidePoints.end()) return found->second;
+      std::vector<double> stations;
+      for (double s = s0; s < s1; s += spacing) stations.push_back(s);
+      stations.push_back(s1);
+      return guidePoints.emplace(spacing, std::make_pair(first.cut(stations).points, second.cut(stations).points))
+          .first->second;
+    };
+    Family family;
+    family.plan = [&, extension](double lambda, double spacing) {
+      const auto& [a, b] = pointsAt(spacing);
+      std::vector<Vector2> plan;
+      for (Eigen::Index k = 0; k < a.rows(); ++k) {
+        const Eigen::RowVector3d p = a.row(k) + lambda * (b.row(k) - a.row(k));
+        plan.emplace_back(p.x(), p.y());
+      }
+      // Straight on past both ends, so that the pass can leave an open boundary.
+      if (plan.size() >= 2) {
+        const Vector2 head = (plan[0] - plan[1]).normalized(), tail = (plan.back() - plan[plan.size() - 2]).normalized();
+        const Vector2 start = plan.front(), end = plan.back();
+        std::vector<Vector2> before, after;
+        for (double e = spacing; e <= extension + 1e-9; e += spacing) {
+          before.push_back(start + e * head);
+          after.push_back(end + e * tail);
+        }
+        plan.insert(plan.begin(), before.rbegin(), before.rend());
+        plan.insert(plan.end(), after.begin(), after.end());
+      }
+      return plan;
+    };
+    std::vector<Pass> group;
+    for (double lambda : passParameters(context, family, index > 0)) {
+      const std::vector<Pass> cut = context.cut(family.plan(lambda, settings.sampling));
+      group.insert(group.end(), cut.begin(), cut.end());
+    }
+    if (!group.empty()) groups.push_back(group);
+  }
+  orderForSweep(groups, settings.sweep);
+  Toolpath path = assemble(context, flatten(groups));
+  path.droppedPoints = context.dropped;
+  return path;
+}
+
+}  // namespace hsm::toolpath

@@ -1,0 +1,75 @@
+// 3-axis ball-end finishing of a bottom face: parallel planes, and passes morphed between guide curves
+// (guidance-curve paper §2.2, §3).
+//
+// How (where the paper and the issue are silent, the choices are ours):
+// - Gouge-free positions: drop-cutter of the ball on a mesh of the bottom face and every face touching it
+//   (flanks), meshed within 0.002 mm; positions are of the tool tip.
+// - Stepover: the next pass is the farthest one whose distance to the current pass, measured between
+//   their points on the bottom face, stays within the stepover that leaves the cusp height on the real
+//   surface: s = 2·sqrt(2·R·h − h²) with R = 1/(1/r − κ), κ the normal curvature of the face across the
+//   passes (concave > 0), so that passes close up on convex parts and open on concave ones.
+// - Points: the cutter positions are sampled, refined where the path bends, then reduced to the fewest
+//   G1 points within the machining tolerance (Douglas–Peucker on the refined polyline).
+// - Passes stay over the bottom face; at a flank the drop-cutter lifts the ball along it; past an open
+//   boundary (where nothing lifts the tool) a pass goes on by the extension (the tool radius by default)
+//   so the ball leaves the face whole.
+// - Sweeping: upward orders the passes so that the stepover climbs (the first pass is on the lower side),
+//   downward the other way. Zigzag alternates pass directions and links neighbours by a G1 move that
+//   follows the surface when they are close (two tool radii); otherwise, and for one-way, the tool
+//   retracts to the safe height, moves in G0 and plunges in G1.
+#pragma once
+
+#include "toolpath/dropcutter.hpp"
+
+#include <Geom_BSplineCurve.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+namespace hsm::toolpath {
+
+enum class Sweep { Upward, Downward };
+
+struct FinishingSettings {
+  double toolRadius = 2.0;      // ball radius, mm
+  double cuspHeight = 0.01;     // mm
+  double tolerance = 0.01;      // mm, chordal, for the G1 points
+  bool zigzag = true;
+  Sweep sweep = Sweep::Upward;
+  double clearance = 5.0;       // mm: rapids at the part's top + clearance
+  double extension = -1.0;      // mm past open boundaries; < 0: the tool radius
+  double meshDeflection = 0.002;
+  double sampling = 0.25;       // mm between cutter positions before refinement
+  int threads = 0;              // 0: all cores
+};
+
+struct Move {
+  Eigen::Vector3d point;
+  bool rapid = false;
+};
+
+struct Toolpath {
+  std::vector<Move> moves;
+  int passes = 0;
+  long droppedPoints = 0;  // cutter positions computed by drop-cutter
+  double safeHeight = 0.0;
+  std::vector<std::string> warnings;
+};
+
+// Planes containing the tool axis at `angleDeg` from X across the bottom face `bottomFace` (FreeCAD's
+// 1-based number in `part`).
+Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double angleDeg,
+                                const FinishingSettings& settings);
+
+// An area between two guide curves; passes are morphed from `first` to `second`.
+struct GuideArea {
+  Handle(Geom_BSplineCurve) first, second;
+};
+
+// Each area machined by passes morphed between its guides, in the order given (a pass on a guide shared
+// by two areas is cut once). `direction`: the machining direction the guides' points correspond along.
+Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std::vector<GuideArea>& areas,
+                             const Eigen::Vector3d& direction, const FinishingSettings& settings);
+
+}  // namespace hsm::toolpath

@@ -1,0 +1,144 @@
+#include "toolpath/mesh.hpp"
+
+#include "common/error.hpp"
+
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+#include <BRep_Tool.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace hsm::toolpath {
+
+Eigen::AlignedBox3d TriangleMesh::bounds() const {
+  Eigen::AlignedBox3d box;
+  for (const auto& v : vertices) box.extend(v);
+  return box;
+}
+
+TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces) {
+  if (!(deflection > 0.0)) throw InputError("mesh deflection must be positive, got " + std::to_string(deflection));
+  TopTools_IndexedMapOfShape map;
+  TopExp::MapShapes(shape, TopAbs_FACE, map);
+  std::vector<int> wanted = faces;
+  if (wanted.empty())
+    for (int i = 1; i <= map.Extent(); ++i) wanted.push_back(i);
+  // Only the faces asked for are meshed (a compound of them), in parallel.
+  BRep_Builder builder;
+  TopoDS_Compound selected;
+  builder.MakeCompound(selected);
+  for (int index : wanted) {
+    if (index < 1 || index > map.Extent())
+      throw InputError("face " + std::to_string(index) + " does not exist: the shape has " +
+                       std::to_string(map.Extent()) + " faces");
+    builder.Add(selected, map(index));
+  }
+  BRepMesh_IncrementalMesh(selected, deflection, Standard_False, 0.5, Standard_True);
+  TriangleMesh mesh;
+  for (int index : wanted) {
+    const TopoDS_Face face = TopoDS::Face(map(index));
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(face, location);
+    if (triangulation.IsNull()) throw ComputationError("OCCT could not mesh face " + std::to_string(index));
+    const gp_Trsf transform = location.Transformation();
+    const int offset = static_cast<int>(mesh.vertices.size());
+    for (int i = 1; i <= triangulation->NbNodes(); ++i) {
+      const gp_Pnt p = triangulation->Node(i).Transformed(transform);
+      mesh.vertices.emplace_back(p.X(), p.Y(), p.Z());
+    }
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    for (int i = 1; i <= triangulation->NbTriangles(); ++i) {
+      int a, b, c;
+      triangulation->Triangle(i).Get(a, b, c);
+      if (reversed) std::swap(b, c);
+      mesh.triangles.emplace_back(offset + a - 1, offset + b - 1, offset + c - 1);
+      mesh.faceOf.push_back(index);
+    }
+  }
+  return mesh;
+}
+
+namespace {
+TriangleMesh readAsciiStl(std::istream& in, const std::string& path) {
+  TriangleMesh mesh;
+  std::string word;
+  std::vector<Eigen::Vector3d> corner;
+  while (in >> word) {
+    if (word != "vertex") continue;
+    Eigen::Vector3d v;
+    if (!(in >> v.x() >> v.y() >> v.z())) throw InputError(path + ": a vertex has no three numbers");
+    corner.push_back(v);
+    if (corner.size() == 3) {
+      const int base = static_cast<int>(mesh.vertices.size());
+      mesh.vertices.insert(mesh.vertices.end(), corner.begin(), corner.end());
+      mesh.triangles.emplace_back(base, base + 1, base + 2);
+      mesh.faceOf.push_back(0);
+      corner.clear();
+    }
+  }
+  return mesh;
+}
+}  // namespace
+
+TriangleMesh readStl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read the STL file '" + path + "': check the path");
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (data.size() >= 84) {
+    uint32_t count = 0;
+    std::memcpy(&count, data.data() + 80, 4);
+    if (data.size() == 84 + 50ull * count) {  // binary: the size matches the triangle count exactly
+      TriangleMesh mesh;
+      mesh.vertices.reserve(3 * count);
+      for (uint32_t t = 0; t < count; ++t) {
+        const char* record = data.data() + 84 + 50ull * t + 12;
+        float xyz[9];
+        std::memcpy(xyz, record, sizeof xyz);
+        const int base = static_cast<int>(mesh.vertices.size());
+        for (int k = 0; k < 3; ++k) mesh.vertices.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+        mesh.triangles.emplace_back(base, base + 1, base + 2);
+        mesh.faceOf.push_back(0);
+      }
+      return mesh;
+    }
+  }
+  std::istringstream text(data);
+  TriangleMesh mesh = readAsciiStl(text, path);
+  if (mesh.triangles.empty()) throw InputError(path + ": no triangle found (neither binary nor ASCII STL)");
+  return mesh;
+}
+
+std::vector<int> faceAndNeighbours(const TopoDS_Shape& solid, int face) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(solid, TopAbs_FACE, faces);
+  if (face < 1 || face > faces.Extent())
+    throw InputError("face " + std::to_string(face) + " does not exist: the shape has " +
+                     std::to_string(faces.Extent()) + " faces");
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  std::vector<int> result{face};
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(faces(face), TopAbs_EDGE, edges);
+  for (int e = 1; e <= edges.Extent(); ++e) {
+    const int index = edgeFaces.FindIndex(edges(e));
+    if (index == 0) continue;
+    for (const TopoDS_Shape& neighbour : edgeFaces(index)) {
+      const int n = faces.FindIndex(neighbour);
+      if (n > 0 && std::find(result.begin(), result.end(), n) == result.end()) result.push_back(n);
+    }
+  }
+  return result;
+}
+
+}  // namespace hsm::toolpath

@@ -1,0 +1,30 @@
+// Triangle meshes of the faces a cutter must not gouge, with a grid index in the plan (XY) for drop-cutting.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+namespace hsm::toolpath {
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> triangles;
+  std::vector<int> faceOf;  // per triangle: index of the source face (1-based, FreeCAD's FaceN), 0 if unknown
+
+  Eigen::AlignedBox3d bounds() const;
+};
+
+// Tessellates the faces of `shape` within `deflection` mm (chordal) and 0.5 rad (angular). Faces are
+// numbered as FreeCAD numbers them (Face1, Face2… in TopExp order); `faces` selects some (empty: all).
+TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces = {});
+
+// Reads an STL file, binary or ASCII; InputError names the file and what is wrong.
+TriangleMesh readStl(const std::string& path);
+
+// The faces of `solid` that share an edge with face `face` (1-based numbers), the face itself first.
+std::vector<int> faceAndNeighbours(const TopoDS_Shape& solid, int face);
+
+}  // namespace hsm::toolpath
