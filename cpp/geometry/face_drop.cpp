@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_Curve.hxx>
 #include <TopExp_Explorer.hxx>
@@ -9,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hsm::geometry {
@@ -58,11 +60,71 @@ bool UVClassifier::inside(double u, double v) const {
   return in;
 }
 
+UVLocator::UVLocator(const Handle(Geom_Surface)& surface, double u0, double u1, double v0, double v1) {
+  constexpr int kSamples = 128;
+  std::vector<std::array<double, 4>> samples;  // x, y, u, v
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  for (int i = 0; i <= kSamples; ++i)
+    for (int j = 0; j <= kSamples; ++j) {
+      const double u = u0 + (u1 - u0) * i / kSamples, v = v0 + (v1 - v0) * j / kSamples;
+      const gp_Pnt p = surface->Value(u, v);
+      samples.push_back({p.X(), p.Y(), u, v});
+      xmin = std::min(xmin, p.X());
+      xmax = std::max(xmax, p.X());
+      ymin = std::min(ymin, p.Y());
+      ymax = std::max(ymax, p.Y());
+    }
+  cell_ = std::max({(xmax - xmin) / kSamples, (ymax - ymin) / kSamples, 1e-6});
+  x0_ = xmin - cell_;
+  y0_ = ymin - cell_;
+  nx_ = int((xmax - x0_) / cell_) + 3;
+  ny_ = int((ymax - y0_) / cell_) + 3;
+  u_.assign(static_cast<size_t>(nx_) * ny_, std::nanf(""));
+  v_ = u_;
+  std::vector<float> best(u_.size(), 1e30f);
+  // Each sample claims the cells around it it is nearest to (a 5 × 5 neighbourhood covers the gaps
+  // where the surface is steep in plan).
+  for (const auto& s : samples) {
+    const int ci = int((s[0] - x0_) / cell_), cj = int((s[1] - y0_) / cell_);
+    for (int dj = -2; dj <= 2; ++dj)
+      for (int di = -2; di <= 2; ++di) {
+        const int i = ci + di, j = cj + dj;
+        if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
+        const double cx = x0_ + (i + 0.5) * cell_, cy = y0_ + (j + 0.5) * cell_;
+        const float d = float(std::hypot(cx - s[0], cy - s[1]));
+        const size_t k = static_cast<size_t>(j) * nx_ + i;
+        if (d < best[k]) {
+          best[k] = d;
+          u_[k] = float(s[2]);
+          v_[k] = float(s[3]);
+        }
+      }
+  }
+}
+
+bool UVLocator::guess(double x, double y, double& u, double& v) const {
+  const int i = int((x - x0_) / cell_), j = int((y - y0_) / cell_);
+  if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return false;
+  const size_t k = static_cast<size_t>(j) * nx_ + i;
+  if (std::isnan(u_[k])) return false;
+  u = u_[k];
+  v = v_[k];
+  return true;
+}
+
 FaceDropper::FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis)
     : face_(face), surface_(BRep_Tool::Surface(face)), axis_(axis.normalized()) {
   if (surface_.IsNull()) throw InputError("the face has no surface: pass a face of the model");
   analysis_ = new ShapeAnalysis_Surface(surface_);
   surface_->Bounds(u0_, u1_, v0_, v1_);
+  if (std::abs(axis_.z()) > 0.999) {
+    // Over the face's own parameters (a surface may be infinite), widened a little, within the surface.
+    double fu0, fu1, fv0, fv1;
+    BRepTools::UVBounds(face, fu0, fu1, fv0, fv1);
+    const double du = 0.1 * (fu1 - fu0), dv = 0.1 * (fv1 - fv0);
+    locator_ = std::make_unique<UVLocator>(surface_, std::max(u0_, fu0 - du), std::min(u1_, fu1 + du),
+                                           std::max(v0_, fv0 - dv), std::min(v1_, fv1 + dv));
+  }
   e1_ = axis_.unitOrthogonal();
   e2_ = axis_.cross(e1_);
 }
@@ -74,8 +136,14 @@ bool FaceDropper::dropOne(Eigen::Ref<Eigen::RowVector3d> point, double& u, doubl
   // fails, once more from the point's projection on the surface (slower, but from anywhere).
   if (haveGuess && newton(point, u, v)) return true;
   const Eigen::Vector3d target = point.transpose();
-  const gp_Pnt2d uv = analysis_->ValueOfUV(gp_Pnt(target.x(), target.y(), target.z()), 1e-6);
-  double u1 = uv.X(), v1 = uv.Y();
+  double u1 = 0.0, v1 = 0.0;
+  if (locator_) {
+    if (!locator_->guess(target.x(), target.y(), u1, v1)) return false;  // not above the surface at all
+  } else {
+    const gp_Pnt2d uv = analysis_->ValueOfUV(gp_Pnt(target.x(), target.y(), target.z()), 1e-6);
+    u1 = uv.X();
+    v1 = uv.Y();
+  }
   if (!newton(point, u1, v1)) return false;
   u = u1;
   v = v1;

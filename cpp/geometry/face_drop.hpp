@@ -29,6 +29,21 @@ private:
   double vMin_ = 0.0, bandHeight_ = 1.0;
 };
 
+// A first guess of the (u, v) above a plan position: the surface sampled on a 128 × 128 grid of its
+// parameters, the samples splatted into a grid of plan cells. Replaces OCCT's point projection
+// (Extrema_GenExtPS) as the start of Newton: O(1) instead of a search over the whole surface.
+class UVLocator {
+public:
+  UVLocator(const Handle(Geom_Surface)& surface, double u0, double u1, double v0, double v1);
+  // false when (x, y) is outside the plan area the surface covers.
+  bool guess(double x, double y, double& u, double& v) const;
+
+private:
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  int nx_ = 0, ny_ = 0;
+  std::vector<float> u_, v_;  // per cell; NaN where no sample fell
+};
+
 class FaceDropper {
 public:
   FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis);
@@ -51,6 +66,7 @@ private:
   TopoDS_Face face_;
   Handle(Geom_Surface) surface_;
   Handle(ShapeAnalysis_Surface) analysis_;
+  std::unique_ptr<UVLocator> locator_;
   mutable std::unique_ptr<UVClassifier> classifier_;  // built on first use
   Eigen::Vector3d axis_, e1_, e2_;
   double u0_, u1_, v0_, v1_;

@@ -24,8 +24,11 @@ void BallDropCutter::registerBox(double x0, double y0, double x1, double y1, Add
 
 BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius_(radius) {
   if (!(radius > 0.0)) throw InputError("ball radius must be positive, got " + std::to_string(radius) + " mm");
-  if (mesh.triangles.empty()) throw InputError("the mesh has no triangle: nothing to drop the tool on");
-  const Eigen::AlignedBox3d box = mesh.bounds();
+  if (mesh.triangles.empty() && mesh.polylines.empty())
+    throw InputError("the mesh has no triangle: nothing to drop the tool on");
+  Eigen::AlignedBox3d box = mesh.bounds();
+  for (const auto& line : mesh.polylines)
+    for (const auto& p : line) box.extend(p);
   cell_ = std::max(radius, 1e-3);
   x0_ = box.min().x() - radius;
   y0_ = box.min().y() - radius;
@@ -34,6 +37,19 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
   if (double(nx_) * ny_ > 5e7) throw InputError("the mesh is too large for a tool this small: split the area");
   cells_.resize(static_cast<size_t>(nx_) * ny_);
 
+  // Polylines: their points are vertices, their chords edges.
+  for (size_t l = 0; l < mesh.polylines.size(); ++l) {
+    const auto& line = mesh.polylines[l];
+    const int face = l < mesh.polylineFace.size() ? mesh.polylineFace[l] : 0;
+    for (size_t k = 0; k < line.size(); ++k) {
+      const Eigen::Vector3d& v = line[k];
+      const int id = static_cast<int>(vertices_.size());
+      vertices_.push_back({v.x(), v.y(), v.z(), face});
+      registerBox(v.x(), v.y(), v.x(), v.y(), [&](Cell& cell) { cell.vertices.push_back(id); });
+      if (k == 0) continue;
+      addEdge(line[k - 1], v, face);
+    }
+  }
   std::map<std::pair<int, int>, int> edgeIndex;  // unique edges (by vertex pair)
   std::vector<char> vertexSeen(mesh.vertices.size(), 0);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -67,18 +83,20 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
       }
       if (p > q) std::swap(p, q);
       if (edgeIndex.count({p, q})) continue;
-      const Eigen::Vector3d& A = mesh.vertices[p];
-      const Eigen::Vector3d& B = mesh.vertices[q];
-      const double length = std::hypot(B.x() - A.x(), B.y() - A.y());
       edgeIndex[{p, q}] = 1;
-      if (length < 1e-12) continue;  // vertical: its end vertices cover it
-      const int id = static_cast<int>(edges_.size());
-      edges_.push_back({A.x(), A.y(), A.z(), (B.x() - A.x()) / length, (B.y() - A.y()) / length, length,
-                        (B.z() - A.z()) / length, face});
-      registerBox(std::min(A.x(), B.x()), std::min(A.y(), B.y()), std::max(A.x(), B.x()), std::max(A.y(), B.y()),
-                  [&](Cell& cell) { cell.edges.push_back(id); });
+      addEdge(mesh.vertices[p], mesh.vertices[q], face);
     }
   }
+}
+
+void BallDropCutter::addEdge(const Eigen::Vector3d& A, const Eigen::Vector3d& B, int face) {
+  const double length = std::hypot(B.x() - A.x(), B.y() - A.y());
+  if (length < 1e-12) return;  // vertical: its end vertices cover it
+  const int id = static_cast<int>(edges_.size());
+  edges_.push_back({A.x(), A.y(), A.z(), (B.x() - A.x()) / length, (B.y() - A.y()) / length, length,
+                    (B.z() - A.z()) / length, face});
+  registerBox(std::min(A.x(), B.x()), std::min(A.y(), B.y()), std::max(A.x(), B.x()), std::max(A.y(), B.y()),
+              [&](Cell& cell) { cell.edges.push_back(id); });
 }
 
 const BallDropCutter::Cell* BallDropCutter::cellAt(double x, double y) const {

@@ -47,6 +47,7 @@ private:
   template <class Add>
   void registerBox(double x0, double y0, double x1, double y1, Add&& add);
   const Cell* cellAt(double x, double y) const;
+  void addEdge(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int face);
 
   double radius_;
   double x0_, y0_, cell_;

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "curvenet/plane_cuts.hpp"
 #include "geometry/face_drop.hpp"
+#include "toolpath/surface_drop.hpp"
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
@@ -17,6 +18,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <thread>
 
 namespace hsm::toolpath {
 
@@ -55,8 +57,12 @@ public:
       throw InputError("bottom face " + std::to_string(bottomFace) + " does not exist: the part has " +
                        std::to_string(faces.Extent()) + " faces");
     bottom_ = TopoDS::Face(faces(bottomFace));
-    const TriangleMesh mesh = meshFaces(part, settings.meshDeflection, faceAndNeighbours(part, bottomFace));
+    std::vector<int> around = faceAndNeighbours(part, bottomFace);
+    around.erase(around.begin());  // the bottom face itself is dropped on exactly
+    TriangleMesh mesh = meshFaces(part, settings.meshDeflection, around);
+    addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
+    exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius);
     dropper_ = std::make_unique<geometry::FaceDropper>(bottom_, Vector3::UnitZ());
     Bnd_Box box;
     BRepBndLib::Add(part, box);
@@ -73,13 +79,58 @@ public:
   }
 
   const FinishingSettings& settings() const { return settings_; }
+
+  // The tool tip at (x, y): the highest of the exact contact on the bottom face and the mesh contacts.
+  // `state` carries the surface parameters from one point to the next along a pass.
+  double dropTip(double x, double y, SurfaceBallDrop::Result& state, bool& haveGuess, bool* onBottom = nullptr) const {
+    double z = cutter_->drop(x, y).z;
+    SurfaceBallDrop::Result r = state;
+    bool bottomHolds = false;
+    if (exact_->drop(x, y, r, haveGuess)) {
+      state = r;
+      haveGuess = true;
+      if (r.onFace) {
+        bottomHolds = r.tipZ >= z - 1e-9;
+        z = std::max(z, r.tipZ);
+      }
+    } else {
+      haveGuess = false;
+    }
+    if (onBottom) *onBottom = bottomHolds;
+    return z;
+  }
+
+  // Tips along plan points, on the threads asked for (each slice of the pass starts its own Newton).
+  void dropAll(geometry::PointArray& points, std::vector<char>& onBottom) const {
+    const Eigen::Index n = points.rows();
+    onBottom.assign(static_cast<size_t>(n), 0);
+    int threads = settings_.threads > 0 ? settings_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = int(std::min<Eigen::Index>(threads, std::max<Eigen::Index>(1, n / 500)));
+    auto work = [&](Eigen::Index from, Eigen::Index to) {
+      SurfaceBallDrop::Result state;
+      bool haveGuess = false;
+      for (Eigen::Index i = from; i < to; ++i) {
+        bool bottom = false;
+        points(i, 2) = dropTip(points(i, 0), points(i, 1), state, haveGuess, &bottom);
+        onBottom[static_cast<size_t>(i)] = bottom;
+      }
+    };
+    if (threads == 1) return work(0, n);
+    std::vector<std::thread> pool;
+    for (int k = 0; k < threads; ++k) pool.emplace_back(work, n * k / threads, n * (k + 1) / threads);
+    for (auto& t : pool) t.join();
+  }
   // The stepover on a flat face.
   double flatStep() const {
     const double r = settings_.toolRadius, h = settings_.cuspHeight;
     return 2.0 * std::sqrt(2.0 * r * h - h * h);
   }
   double safeHeight() const { return safeHeight_; }
-  const BallDropCutter& cutter() const { return *cutter_; }
+  double tipAt(double x, double y) const {
+    SurfaceBallDrop::Result state;
+    bool haveGuess = false;
+    return dropTip(x, y, state, haveGuess);
+  }
   Vector2 faceMin() const { return faceMin_; }
   Vector2 faceMax() const { return faceMax_; }
   long dropped = 0;
@@ -129,16 +180,17 @@ public:
     if (plan.size() < 2) return passes;
     geometry::PointArray points(static_cast<Eigen::Index>(plan.size()), 3);
     for (size_t i = 0; i < plan.size(); ++i) points.row(static_cast<Eigen::Index>(i)) << plan[i].x(), plan[i].y(), 0.0;
-    cutter_->dropAll(points, nullptr, settings_.threads);
+    std::vector<char> onBottom;
+    dropAll(points, onBottom);
     dropped += points.rows();
-    const std::vector<SurfacePoint> face = onFace(plan);
     size_t i = 0;
     while (i < plan.size()) {
-      while (i < plan.size() && !face[i].inside) ++i;
+      while (i < plan.size() && !onBottom[i]) ++i;
       if (i == plan.size()) break;
       size_t j = i;
-      while (j + 1 < plan.size() && face[j + 1].inside) ++j;
-      // [i, j] over the face; extend each end past an open boundary (no wall lifting the tool).
+      while (j + 1 < plan.size() && onBottom[j + 1]) ++j;
+      // [i, j]: the ball rests on the bottom face (where a flank holds it up, the pass ends: it would only
+      // ride up the wall); extend each end past an open boundary (where nothing lifts the tool).
       const size_t first = extend(points, plan, i, -1), last = extend(points, plan, j, +1);
       std::vector<size_t> indices;
       for (size_t k = first; k <= last; ++k) indices.push_back(k);
@@ -167,13 +219,15 @@ private:
   Pass refine(const geometry::PointArray& points, const std::vector<Vector2>& plan, const std::vector<size_t>& indices) {
     Pass pass;
     const double limit = 0.25 * settings_.tolerance;
+    SurfaceBallDrop::Result state;  // carried from one midpoint to the next: they are neighbours
+    bool haveGuess = false;
     std::function<void(const Vector3&, const Vector3&, int)> bisect = [&](const Vector3& a, const Vector3& b, int depth) {
       const Vector2 mid = 0.5 * (a.head<2>() + b.head<2>());
-      const Contact c = cutter_->drop(mid.x(), mid.y());
+      const double z = dropTip(mid.x(), mid.y(), state, haveGuess);
       ++dropped;
-      if (!c.touches()) return;
-      const Vector3 m(mid.x(), mid.y(), c.z);
-      if (depth < 8 && std::abs(c.z - 0.5 * (a.z() + b.z())) > limit) {
+      if (!std::isfinite(z)) return;
+      const Vector3 m(mid.x(), mid.y(), z);
+      if (depth < 8 && std::abs(z - 0.5 * (a.z() + b.z())) > limit) {
         bisect(a, m, depth + 1);
         pass.push_back(m);
         bisect(m, b, depth + 1);
@@ -227,6 +281,7 @@ private:
   int bottomFace_;
   TopoDS_Face bottom_;
   std::unique_ptr<BallDropCutter> cutter_;
+  std::unique_ptr<SurfaceBallDrop> exact_;
   std::unique_ptr<geometry::FaceDropper> dropper_;
   double safeHeight_ = 0.0, faceTop_ = 0.0, extension_ = 0.0;
   Vector2 faceMin_, faceMax_;
@@ -327,8 +382,7 @@ Toolpath assemble(const Context& context, std::vector<Pass> passes) {
       const int steps = std::max(2, int(std::ceil((start - from).head<2>().norm() / s.sampling)));
       for (int i = 1; i < steps; ++i) {
         Vector3 p = from + (start - from) * double(i) / steps;
-        const Contact c = context.cutter().drop(p.x(), p.y());
-        p.z() = std::max(p.z(), c.z);
+        p.z() = std::max(p.z(), context.tipAt(p.x(), p.y()));
         path.moves.push_back({p, false});
       }
     } else {

@@ -2,17 +2,20 @@
 // (guidance-curve paper §2.2, §3).
 //
 // How (where the paper and the issue are silent, the choices are ours):
-// - Gouge-free positions: drop-cutter of the ball on a mesh of the bottom face and every face touching it
-//   (flanks), meshed within 0.002 mm; positions are of the tool tip.
+// - Gouge-free positions: the ball dropped exactly on the bottom face (its centre on the offset surface,
+//   found by Newton: no mesh error where the finish matters) and by drop-cutter on a mesh of every face
+//   touching it (flanks, within 0.004 mm) and on the bottom face's own edges; the highest contact wins.
+//   Positions are of the tool tip.
 // - Stepover: the next pass is the farthest one whose distance to the current pass, measured between
 //   their points on the bottom face, stays within the stepover that leaves the cusp height on the real
 //   surface: s = 2·sqrt(2·R·h − h²) with R = 1/(1/r − κ), κ the normal curvature of the face across the
 //   passes (concave > 0), so that passes close up on convex parts and open on concave ones.
 // - Points: the cutter positions are sampled, refined where the path bends, then reduced to the fewest
 //   G1 points within the machining tolerance (Douglas–Peucker on the refined polyline).
-// - Passes stay over the bottom face; at a flank the drop-cutter lifts the ball along it; past an open
-//   boundary (where nothing lifts the tool) a pass goes on by the extension (the tool radius by default)
-//   so the ball leaves the face whole.
+// - Passes keep the ball on the bottom face: where a flank would hold it up the pass ends (the first pass
+//   along a wall is the one whose ball touches both wall and bottom; the fillet of the tool's radius is
+//   left, as by any ball); past an open boundary (where nothing lifts the tool) a pass goes on by the
+//   extension (the tool radius by default) so that the ball leaves the face whole.
 // - Sweeping: upward orders the passes so that the stepover climbs (the first pass is on the lower side),
 //   downward the other way. Zigzag alternates pass directions and links neighbours by a G1 move that
 //   follows the surface when they are close (two tool radii); otherwise, and for one-way, the tool
@@ -39,7 +42,7 @@ struct FinishingSettings {
   Sweep sweep = Sweep::Upward;
   double clearance = 5.0;       // mm: rapids at the part's top + clearance
   double extension = -1.0;      // mm past open boundaries; < 0: the tool radius
-  double meshDeflection = 0.002;
+  double meshDeflection = 0.004;  // mm, for the faces around the bottom face
   double sampling = 0.25;       // mm between cutter positions before refinement
   int threads = 0;              // 0: all cores
 };

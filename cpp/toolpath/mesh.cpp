@@ -2,7 +2,10 @@
 
 #include "common/error.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <TopExp_Explorer.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 #include <BRep_Tool.hxx>
@@ -67,6 +70,24 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
     }
   }
   return mesh;
+}
+
+void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  if (face < 1 || face > faces.Extent()) throw InputError("face " + std::to_string(face) + " does not exist");
+  for (TopExp_Explorer it(faces(face), TopAbs_EDGE); it.More(); it.Next()) {
+    BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
+    const double length = GCPnts_AbscissaPoint::Length(curve);
+    const int count = std::max(2, static_cast<int>(std::ceil(length / spacing)) + 1);
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < count; ++k) {
+      const gp_Pnt p = curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * k / (count - 1));
+      points.emplace_back(p.X(), p.Y(), p.Z());
+    }
+    mesh.polylines.push_back(std::move(points));
+    mesh.polylineFace.push_back(face);
+  }
 }
 
 namespace {

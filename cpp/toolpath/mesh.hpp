@@ -13,6 +13,9 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
   std::vector<int> faceOf;  // per triangle: index of the source face (1-based, FreeCAD's FaceN), 0 if unknown
+  // Polylines the tool must not cross either (edges sampled finely), with their face number.
+  std::vector<std::vector<Eigen::Vector3d>> polylines;
+  std::vector<int> polylineFace;
 
   Eigen::AlignedBox3d bounds() const;
 };
@@ -20,6 +23,9 @@ struct TriangleMesh {
 // Tessellates the faces of `shape` within `deflection` mm (chordal) and 0.5 rad (angular). Faces are
 // numbered as FreeCAD numbers them (Face1, Face2… in TopExp order); `faces` selects some (empty: all).
 TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces = {});
+
+// The boundary edges of face `face` of `shape` as polylines with chords of at most `spacing` mm.
+void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing);
 
 // Reads an STL file, binary or ASCII; InputError names the file and what is wrong.
 TriangleMesh readStl(const std::string& path);

@@ -1,0 +1,36 @@
+// Exact drop of a ball on one smooth face: the ball centre lies on the face's offset surface S + r·n, and
+// for a tool at (x, y) Newton finds the (u, v) whose offset point is above (x, y). No mesh, so no mesh
+// error on the face being finished; the faces around it are left to the mesh drop-cutter.
+#pragma once
+
+#include "geometry/face_drop.hpp"
+
+#include <Geom_Surface.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <memory>
+
+namespace hsm::toolpath {
+
+class SurfaceBallDrop {
+public:
+  SurfaceBallDrop(const TopoDS_Face& face, double radius);
+
+  struct Result {
+    double tipZ = 0.0;     // tool tip height
+    double u = 0.0, v = 0.0;  // contact point parameters
+    bool onFace = false;   // the contact point is inside the face's boundaries
+  };
+  // (u, v) in `guess` when `haveGuess`; false when Newton does not converge (no contact on the surface).
+  bool drop(double x, double y, Result& result, bool haveGuess) const;
+
+private:
+  bool newton(double x, double y, double& u, double& v, Eigen::Vector3d& centre) const;
+
+  Handle(Geom_Surface) surface_;
+  geometry::FaceDropper dropper_;  // first guesses, and the inside test
+  double radius_, sign_;           // sign_: which side of the surface the tool is on (its normal points up)
+  double u0_, u1_, v0_, v1_;
+};
+
+}  // namespace hsm::toolpath
