@@ -135,6 +135,24 @@ public:
   Vector2 faceMax() const { return faceMax_; }
   long dropped = 0;
 
+  // Where the ball above each plan position touches the bottom face: the contact points whose spacing
+  // across passes sets the cusp (inside = the contact is on the face).
+  std::vector<SurfacePoint> contacts(const std::vector<Vector2>& plan) const {
+    std::vector<SurfacePoint> result(plan.size());
+    SurfaceBallDrop::Result state;
+    bool haveGuess = false;
+    for (size_t i = 0; i < plan.size(); ++i) {
+      if (!exact_->drop(plan[i].x(), plan[i].y(), state, haveGuess)) {
+        haveGuess = false;
+        continue;
+      }
+      haveGuess = true;
+      const gp_Pnt p = exact_->surface()->Value(state.u, state.v);
+      result[i] = {Vector3(p.X(), p.Y(), p.Z()), state.u, state.v, state.onFace};
+    }
+    return result;
+  }
+
   // Points of the bottom face under plan positions.
   std::vector<SurfacePoint> onFace(const std::vector<Vector2>& plan) const {
     std::vector<SurfacePoint> result(plan.size());
@@ -302,10 +320,10 @@ std::vector<double> passParameters(const Context& context, const Family& family,
   double lastStep = 1e-3 * span;
   while (std::abs(current - family.begin) < span - 1e-12) {
     const std::vector<Vector2> plan = family.plan(current, kStationStep);
-    const std::vector<SurfacePoint> here = context.onFace(plan);
+    const std::vector<SurfacePoint> here = context.contacts(plan);
     // Allowed stepover at each station, measured across the passes.
     const std::vector<Vector2> ahead = family.plan(current + sense * 1e-3 * span, kStationStep);
-    const std::vector<SurfacePoint> near = context.onFace(ahead);
+    const std::vector<SurfacePoint> near = context.contacts(ahead);
     std::vector<double> allowed(here.size(), kInfinity);
     for (size_t k = 0; k < here.size() && k < near.size(); ++k) {
       if (!here[k].inside || !near[k].inside) continue;
@@ -319,7 +337,7 @@ std::vector<double> passParameters(const Context& context, const Family& family,
       if (std::isfinite(a)) largest = std::max(largest, a);
     if (largest == 0.0) largest = context.flatStep();
     auto fits = [&](double candidate) {
-      const std::vector<SurfacePoint> there = context.onFace(family.plan(candidate, kStationStep));
+      const std::vector<SurfacePoint> there = context.contacts(family.plan(candidate, kStationStep));
       for (size_t k = 0; k < here.size() && k < there.size(); ++k) {
         if (!there[k].inside) continue;
         const double limit = here[k].inside ? allowed[k] : largest;

@@ -7,7 +7,7 @@
 //   touching it (flanks, within 0.004 mm) and on the bottom face's own edges; the highest contact wins.
 //   Positions are of the tool tip.
 // - Stepover: the next pass is the farthest one whose distance to the current pass, measured between
-//   their points on the bottom face, stays within the stepover that leaves the cusp height on the real
+//   the ball's contact points on the bottom face, stays within the stepover that leaves the cusp height on the real
 //   surface: s = 2·sqrt(2·R·h − h²) with R = 1/(1/r − κ), κ the normal curvature of the face across the
 //   passes (concave > 0), so that passes close up on convex parts and open on concave ones.
 // - Points: the cutter positions are sampled, refined where the path bends, then reduced to the fewest

@@ -1,0 +1,192 @@
+// Finishing toolpaths on the master bottom feature, checked by an independent measure: the height map of
+// the ball swept along the G1 moves, against the face itself (no number of the generator is reused).
+#include "common/error.hpp"
+#include "curvenet/curvenet.hpp"
+#include "geometry/face_drop.hpp"
+#include "support/master_feature.hpp"
+#include "toolpath/finishing.hpp"
+
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace hsm;
+using namespace hsm::toolpath;
+
+namespace {
+const test::MasterFeature& feature() {
+  static const test::MasterFeature loaded = test::loadMasterFeature();
+  return loaded;
+}
+
+int bottomIndex() {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(feature().shape, TopAbs_FACE, faces);
+  return faces.FindIndex(feature().bottom);
+}
+
+struct Residual {
+  double worstGouge = 0.0;  // mm the swept ball goes below the face
+  double worstCusp = 0.0;   // mm of material left, measured along the face normal
+  long samples = 0;
+};
+
+// The lowest point of the ball swept along the feed moves, above each point of a grid on the face, in the
+// window [x0, x1] × [y0, y1]; compared with the face's own height there.
+Residual sweep(const Toolpath& path, double r, double x0, double x1, double y0, double y1, double grid) {
+  const int nx = int((x1 - x0) / grid) + 1, ny = int((y1 - y0) / grid) + 1;
+  std::vector<double> envelope(static_cast<size_t>(nx) * ny, 1e300);
+  for (size_t k = 1; k < path.moves.size(); ++k) {
+    if (path.moves[k].rapid || path.moves[k - 1].rapid) continue;
+    const Eigen::Vector3d a = path.moves[k - 1].point, b = path.moves[k].point;
+    if (std::max(a.x(), b.x()) < x0 - r || std::min(a.x(), b.x()) > x1 + r || std::max(a.y(), b.y()) < y0 - r ||
+        std::min(a.y(), b.y()) > y1 + r)
+      continue;  // nowhere near the window
+    const int steps = std::max(1, int(std::ceil((b - a).norm() / (0.4 * grid))));
+    for (int s = 0; s <= steps; ++s) {
+      const Eigen::Vector3d tip = a + (b - a) * double(s) / steps;
+      const Eigen::Vector3d centre = tip + Eigen::Vector3d(0, 0, r);
+      const int i0 = std::max(0, int(std::floor((centre.x() - r - x0) / grid)));
+      const int i1 = std::min(nx - 1, int(std::ceil((centre.x() + r - x0) / grid)));
+      const int j0 = std::max(0, int(std::floor((centre.y() - r - y0) / grid)));
+      const int j1 = std::min(ny - 1, int(std::ceil((centre.y() + r - y0) / grid)));
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+          const double dx = x0 + i * grid - centre.x(), dy = y0 + j * grid - centre.y();
+          const double d2 = dx * dx + dy * dy;
+          if (d2 > r * r) continue;
+          double& e = envelope[static_cast<size_t>(j) * nx + i];
+          e = std::min(e, centre.z() - std::sqrt(r * r - d2));
+        }
+    }
+  }
+  const geometry::FaceDropper face(feature().bottom, Eigen::Vector3d::UnitZ());
+  Residual result;
+  double u = 0, v = 0;
+  bool guess = false;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      Eigen::RowVector3d p(x0 + i * grid, y0 + j * grid, 0.0);
+      if (!face.dropOne(p, u, v, guess)) continue;
+      guess = true;
+      const double e = envelope[static_cast<size_t>(j) * nx + i];
+      if (e > 1e299 || !face.inside(u, v)) continue;
+      gp_Pnt point;
+      gp_Vec su, sv;
+      face.surface()->D1(u, v, point, su, sv);
+      const gp_Vec n = su.Crossed(sv).Normalized();
+      const double residual = (e - p.z()) * std::abs(n.Z());  // vertical → along the normal
+      result.worstGouge = std::max(result.worstGouge, -residual);
+      result.worstCusp = std::max(result.worstCusp, residual);
+      ++result.samples;
+    }
+  return result;
+}
+
+FinishingSettings settings() {
+  FinishingSettings s;
+  s.toolRadius = 2.0;
+  s.cuspHeight = 0.01;
+  s.tolerance = 0.01;
+  return s;
+}
+}  // namespace
+
+// The material left is the cusp between passes plus the chords' deviation from the ideal path (within
+// the machining tolerance): with a tight tolerance it is the cusp alone; with the usual one, at most both.
+// The swept-ball grid (0.025 mm) and the sampling of the sweep add up to 0.001 mm.
+void expectCuspAndNoGouge(const std::function<Toolpath(const FinishingSettings&)>& strategy, const char* name) {
+  const std::array<double, 4> windows[] = {{64, 70, 12, 34}, {45, 55, 20, 28}};  // across the valley; the bump
+  FinishingSettings tight = settings();
+  tight.tolerance = 0.001;
+  const Toolpath ideal = strategy(tight), usual = strategy(settings());
+  EXPECT_GT(usual.passes, 80) << name;
+  for (const auto& [x0, x1, y0, y1] : windows) {
+    const Residual cusp = sweep(ideal, 2.0, x0, x1, y0, y1, 0.025);
+    EXPECT_GT(cusp.samples, 50000);
+    EXPECT_LE(cusp.worstCusp, 0.011) << name << ": cusp between passes, window at " << x0 << ", " << y0;
+    EXPECT_LE(cusp.worstGouge, 0.001) << name;
+    const Residual real = sweep(usual, 2.0, x0, x1, y0, y1, 0.025);
+    EXPECT_LE(real.worstCusp, 0.01 + 0.01 + 0.001) << name << ": cusp and chords";
+    EXPECT_LE(real.worstGouge, 0.01) << name << ": chords within the tolerance";
+  }
+}
+
+TEST(Finishing, GuideCurvesKeepTheCuspAndNeverGouge) {
+  expectCuspAndNoGouge(
+      [](const FinishingSettings& s) {
+        return guideCurveFinishing(feature().shape, bottomIndex(), {{feature().boundary1, feature().boundary2}},
+                                   Eigen::Vector3d::UnitX(), s);
+      },
+      "guide curves");
+}
+
+TEST(Finishing, ParallelPlanesKeepTheCuspAndNeverGouge) {
+  for (double angle : {0.0, 30.0})
+    expectCuspAndNoGouge([angle](const FinishingSettings& s) {
+      return parallelPlaneFinishing(feature().shape, bottomIndex(), angle, s);
+    }, angle == 0.0 ? "planes at 0°" : "planes at 30°");
+}
+
+TEST(Finishing, MovesStartAndEndAtTheSafeHeightAndRapidsStayAbove) {
+  FinishingSettings s = settings();
+  s.zigzag = false;
+  const Toolpath path = parallelPlaneFinishing(feature().shape, bottomIndex(), 0.0, s);
+  ASSERT_FALSE(path.moves.empty());
+  EXPECT_TRUE(path.moves.front().rapid);
+  EXPECT_DOUBLE_EQ(path.moves.front().point.z(), path.safeHeight);
+  EXPECT_DOUBLE_EQ(path.moves.back().point.z(), path.safeHeight);
+  for (size_t k = 1; k < path.moves.size(); ++k) {
+    const bool horizontalRapid = path.moves[k].rapid && path.moves[k - 1].rapid &&
+                                 path.moves[k].point.head<2>() != path.moves[k - 1].point.head<2>();
+     if (horizontalRapid) EXPECT_DOUBLE_EQ(path.moves[k].point.z(), path.safeHeight);  // at the safe height
+  }
+  // One-way: every pass runs the same way along X.
+  int forward = 0, backward = 0;
+  for (size_t k = 1; k < path.moves.size(); ++k)
+    if (!path.moves[k].rapid && !path.moves[k - 1].rapid) {
+      const double dx = path.moves[k].point.x() - path.moves[k - 1].point.x();
+      (dx > 0 ? forward : backward) += std::abs(dx) > 0.5;
+    }
+  EXPECT_TRUE(forward == 0 || backward == 0) << forward << " " << backward;
+}
+
+TEST(Finishing, ComposedAreasCutTheSharedGuideOnceAndSweepUpward) {
+  curvenet::GuidanceSettings g;
+  g.net.face = feature().bottom;
+  const auto net = curvenet::guidanceCurves({feature().boundary1, feature().boundary2}, g).net;
+  std::vector<GuideArea> areas;
+  for (const auto& a : net.elementaryAreas()) areas.push_back({net.curves[a.lower].curve, net.curves[a.upper].curve});
+  FinishingSettings s = settings();
+  const Toolpath composed = guideCurveFinishing(feature().shape, bottomIndex(), areas, Eigen::Vector3d::UnitX(), s);
+  const Toolpath single = guideCurveFinishing(feature().shape, bottomIndex(), {{feature().boundary1, feature().boundary2}},
+                                              Eigen::Vector3d::UnitX(), s);
+  EXPECT_GT(composed.passes, single.passes * 0.8);
+  EXPECT_LT(composed.passes, single.passes * 1.6);
+  s.sweep = Sweep::Downward;
+  const Toolpath down = guideCurveFinishing(feature().shape, bottomIndex(), areas, Eigen::Vector3d::UnitX(), s);
+  // The first feed move of the upward path is lower than the first of the downward one.
+  auto firstFeed = [](const Toolpath& p) {
+    for (const Move& m : p.moves)
+      if (!m.rapid) return m.point;
+    return Eigen::Vector3d(0, 0, 0);
+  };
+  EXPECT_NE(firstFeed(composed).y() > 30, firstFeed(down).y() > 30);  // they start on opposite sides
+}
+
+TEST(Finishing, BadSettingsAreRefused) {
+  FinishingSettings s = settings();
+  s.cuspHeight = 0.0;
+  EXPECT_THROW(parallelPlaneFinishing(feature().shape, bottomIndex(), 0.0, s), hsm::InputError);
+  s = settings();
+  s.toolRadius = -1;
+  EXPECT_THROW(parallelPlaneFinishing(feature().shape, bottomIndex(), 0.0, s), hsm::InputError);
+  EXPECT_THROW(parallelPlaneFinishing(feature().shape, 99, 0.0, settings()), hsm::InputError);
+  EXPECT_THROW(guideCurveFinishing(feature().shape, bottomIndex(), {}, Eigen::Vector3d::UnitX(), settings()), hsm::InputError);
+  EXPECT_THROW(guideCurveFinishing(feature().shape, bottomIndex(), {{feature().boundary1, feature().boundary2}},
+                                   Eigen::Vector3d::UnitZ(), settings()),
+               hsm::InputError);
+}
