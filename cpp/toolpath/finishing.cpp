@@ -370,39 +370,60 @@ std::vector<double> passParameters(const Context& context, const Family& family,
   return parameters;
 }
 
-double meanHeight(const std::vector<Pass>& passes) {
+double meanHeight(const std::vector<std::vector<Pass>>& lines) {
   double sum = 0.0;
   long n = 0;
-  for (const Pass& p : passes)
-    for (const Vector3& x : p) {
-      sum += x.z();
-      ++n;
-    }
+  for (const auto& line : lines)
+    for (const Pass& p : line)
+      for (const Vector3& x : p) {
+        sum += x.z();
+        ++n;
+      }
   return n ? sum / n : 0.0;
 }
 
+// A G1 link from the end of a pass to the start of the next that follows the surface (dropped, so it
+// cannot gouge), or none when it would climb a wall (lifted more than the tool radius above the straight
+// line): then the tool retracts instead.
+std::vector<Vector3> surfaceLink(const Context& context, const Vector3& from, const Vector3& to) {
+  const FinishingSettings& s = context.settings();
+  const int steps = std::max(2, int(std::ceil((to - from).head<2>().norm() / s.sampling)));
+  std::vector<Vector3> link;
+  for (int i = 1; i < steps; ++i) {
+    Vector3 p = from + (to - from) * double(i) / steps;
+    const double line = p.z();
+    p.z() = std::max(p.z(), context.tipAt(p.x(), p.y()));
+    if (p.z() - line > s.toolRadius) return {};
+    link.push_back(p);
+  }
+  return link;
+}
+
 // Links passes into moves: zigzag neighbours by a surface-following G1 when close, else retract.
-Toolpath assemble(const Context& context, std::vector<Pass> passes) {
+Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) {
   const FinishingSettings& s = context.settings();
   Toolpath path;
   path.safeHeight = context.safeHeight();
-  for (size_t k = 0; k < passes.size(); ++k)
-    if (s.zigzag ? (k % 2 == 1) : false) std::reverse(passes[k].begin(), passes[k].end());
-  const double linkLimit = 2.0 * s.toolRadius;
+  // Zigzag: every other line (a plane, or a morphed pass) runs backwards, its pieces in reverse order too.
+  std::vector<Pass> passes;
+  for (size_t k = 0; k < lines.size(); ++k) {
+    if (s.zigzag && k % 2 == 1) {
+      std::reverse(lines[k].begin(), lines[k].end());
+      for (Pass& piece : lines[k]) std::reverse(piece.begin(), piece.end());
+    }
+    passes.insert(passes.end(), lines[k].begin(), lines[k].end());
+  }
+  const double linkLimit = 10.0 * s.toolRadius;
   bool inside = false;  // the tool is down at the end of the previous pass
   for (const Pass& pass : passes) {
     if (pass.size() < 2) continue;
     ++path.passes;
     const Vector3& start = pass.front();
-    if (inside && s.zigzag && (start - path.moves.back().point).norm() <= linkLimit) {
-      // Short G1 link over the surface: dropped at a few points so that it cannot gouge.
-      const Vector3 from = path.moves.back().point;
-      const int steps = std::max(2, int(std::ceil((start - from).head<2>().norm() / s.sampling)));
-      for (int i = 1; i < steps; ++i) {
-        Vector3 p = from + (start - from) * double(i) / steps;
-        p.z() = std::max(p.z(), context.tipAt(p.x(), p.y()));
-        path.moves.push_back({p, false});
-      }
+    std::vector<Vector3> link;
+    if (inside && s.zigzag && (start - path.moves.back().point).norm() <= linkLimit)
+      link = surfaceLink(context, path.moves.back().point, start);
+    if (!link.empty()) {
+      for (const Vector3& p : link) path.moves.push_back({p, false});
     } else {
       if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});
       path.moves.push_back({Vector3(start.x(), start.y(), path.safeHeight), true});
@@ -416,22 +437,26 @@ Toolpath assemble(const Context& context, std::vector<Pass> passes) {
   return path;
 }
 
-// Passes in sweeping order: upward starts on the lower side.
-void orderForSweep(std::vector<std::vector<Pass>>& groups, Sweep sweep) {
-  if (groups.size() < 1) return;
-  std::vector<Pass> all;
-  const double firstHeight = meanHeight(groups.front()), lastHeight = meanHeight(groups.back());
+// Groups (areas) of lines (passes, each in pieces) in sweeping order: upward starts on the lower side.
+void orderForSweep(std::vector<std::vector<std::vector<Pass>>>& groups, Sweep sweep) {
+  if (groups.empty()) return;
+  // Several areas: compare the first and last areas; one area: its first and last passes.
+  const bool single = groups.size() == 1;
+  const double firstHeight = single ? meanHeight({groups.front().front()}) : meanHeight(groups.front());
+  const double lastHeight = single ? meanHeight({groups.front().back()}) : meanHeight(groups.back());
   const bool climbing = lastHeight >= firstHeight;
   if (climbing != (sweep == Sweep::Upward)) {
     std::reverse(groups.begin(), groups.end());
     for (auto& g : groups) std::reverse(g.begin(), g.end());
   }
+
 }
 
-std::vector<Pass> flatten(const std::vector<std::vector<Pass>>& groups) {
-  std::vector<Pass> passes;
-  for (const auto& g : groups) passes.insert(passes.end(), g.begin(), g.end());
-  return passes;
+// The lines (each a list of pass pieces) of all groups, in order.
+std::vector<std::vector<Pass>> lines(const std::vector<std::vector<std::vector<Pass>>>& groups) {
+  std::vector<std::vector<Pass>> all;
+  for (const auto& g : groups) all.insert(all.end(), g.begin(), g.end());
+  return all;
 }
 
 }  // namespace
@@ -459,13 +484,14 @@ Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double
     for (double t = a0 - margin; t <= a1 + margin + 1e-9; t += spacing) plan.push_back(t * along + q * across);
     return plan;
   };
-  std::vector<std::vector<Pass>> groups;
+  std::vector<std::vector<Pass>> planes;
   for (double q : passParameters(context, family, false)) {
     std::vector<Pass> cut = context.cut(family.plan(q, settings.sampling));
-    if (!cut.empty()) groups.push_back(cut);
+    if (!cut.empty()) planes.push_back(cut);
   }
+  std::vector<std::vector<std::vector<Pass>>> groups{planes};
   orderForSweep(groups, settings.sweep);
-  Toolpath path = assemble(context, flatten(groups));
+  Toolpath path = assemble(context, lines(groups));
   path.droppedPoints = context.dropped;
   return path;
 }
@@ -477,7 +503,7 @@ Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std
     throw InputError("the machining direction must be a horizontal vector, e.g. (1, 0, 0)");
   Context context(part, bottomFace, settings);
   const Vector3 direction = Vector3(directionIn.x(), directionIn.y(), 0.0).normalized();
-  std::vector<std::vector<Pass>> groups;
+  std::vector<std::vector<std::vector<Pass>>> groups;
   for (size_t index = 0; index < areas.size(); ++index) {
     const GuideArea& area = areas[index];
     if (area.first.IsNull() || area.second.IsNull()) throw InputError("area " + std::to_string(index + 1) + " lacks a guide");
@@ -520,15 +546,15 @@ Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std
       }
       return plan;
     };
-    std::vector<Pass> group;
+    std::vector<std::vector<Pass>> group;
     for (double lambda : passParameters(context, family, index > 0)) {
-      const std::vector<Pass> cut = context.cut(family.plan(lambda, settings.sampling));
-      group.insert(group.end(), cut.begin(), cut.end());
+      std::vector<Pass> cut = context.cut(family.plan(lambda, settings.sampling));
+      if (!cut.empty()) group.push_back(std::move(cut));
     }
-    if (!group.empty()) groups.push_back(group);
+    if (!group.empty()) groups.push_back(std::move(group));
   }
   orderForSweep(groups, settings.sweep);
-  Toolpath path = assemble(context, flatten(groups));
+  Toolpath path = assemble(context, lines(groups));
   path.droppedPoints = context.dropped;
   return path;
 }

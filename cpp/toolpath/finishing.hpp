@@ -18,8 +18,8 @@
 //   extension (the tool radius by default) so that the ball leaves the face whole.
 // - Sweeping: upward orders the passes so that the stepover climbs (the first pass is on the lower side),
 //   downward the other way. Zigzag alternates pass directions and links neighbours by a G1 move that
-//   follows the surface when they are close (two tool radii); otherwise, and for one-way, the tool
-//   retracts to the safe height, moves in G0 and plunges in G1.
+//   follows the surface when they are within ten tool radii and the link would not climb a wall;
+//   otherwise, and for one-way, the tool retracts to the safe height, moves in G0 and plunges in G1.
 #pragma once
 
 #include "toolpath/dropcutter.hpp"

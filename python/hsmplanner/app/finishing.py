@@ -1,0 +1,80 @@
+"""Finishing toolpaths as FreeCAD Path commands: the glue between Path/CAM operations and the core.
+
+Pure functions (no document object is created here): the areas of a Guide curve net object, a ball-end
+tool in a Job, core moves turned into Path commands.
+"""
+import FreeCAD
+import Path
+
+import hsmplanner
+from hsmplanner.toolpaths import face_number
+
+from .compat import cam_module
+
+AREA_CHOICES = ["Elementary areas of the net", "Between the boundaries"]
+
+
+def net_curves(net):
+    """The curves of a Guide curve net object as core curves, B1 to B2 (the last edges of its shape)."""
+    count = len(net.Curves)
+    if count < 2:
+        raise ValueError("the guide curve net %s has no curves: recompute it" % net.Label)
+    return [hsmplanner.as_curve(edge) for edge in net.Shape.Edges[-count:]]
+
+
+def net_areas(net, areas=AREA_CHOICES[0]):
+    """(first, second) curve pairs: each elementary area, or the one area between the boundaries."""
+    curves = net_curves(net)
+    if areas == AREA_CHOICES[1]:
+        return [(curves[0], curves[-1])]
+    return list(zip(curves, curves[1:]))
+
+
+def net_part(net):
+    """The solid and the bottom face number the net lies on."""
+    if not net.BottomFace:
+        raise ValueError("the guide curve net %s has no bottom face: pick the face it lies on" % net.Label)
+    part, subs = net.BottomFace
+    return part.Shape, face_number(subs[0] if not isinstance(subs, str) else subs)
+
+
+def moves_to_commands(moves, feed, plunge_feed=None):
+    """Path commands of core moves; feeds in mm/s (FreeCAD's unit). A G1 that goes down from a rapid is a
+    plunge and runs at the plunge feed."""
+    plunge_feed = plunge_feed or feed
+    commands, previous_rapid = [], True
+    for x, y, z, rapid in moves:
+        if rapid:
+            commands.append(Path.Command("G0", {"X": x, "Y": y, "Z": z}))
+        else:
+            commands.append(Path.Command("G1", {"X": x, "Y": y, "Z": z, "F": plunge_feed if previous_rapid else feed}))
+        previous_rapid = bool(rapid)
+    return commands
+
+
+def ball_end_controller(job, diameter=4.0, feed_mm_min=4000.0, spindle_rpm=18000, number=2, replace=True):
+    """A ball-end ToolBit and its tool controller, added to `job` (FreeCAD's own tool classes).
+
+    replace: remove the Job's other tool controllers, so that new operations take this one (headless,
+    FreeCAD 0.20 cannot choose among several: PathUtils.findToolController fails)."""
+    if replace:
+        for old in list(job.Tools.Group):
+            job.Tools.removeObject(old)
+            tool = getattr(old, "Tool", None)
+            job.Document.removeObject(old.Name)
+            if tool is not None and hasattr(tool, "Name") and job.Document.getObject(tool.Name):
+                job.Document.removeObject(tool.Name)
+    tool_bit = cam_module("tool_bit")
+    tool_controller = cam_module("tool_controller")
+    shape = tool_bit.findToolShape("ballend.fcstd")
+    if not shape:
+        raise RuntimeError("FreeCAD's ballend.fcstd tool shape is missing from this installation")
+    bit = tool_bit.Factory.Create("Ball%g" % diameter, shape)
+    bit.Diameter = diameter
+    bit.Label = "Ball end mill Ø%g mm" % diameter
+    controller = tool_controller.Create("TC: Ball Ø%g" % diameter, bit, number)
+    controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
+    controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % min(feed_mm_min, 2000.0))
+    controller.SpindleSpeed = spindle_rpm
+    job.Proxy.addToolController(controller)
+    return controller

@@ -1,0 +1,103 @@
+"""Path/CAM operations "Guide curve finishing" and "Parallel plane finishing".
+
+Thin, as FreeCAD's own operations: properties wired to the core (hsmplanner.toolpaths) through
+hsmplanner.app.finishing. Proxy classes are recorded in saved documents: never rename them.
+"""
+import FreeCAD
+
+import hsmplanner
+
+from . import finishing
+from .compat import cam_module
+
+PathOp = cam_module("op")
+
+SWEEPS = ["Upward", "Downward"]
+PATTERNS = ["ZigZag", "OneWay"]
+
+
+class _FinishingOp(PathOp.ObjectOp):
+    """What both finishing operations share: cusp, tolerance, sweeping, pattern; a ball-end tool."""
+
+    def opFeatures(self, obj):
+        return PathOp.FeatureTool | PathOp.FeatureHeights | PathOp.FeatureCoolant
+
+    def initFinishing(self, obj):
+        obj.addProperty("App::PropertyLength", "CuspHeight", "Finishing", "largest cusp left on the surface")
+        obj.CuspHeight = 0.01
+        obj.addProperty("App::PropertyLength", "Tolerance", "Finishing", "chordal tolerance of the G1 points")
+        obj.Tolerance = 0.01
+        obj.addProperty("App::PropertyEnumeration", "Sweep", "Finishing", "passes climb or descend the face")
+        obj.Sweep = SWEEPS
+        obj.addProperty("App::PropertyEnumeration", "Pattern", "Finishing", "zigzag or one-way passes")
+        obj.Pattern = PATTERNS
+        obj.addProperty("App::PropertyInteger", "Passes", "Result", "passes of the last computation")
+        obj.setEditorMode("Passes", 1)
+
+    def options(self, obj, part_top):
+        clearance = max(1.0, obj.SafeHeight.Value - part_top) if hasattr(obj, "SafeHeight") else 5.0
+        return dict(tool_diameter=2.0 * self.radius, cusp_height=obj.CuspHeight.Value,
+                    tolerance=obj.Tolerance.Value, sweep=obj.Sweep.lower(), zigzag=obj.Pattern == "ZigZag",
+                    clearance=clearance)
+
+    def emit(self, obj, moves, stats):
+        for warning in stats["warnings"]:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
+        obj.Passes = stats["passes"]
+        self.commandlist.extend(finishing.moves_to_commands(moves, self.horizFeed, self.vertFeed))
+
+    def opSetDefaultValues(self, obj, job):
+        obj.Sweep = "Upward"
+        obj.Pattern = "ZigZag"
+
+
+class ObjectGuideCurveFinishing(_FinishingOp):
+    def initOperation(self, obj):
+        obj.addProperty("App::PropertyLink", "Net", "Guide curves", "the Guide curve net whose areas are machined")
+        obj.addProperty("App::PropertyEnumeration", "Areas", "Guide curves", "which areas of the net")
+        obj.Areas = finishing.AREA_CHOICES
+        self.initFinishing(obj)
+
+    def opExecute(self, obj):
+        if obj.Net is None:
+            raise ValueError("no Guide curve net: link one (Net) to give the areas")
+        shape, face = finishing.net_part(obj.Net)
+        areas = finishing.net_areas(obj.Net, obj.Areas)
+        direction = tuple(obj.Net.ChosenDirection)
+        moves, stats = hsmplanner.guide_finishing(shape, face, areas, direction,
+                                                  **self.options(obj, shape.BoundBox.ZMax))
+        self.emit(obj, moves, stats)
+
+
+class ObjectParallelPlaneFinishing(_FinishingOp):
+    def initOperation(self, obj):
+        obj.addProperty("App::PropertyLinkSub", "Face", "Parallel planes", "the bottom face to finish")
+        obj.addProperty("App::PropertyAngle", "Angle", "Parallel planes", "direction of the planes from X")
+        self.initFinishing(obj)
+
+    def opExecute(self, obj):
+        if not obj.Face:
+            raise ValueError("no face to finish: set Face to the bottom face (e.g. the model's Face4)")
+        part, subs = obj.Face
+        face = subs[0] if not isinstance(subs, str) else subs
+        moves, stats = hsmplanner.parallel_finishing(part.Shape, face, obj.Angle.Value,
+                                                     **self.options(obj, part.Shape.BoundBox.ZMax))
+        self.emit(obj, moves, stats)
+
+
+def SetupProperties():
+    return ["CuspHeight", "Tolerance", "Sweep", "Pattern"]
+
+
+def CreateGuideCurveFinishing(name, obj=None, parentJob=None):
+    if obj is None:
+        obj = FreeCAD.ActiveDocument.addObject("Path::FeaturePython", name)
+    obj.Proxy = ObjectGuideCurveFinishing(obj, name, parentJob)
+    return obj
+
+
+def CreateParallelPlaneFinishing(name, obj=None, parentJob=None):
+    if obj is None:
+        obj = FreeCAD.ActiveDocument.addObject("Path::FeaturePython", name)
+    obj.Proxy = ObjectParallelPlaneFinishing(obj, name, parentJob)
+    return obj

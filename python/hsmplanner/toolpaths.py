@@ -1,0 +1,78 @@
+"""Ball-end finishing toolpaths of a bottom face (no FreeCAD needed): parallel planes and guide curves.
+
+    moves, stats = hsmplanner.parallel_finishing(part, "Face4", angle_deg=0.0, tool_diameter=4.0)
+    moves, stats = hsmplanner.guide_finishing(part, "Face4", net, tool_diameter=4.0)
+
+`part` is the solid (a FreeCAD shape or BREP text) and the bottom face its FreeCAD name ("Face4") or
+number. The result is `moves`, an (N, 4) array of tool-tip positions x, y, z (mm) and a rapid flag (1 for
+G0), and `stats` (passes, dropped_points, safe_height, warnings). The rules are in
+cpp/toolpath/finishing.hpp: cusp height kept on the real surface, gouge-free drop-cutter positions, G1
+points within the tolerance, upward or downward sweeping, zigzag or one-way.
+"""
+import numpy as np
+
+from . import _core
+from .curvenet import as_curve
+from .geometry import as_brep
+
+SWEEPS = ("upward", "downward")
+
+
+def face_number(face):
+    """1-based face number from 'Face4', 4 or '4'."""
+    text = str(face)
+    number = text[4:] if text.startswith("Face") else text
+    if not number.isdigit() or int(number) < 1:
+        raise ValueError("bottom face %r is not a face name: use FreeCAD's name, e.g. 'Face4'" % (face,))
+    return int(number)
+
+
+def _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance, threads, extension):
+    if sweep not in SWEEPS:
+        raise ValueError("sweep %r is unknown: use 'upward' or 'downward'" % (sweep,))
+    if not tool_diameter > 0:
+        raise ValueError("tool diameter %r mm must be positive" % (tool_diameter,))
+    settings = dict(tool_radius=0.5 * float(tool_diameter), cusp_height=float(cusp_height),
+                    tolerance=float(tolerance), sweep=sweep, zigzag=bool(zigzag), clearance=float(clearance),
+                    threads=int(threads))
+    if extension is not None:
+        settings["extension"] = float(extension)
+    return settings
+
+
+def parallel_finishing(part, bottom_face, angle_deg=0.0, tool_diameter=4.0, cusp_height=0.01, tolerance=0.01,
+                       sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None):
+    """Planes containing the tool axis at angle_deg from X, spaced for the cusp height."""
+    return _core.parallel_finishing(as_brep(part), face_number(bottom_face), float(angle_deg),
+                                    _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
+                                              threads, extension))
+
+
+def guide_areas(areas):
+    """Areas as (first, second) core curves, from a CurveNet (its elementary areas, B1 side first) or a list
+    of pairs of edges/arrays/curves."""
+    if isinstance(areas, _core.CurveNet):
+        return [(areas.curves[a].curve, areas.curves[b].curve) for a, b in areas.elementary_areas()]
+    pairs = list(areas)
+    if not pairs:
+        raise ValueError("no area to machine: give a curve net or pairs of guide curves")
+    return [(as_curve(a, "guide"), as_curve(b, "guide")) for a, b in pairs]
+
+
+def guide_finishing(part, bottom_face, areas, direction=(1.0, 0.0, 0.0), tool_diameter=4.0, cusp_height=0.01,
+                    tolerance=0.01, sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None):
+    """Passes morphed between the guides of each area, areas in the order given (a CurveNet: B1 to B2)."""
+    direction = np.asarray(tuple(direction), dtype=float)
+    if isinstance(areas, _core.CurveNet):
+        direction = np.asarray(areas.direction, dtype=float)
+    return _core.guide_finishing(as_brep(part), face_number(bottom_face), guide_areas(areas), direction,
+                                 _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
+                                           threads, extension))
+
+
+def path_length(moves, rapid=False):
+    """Length (mm) of the feed moves (or of the rapid ones)."""
+    moves = np.asarray(moves)
+    steps = np.linalg.norm(np.diff(moves[:, :3], axis=0), axis=1)
+    kind = moves[1:, 3] == (1.0 if rapid else 0.0)
+    return float(steps[kind].sum())
