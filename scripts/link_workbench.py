@@ -29,7 +29,20 @@ def link_workbench(repo):
     return link
 
 
+def link_posts(repo):
+    """Our posts into FreeCAD's Macro folder, where the Job's processor list looks for *_post.py."""
+    macro_dir = os.path.join(FreeCAD.getUserAppDataDir(), "Macro")
+    os.makedirs(macro_dir, exist_ok=True)
+    source = os.path.join(repo, "python", "hsmplanner", "app", "posts", "siemens840d_post.py")
+    link = os.path.join(macro_dir, "hsm_siemens840d_post.py")
+    if os.path.islink(link) or not os.path.exists(link):
+        if os.path.islink(link):
+            os.remove(link)
+        os.symlink(source, link)
+
+
 if len(sys.argv) < 2:
     raise SystemExit("usage: freecadcmd scripts/link_workbench.py REPO_DIR")
 link_workbench(sys.argv[1])
+link_posts(os.path.realpath(sys.argv[1]))
 raise SystemExit(0)  # or freecadcmd would try to open the remaining arguments as documents
