@@ -48,6 +48,7 @@ py::tuple output(const Toolpath& path) {
   }
   py::dict stats;
   stats["passes"] = path.passes;
+  stats["pass_lengths"] = path.passLengths;
   stats["dropped_points"] = path.droppedPoints;
   stats["safe_height"] = path.safeHeight;
   stats["warnings"] = path.warnings;

@@ -418,6 +418,9 @@ Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) 
   for (const Pass& pass : passes) {
     if (pass.size() < 2) continue;
     ++path.passes;
+    double length = 0.0;
+    for (size_t k = 1; k < pass.size(); ++k) length += (pass[k] - pass[k - 1]).norm();
+    path.passLengths.push_back(length);
     const Vector3& start = pass.front();
     std::vector<Vector3> link;
     if (inside && s.zigzag && (start - path.moves.back().point).norm() <= linkLimit)

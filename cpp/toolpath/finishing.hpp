@@ -55,6 +55,7 @@ struct Move {
 struct Toolpath {
   std::vector<Move> moves;
   int passes = 0;
+  std::vector<double> passLengths;  // mm, each pass (piece) as cut, in order
   long droppedPoints = 0;  // cutter positions computed by drop-cutter
   double safeHeight = 0.0;
   std::vector<std::string> warnings;

@@ -208,3 +208,24 @@ def save_feed_map(blocks, path, title):
     figure.tight_layout()
     figure.savefig(path)
     return path
+
+
+def save_strategy_times(times, feeds, path):
+    """Grouped bars: simulated machining time of each strategy at each programmed feed."""
+    figure = new_figure(11, 4.5)
+    axes = figure.add_subplot(1, 1, 1)
+    names = list(times)
+    width = 0.8 / len(feeds)
+    for k, feed in enumerate(feeds):
+        values = [times[name][k] for name in names]
+        bars = axes.bar(np.arange(len(names)) + (k - (len(feeds) - 1) / 2) * width, values, width,
+                        label="F = %g m/min" % (feed / 1000))
+        axes.bar_label(bars, fmt="%.0f", fontsize=7)
+    axes.set_xticks(np.arange(len(names)))
+    axes.set_xticklabels([n.replace("_", " ") for n in names])
+    axes.set_ylabel("simulated machining time (s)")
+    axes.legend()
+    axes.set_title("Finishing the master bottom feature on the Mikron UCP 710 / 840D model")
+    figure.tight_layout()
+    figure.savefig(path)
+    return path

@@ -70,3 +70,11 @@ def post_module(name):
         except ImportError:
             continue
     raise ImportError("FreeCAD has no post-processor named %r: check the name (e.g. 'linuxcnc', 'grbl')" % name)
+
+
+def create_job(models, name="Job"):
+    """A Path/CAM Job on `models`; in the GUI with its view provider, as FreeCAD's own command makes it
+    (a Job without one breaks the operations' task panels)."""
+    if FreeCAD.GuiUp:
+        return cam_module("job_gui").Create(list(models), openTaskPanel=False)
+    return cam_module("job").Create(name, list(models))

@@ -33,6 +33,8 @@ class _FinishingOp(PathOp.ObjectOp):
         obj.Pattern = PATTERNS
         obj.addProperty("App::PropertyInteger", "Passes", "Result", "passes of the last computation")
         obj.setEditorMode("Passes", 1)
+        obj.addProperty("App::PropertyFloatList", "PassLengths", "Result", "length of each pass, mm")
+        obj.setEditorMode("PassLengths", 1)
 
     def options(self, obj, part_top):
         clearance = max(1.0, obj.SafeHeight.Value - part_top) if hasattr(obj, "SafeHeight") else 5.0
@@ -44,6 +46,7 @@ class _FinishingOp(PathOp.ObjectOp):
         for warning in stats["warnings"]:
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         obj.Passes = stats["passes"]
+        obj.PassLengths = list(stats["pass_lengths"])
         self.commandlist.extend(finishing.moves_to_commands(moves, self.horizFeed, self.vertFeed))
 
     def opSetDefaultValues(self, obj, job):

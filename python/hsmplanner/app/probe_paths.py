@@ -46,9 +46,9 @@ def passes_to_commands(passes, feed_mm_min, safe_height):
 def make_probe_job(part, feed_mm_min=4000.0, pass_spacing=2.0, point_spacing=0.5, name="Job"):
     """A Path/CAM Job on `part` (a master bottom feature) with a Custom operation holding the raster of its
     bottom face: a real Job, operation and tool controller that posts and simulates like any other."""
-    from .compat import cam_module
+    from .compat import cam_module, create_job
 
-    job = cam_module("job").Create(name, [part])
+    job = create_job([part], name)
     op = cam_module("custom_op").Create("ProbeRaster", parentJob=job)
     bottom = part.Shape.getElement(part.BottomFace)
     passes = raster_on_face(bottom, pass_spacing, point_spacing)

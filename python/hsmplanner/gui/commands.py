@@ -4,7 +4,8 @@ import FreeCADGui
 
 from hsmplanner.resources import icon
 
-COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_FeedRateAnalysis"]
+COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
+                 "HSM_ParallelPlaneFinishing", "HSM_FeedRateAnalysis"]
 
 
 class CommandMasterBottomFeature:
@@ -106,3 +107,6 @@ def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
     FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())
     FreeCADGui.addCommand("HSM_FeedRateAnalysis", CommandFeedRateAnalysis())
+    from hsmplanner.gui import finishing_ops_gui
+
+    finishing_ops_gui.register_commands()

@@ -142,7 +142,9 @@ TEST(Finishing, MovesStartAndEndAtTheSafeHeightAndRapidsStayAbove) {
   for (size_t k = 1; k < path.moves.size(); ++k) {
     const bool horizontalRapid = path.moves[k].rapid && path.moves[k - 1].rapid &&
                                  path.moves[k].point.head<2>() != path.moves[k - 1].point.head<2>();
-     if (horizontalRapid) EXPECT_DOUBLE_EQ(path.moves[k].point.z(), path.safeHeight);  // at the safe height
+    if (horizontalRapid) {
+      EXPECT_DOUBLE_EQ(path.moves[k].point.z(), path.safeHeight);  // at the safe height
+    }
   }
   // One-way: every pass runs the same way along X.
   int forward = 0, backward = 0;

@@ -1,0 +1,190 @@
+"""Task panels and commands of the finishing operations, on FreeCAD's own operation GUI (PathOpGui):
+the Job's tool controllers, heights and coolant pages come with them."""
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtWidgets
+
+from hsmplanner.app import finishing, finishing_ops
+from hsmplanner.app.compat import cam_module
+from hsmplanner.resources import icon
+
+PathOpGui = cam_module("op_gui")
+
+
+def _spin(value, decimals=3, maximum=10.0, suffix=" mm"):
+    box = QtWidgets.QDoubleSpinBox()
+    box.setDecimals(decimals)
+    box.setRange(10 ** -decimals, maximum)
+    box.setSingleStep(10 ** -decimals)
+    box.setSuffix(suffix)
+    box.setValue(value)
+    return box
+
+
+class _FinishingPage(PathOpGui.TaskPanelPage):
+    """Tool controller, coolant, cusp height, tolerance, sweeping and pattern; subclasses add their own rows."""
+
+    def getForm(self):
+        form = QtWidgets.QWidget()
+        layout = QtWidgets.QFormLayout(form)
+        form.toolController = QtWidgets.QComboBox()
+        form.coolantController = QtWidgets.QComboBox()
+        layout.addRow("Tool controller", form.toolController)
+        layout.addRow("Coolant", form.coolantController)
+        self.addRows(form, layout)
+        form.cusp = _spin(0.01)
+        form.tolerance = _spin(0.01)
+        form.sweep = QtWidgets.QComboBox()
+        form.sweep.addItems(finishing_ops.SWEEPS)
+        form.pattern = QtWidgets.QComboBox()
+        form.pattern.addItems(finishing_ops.PATTERNS)
+        layout.addRow("Cusp height", form.cusp)
+        layout.addRow("Tolerance", form.tolerance)
+        layout.addRow("Sweeping", form.sweep)
+        layout.addRow("Pattern", form.pattern)
+        return form
+
+    def addRows(self, form, layout):
+        pass
+
+    def getFields(self, obj):
+        self.updateToolController(obj, self.form.toolController)
+        self.updateCoolant(obj, self.form.coolantController)
+        obj.CuspHeight = self.form.cusp.value()
+        obj.Tolerance = self.form.tolerance.value()
+        obj.Sweep = self.form.sweep.currentText()
+        obj.Pattern = self.form.pattern.currentText()
+
+    def setFields(self, obj):
+        self.setupToolController(obj, self.form.toolController)
+        self.setupCoolant(obj, self.form.coolantController)
+        self.form.cusp.setValue(obj.CuspHeight.Value)
+        self.form.tolerance.setValue(obj.Tolerance.Value)
+        self.form.sweep.setCurrentText(obj.Sweep)
+        self.form.pattern.setCurrentText(obj.Pattern)
+
+    def getSignalsForUpdate(self, obj):
+        f = self.form
+        return [f.toolController.currentIndexChanged, f.coolantController.currentIndexChanged, f.cusp.valueChanged,
+                f.tolerance.valueChanged, f.sweep.currentIndexChanged, f.pattern.currentIndexChanged]
+
+
+class GuideCurveFinishingPage(_FinishingPage):
+    def addRows(self, form, layout):
+        form.net = QtWidgets.QComboBox()
+        form.areas = QtWidgets.QComboBox()
+        form.areas.addItems(finishing.AREA_CHOICES)
+        layout.addRow("Guide curve net", form.net)
+        layout.addRow("Areas", form.areas)
+
+    def nets(self):
+        return [o for o in FreeCAD.ActiveDocument.Objects
+                if hasattr(o, "Proxy") and type(o.Proxy).__name__ == "GuideCurveNet"]
+
+    def getFields(self, obj):
+        super().getFields(obj)
+        nets = {n.Label: n for n in self.nets()}
+        obj.Net = nets.get(self.form.net.currentText())
+        obj.Areas = self.form.areas.currentText()
+
+    def setFields(self, obj):
+        super().setFields(obj)
+        self.form.net.blockSignals(True)
+        self.form.net.clear()
+        self.form.net.addItems([n.Label for n in self.nets()])
+        self.form.net.blockSignals(False)
+        if obj.Net is not None:
+            self.form.net.setCurrentText(obj.Net.Label)
+        self.form.areas.setCurrentText(obj.Areas)
+
+    def getSignalsForUpdate(self, obj):
+        return super().getSignalsForUpdate(obj) + [self.form.net.currentIndexChanged,
+                                                   self.form.areas.currentIndexChanged]
+
+
+class ParallelPlaneFinishingPage(_FinishingPage):
+    def addRows(self, form, layout):
+        form.face = QtWidgets.QLineEdit()
+        form.face.setReadOnly(True)
+        form.useSelection = QtWidgets.QPushButton("Use the selected face")
+        form.angle = _spin(0.0, decimals=1, maximum=180.0, suffix=" °")
+        form.angle.setMinimum(0.0)
+        layout.addRow("Bottom face", form.face)
+        layout.addRow("", form.useSelection)
+        layout.addRow("Angle from X", form.angle)
+        form.useSelection.clicked.connect(self.useSelection)
+
+    def useSelection(self):
+        for selection in FreeCADGui.Selection.getSelectionEx():
+            faces = [s for s in selection.SubElementNames if s.startswith("Face")]
+            if faces:
+                self.obj.Face = (selection.Object, faces[0])
+                self.form.face.setText("%s: %s" % (selection.Object.Label, faces[0]))
+                self.setDirty()
+                return
+
+    def getFields(self, obj):
+        super().getFields(obj)
+        obj.Angle = self.form.angle.value()
+
+    def setFields(self, obj):
+        super().setFields(obj)
+        self.form.angle.setValue(obj.Angle.Value)
+        if obj.Face:
+            subs = obj.Face[1]
+            self.form.face.setText("%s: %s" % (obj.Face[0].Label, subs[0] if not isinstance(subs, str) else subs))
+
+    def getSignalsForUpdate(self, obj):
+        return super().getSignalsForUpdate(obj) + [self.form.angle.valueChanged]
+
+
+def _no_gate():
+    """Selection for these operations is free (PathSelection only knows FreeCAD's own operations)."""
+    FreeCADGui.Selection.removeSelectionGate()
+
+
+class ViewProviderFinishing(PathOpGui.ViewProvider):
+    def getIcon(self):
+        return self.OpIcon
+
+    def getSelectionFactory(self):
+        return _no_gate
+
+
+class CommandFinishing:
+    def __init__(self, name, factory, page, icon_name, menu, tooltip):
+        self.res = PathOpGui.CommandResources(name, factory, page, icon_name, menu, None, tooltip)
+        self.icon = icon(icon_name)
+
+    def GetResources(self):
+        return {"Pixmap": self.icon, "MenuText": self.res.menuText, "ToolTip": self.res.toolTip}
+
+    def IsActive(self):
+        document = FreeCAD.ActiveDocument
+        return document is not None and any(hasattr(o, "Operations") for o in document.Objects)
+
+    def Activated(self):
+        document = FreeCAD.ActiveDocument
+        document.openTransaction("Create %s" % self.res.name)
+        obj = self.res.objFactory(self.res.name, obj=None, parentJob=None)
+        view_provider = ViewProviderFinishing(obj.ViewObject, self.res)
+        view_provider.OpIcon = self.icon
+        obj.ViewObject.Proxy = view_provider
+        document.commitTransaction()
+        obj.ViewObject.Document.setEdit(obj.ViewObject, 0)
+        return obj
+
+
+COMMANDS = {
+    "HSM_GuideCurveFinishing": CommandFinishing(
+        "GuideCurveFinishing", finishing_ops.CreateGuideCurveFinishing, GuideCurveFinishingPage, "GuideCurveFinishing",
+        "Guide curve finishing", "Ball-end passes morphed between the curves of a Guide curve net, area by area"),
+    "HSM_ParallelPlaneFinishing": CommandFinishing(
+        "ParallelPlaneFinishing", finishing_ops.CreateParallelPlaneFinishing, ParallelPlaneFinishingPage,
+        "ParallelPlaneFinishing", "Parallel plane finishing", "Ball-end passes in parallel planes at an angle"),
+}
+
+
+def register_commands():
+    for name, command in COMMANDS.items():
+        FreeCADGui.addCommand(name, command)

@@ -1,0 +1,105 @@
+"""GUI test: the two finishing operations created from their commands and panels in a Job, then their
+feed-rate maps (the paper's Fig. 2b and Fig. 6 on our master feature)."""
+import os
+import sys
+
+import FreeCAD
+import FreeCADGui as Gui
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import OUT, GuiRun  # noqa: E402
+
+run = GuiRun()
+state = {}
+
+
+def operation_panel(obj):
+    return obj.ViewObject.Proxy.panel
+
+
+def show_only(*objects):
+    for o in FreeCAD.ActiveDocument.Objects:
+        if o.ViewObject is not None:
+            o.ViewObject.Visibility = o in objects
+
+
+@run.step
+def part_net_and_job(run):
+    from hsmplanner.app import finishing, guide_curve_net_object, master_feature_object
+    from hsmplanner.app.compat import create_job
+
+    Gui.activateWorkbench("HSMPlannerWorkbench")
+    document = FreeCAD.newDocument("Finishing")
+    part = master_feature_object.create(document)
+    state["part"] = part
+    state["net"] = guide_curve_net_object.create(document, (part, part.Boundary1), (part, part.Boundary2),
+                                                 (part, part.BottomFace))
+    job = create_job([part])
+    finishing.ball_end_controller(job, 4.0, 4000.0)
+    document.recompute()
+    run.process_events(1.0)
+    run.check("command active with a Job", Gui.Command.get("HSM_GuideCurveFinishing").isActive())
+
+
+@run.step
+def guide_curve_finishing_from_its_panel(run):
+    Gui.runCommand("HSM_GuideCurveFinishing")
+    run.process_events(1.0)
+    op = FreeCAD.ActiveDocument.getObject("GuideCurveFinishing")
+    panel = operation_panel(op)
+    run.check("operation panel open", panel is not None)
+    page = panel.featurePages[-1]
+    page.form.net.setCurrentText(state["net"].Label)
+    page.form.areas.setCurrentText("Elementary areas of the net")
+    panel.accept()
+    run.process_events(2.0)
+    run.check("guide curve path", op.isValid() and len(op.Path.Commands) > 5000 and op.Passes > 100,
+              "%s %d %d" % (op.State, len(op.Path.Commands), op.Passes))
+    run.notes["guide curve finishing"] = {"passes": op.Passes, "commands": len(op.Path.Commands)}
+    state["guide"] = op
+
+
+@run.step
+def parallel_plane_finishing_from_its_panel(run):
+    part = state["part"]
+    Gui.Selection.clearSelection()
+    Gui.runCommand("HSM_ParallelPlaneFinishing")
+    run.process_events(1.0)
+    op = FreeCAD.ActiveDocument.getObject("ParallelPlaneFinishing")
+    panel = operation_panel(op)
+    page = panel.featurePages[-1]
+    Gui.Selection.addSelection(part, part.BottomFace)
+    page.form.useSelection.click()
+    run.check("face taken from the selection", page.form.face.text().endswith(part.BottomFace), page.form.face.text())
+    panel.accept()
+    run.process_events(2.0)
+    run.check("parallel plane path", op.isValid() and op.Passes > 100, "%s %d" % (op.State, op.Passes))
+    run.notes["parallel plane finishing"] = {"passes": op.Passes, "commands": len(op.Path.Commands)}
+    state["planes"] = op
+
+
+@run.step
+def feed_rate_maps_of_both(run):
+    for key, name in (("planes", "planes"), ("guide", "guide")):
+        op = state[key]
+        Gui.Selection.clearSelection()
+        Gui.Selection.addSelection(op)
+        Gui.runCommand("HSM_FeedRateAnalysis")
+        run.process_events(1.5)
+        analysis = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is op][0]
+        run.check("%s analysed" % name, analysis.isValid() and analysis.TotalTime > 0, str(analysis.State))
+        run.notes["%s simulated s / length-feed s" % name] = [round(analysis.TotalTime, 1), round(analysis.NaiveTime, 1)]
+        from hsmplanner.gui import feedrate_panel
+
+        feedrate_panel.ACTIVE_PANEL.reject()
+        show_only(state["part"], analysis)
+        state["part"].ViewObject.Transparency = 75
+        Gui.Selection.clearSelection()
+        Gui.activeDocument().activeView().viewTop()
+        Gui.SendMsgToActiveView("ViewFit")
+        image = os.path.join(OUT, "finishing_%s_feed_map.png" % name)
+        Gui.ActiveDocument.ActiveView.saveImage(image, 1400, 800, "Current")
+        run.screenshots.append(image)
+
+
+run.start()
