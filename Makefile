@@ -36,6 +36,7 @@ test-gui: build
 	scripts/run-tests.sh $(BUILD_DIR) gui
 
 demo: build
+	scripts/run-freecadcmd.sh examples/guidance_study.py $(OUT)
 	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
 	scripts/run-freecadcmd.sh examples/curve_nets.py $(OUT)
 	scripts/run-freecadcmd.sh examples/feedrate_study.py $(OUT)
@@ -44,6 +45,8 @@ bench: build
 	$(BUILD_DIR)/bin/bench_curvenet
 	$(BUILD_DIR)/bin/bench_feedsim
 	scripts/run-freecadcmd.sh tests/bench/bench_preview.py
+	$(BUILD_DIR)/bin/bench_dropcutter
+	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
 
 clean:
 	rm -rf $(BUILD_DIR) python/hsmplanner/_core*.so

@@ -389,8 +389,8 @@ struct GcodeReader::Impl {
       case 40: dwell = true; break;
       case 90: exactStopHere = true; break;
       case 170: case 180: case 190: plane = int(code / 10); break;
-      case 200: unit = 25.4; break;
-      case 210: unit = 1.0; break;
+      case 200: case 700: case 7000: unit = 25.4; break;  // G20; 840D G70/G700
+      case 210: case 710: case 7100: unit = 1.0; break;   // G21; 840D G71/G710
       case 900: absolute = true; break;
       case 910: absolute = false; break;
       case 901: arcCentreAbsolute = true; break;

@@ -1,6 +1,7 @@
 // G-code reader: FreeCAD/LinuxCNC and Siemens 840D dialects, streamed line by line into motion blocks.
 //
-// Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21, G90 G91,
+// Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21 (840D G70 G71
+// G700 G710), G90 G91,
 // G90.1 G91.1, G9 G60 G61 G61.1 G64 [P] G641 G642 G643 G644 G645, SOFT BRISK, CYCLE832(tolerance…),
 // F S T D H M N, comments in ( ) and after ;, block delete /, % lines. Words that change nothing the
 // simulation sees (G40, G43, G54…, G80, G94, M3, COMPCAD, FFWON…) are accepted. Anything else is an

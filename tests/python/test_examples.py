@@ -54,5 +54,31 @@ class CurveNetsExample(unittest.TestCase):
                 self.assertEqual(stream.read(4), b"\x89PNG")
 
 
+class GuidanceStudyExample(unittest.TestCase):
+    def test_the_main_job_writes_programs_table_and_pictures(self):
+        import csv
+
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "guidance_study.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-3000:] + result.stderr[-2000:])
+        with open(os.path.join(out, "study.csv")) as stream:
+            rows = list(csv.DictReader(stream))
+        self.assertEqual(len(rows), 15)  # 5 strategies x 3 feeds
+        by = {(r["strategy"], r["feed_mm_min"]): r for r in rows}
+        self.assertEqual(by[("guide_4_areas", "4000")]["areas"], "4")
+        self.assertEqual(by[("guide_14_areas", "4000")]["areas"], "14")
+        for strategy in ("parallel_planes", "guide_1_area"):
+            times = [float(by[(strategy, f)]["machining_time_s"]) for f in ("2000", "4000", "6000")]
+            self.assertTrue(times[0] > times[1] > times[2], times)  # faster feeds, less time
+            for f in ("2000", "4000", "6000"):  # never faster than length / feed
+                self.assertGreater(float(by[(strategy, f)]["machining_time_s"]),
+                                   float(by[(strategy, f)]["length_over_feed_s"]))
+            with open(os.path.join(out, "study_%s_F4000.mpf" % strategy)) as stream:
+                self.assertIn("CYCLE832(0.01,1,1)", stream.read(2000))
+        for name in ("study_times.png", "study_guide_4_areas_map.png", "study_parallel_planes_histograms.png"):
+            with open(os.path.join(out, name), "rb") as stream:
+                self.assertEqual(stream.read(4), b"\x89PNG")
+
+
 if __name__ == "__main__":
     unittest.main()

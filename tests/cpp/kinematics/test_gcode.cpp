@@ -34,6 +34,7 @@ TEST(Gcode, LinesFeedsAndModalState) {
 }
 
 TEST(Gcode, InchesAndFreeCadFeedsInMmPerSecond) {
+  EXPECT_DOUBLE_EQ(readProgram("G70 G1 X1 F10\nG71 X1\n")[1].end.x(), 1.0);  // 840D: G70 inch, G71 mm
   const auto inch = readProgram("G20 G1 X1 F10\n");
   EXPECT_DOUBLE_EQ(inch[0].end.x(), 25.4);
   EXPECT_DOUBLE_EQ(inch[0].feed, 254.0 / 60.0);

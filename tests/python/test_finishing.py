@@ -1,0 +1,182 @@
+"""Finishing: the toolpath API, the two operations in a real Job, the posts against golden files, and the
+evaluation figures."""
+import os
+import unittest
+
+import FreeCAD
+import numpy as np
+
+import hsmplanner
+from hsmplanner import evaluation
+from hsmplanner.app import finishing, finishing_ops, guide_curve_net_object, master_feature_object
+from hsmplanner.app.compat import cam_module, create_job, post_module
+from hsmplanner.app.master_feature import make_master_bottom_feature
+from hsmplanner.app.posts import siemens840d_post
+from helpers import REPO, temporary_directory
+
+GOLDEN = os.path.join(REPO, "tests", "golden")
+REGENERATE = os.environ.get("HSM_REGENERATE_GOLDEN") == "1"
+FEATURE = make_master_bottom_feature()
+
+
+class ToolpathApi(unittest.TestCase):
+    def test_parallel_planes_on_the_part(self):
+        moves, stats = hsmplanner.parallel_finishing(FEATURE.shape, FEATURE.bottom_face, angle_deg=90.0)
+        self.assertGreater(stats["passes"], 100)
+        self.assertEqual(moves.shape[1], 4)
+        feeds = moves[moves[:, 3] == 0]
+        self.assertLess(np.ptp(feeds[:, 1]), 70)  # within the cavity's width
+        self.assertGreater(hsmplanner.toolpaths.path_length(moves), 10000)
+        self.assertEqual(len(stats["pass_lengths"]), stats["passes"])
+
+    def test_guide_finishing_from_a_net(self):
+        b1, b2 = FEATURE.shape.getElement(FEATURE.boundary_1), FEATURE.shape.getElement(FEATURE.boundary_2)
+        bottom = FEATURE.shape.getElement(FEATURE.bottom_face)
+        net, _ = hsmplanner.guidance_curves(b1, b2, face=bottom)
+        moves, stats = hsmplanner.guide_finishing(FEATURE.shape, FEATURE.bottom_face, net, zigzag=False)
+        self.assertGreater(stats["passes"], 100)
+        rapids = int(np.sum(np.diff(moves[:, 3]) > 0))
+        self.assertGreaterEqual(rapids, stats["passes"] - 1)  # one-way: a retract between passes
+
+    def test_bad_inputs_name_themselves(self):
+        cases = [(dict(sweep="sideways"), "sweep 'sideways'"), (dict(tool_diameter=0), "tool diameter 0"),
+                 (dict(cusp_height=5.0), "cusp height"), (dict(tolerance=0), "machining tolerance")]
+        for kwargs, message in cases:
+            with self.subTest(kwargs=kwargs), self.assertRaisesRegex(ValueError, message):
+                hsmplanner.parallel_finishing(FEATURE.shape, FEATURE.bottom_face, **kwargs)
+        with self.assertRaisesRegex(ValueError, "not a face name"):
+            hsmplanner.parallel_finishing(FEATURE.shape, "Edge3")
+        with self.assertRaisesRegex(ValueError, "face 99 does not exist"):
+            hsmplanner.parallel_finishing(FEATURE.shape, 99)
+        with self.assertRaisesRegex(ValueError, "no area"):
+            hsmplanner.guide_finishing(FEATURE.shape, FEATURE.bottom_face, [])
+
+
+class Operations(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.document = FreeCAD.newDocument("FinishingOps")
+        part = master_feature_object.create(cls.document)
+        cls.part = part
+        cls.net = guide_curve_net_object.create(cls.document, (part, part.Boundary1), (part, part.Boundary2),
+                                                (part, part.BottomFace))
+        cls.job = create_job([part])
+        cls.controller = finishing.ball_end_controller(cls.job, 4.0, 4000.0)
+        cls.guide = finishing_ops.CreateGuideCurveFinishing("Guide", parentJob=cls.job)
+        cls.guide.Net = cls.net
+        cls.planes = finishing_ops.CreateParallelPlaneFinishing("Planes", parentJob=cls.job)
+        cls.planes.Face = (part, part.BottomFace)
+        cls.planes.Angle = 0
+        cls.document.recompute()
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.document.Name)
+
+    def test_both_operations_compute_in_the_job(self):
+        for op in (self.guide, self.planes):
+            self.assertTrue(op.isValid(), op.State)
+            self.assertIs(op.ToolController, self.controller)
+            self.assertGreater(op.Passes, 100)
+            feeds = [c.Parameters["F"] for c in op.Path.Commands if c.Name == "G1" and "F" in c.Parameters]
+            self.assertAlmostEqual(max(feeds), 4000.0 / 60.0, places=6)  # the tool controller's feed, mm/s
+
+    def test_simulated_through_both_posts(self):
+        folder = temporary_directory(self)
+        direct = hsmplanner.simulate(self.guide, "mikron-ucp710-840d").summary
+        mpf, ngc = os.path.join(folder, "g.mpf"), os.path.join(folder, "g.ngc")
+        siemens840d_post.export([self.job, self.controller, self.guide], mpf, "--tolerance=0.01")
+        post_module("linuxcnc").export([self.job, self.guide], ngc, "--no-show-editor")
+        for program in (mpf, ngc):
+            posted = hsmplanner.simulate(program, "mikron-ucp710-840d", refuse_unknown_words=program == mpf).summary
+            self.assertEqual(posted.cutting_blocks, direct.cutting_blocks, program)
+            self.assertAlmostEqual(posted.cutting_length, direct.cutting_length, delta=0.01 * direct.cutting_length)
+
+    def test_missing_net_is_reported(self):
+        op = finishing_ops.CreateGuideCurveFinishing("NoNet", parentJob=self.job)
+        self.document.recompute()
+        self.assertNotEqual(op.State, ["Up-to-date"])
+        self.assertEqual(len([c for c in op.Path.Commands if c.Name == "G1"]), 0)
+        self.document.removeObject(op.Name)
+
+    def test_saved_and_restored(self):
+        import shutil
+
+        folder = temporary_directory(self)
+        path = os.path.join(folder, "ops.FCStd")
+        self.document.saveAs(path)
+        shutil.copy(path, os.path.join(folder, "copy.FCStd"))
+        copy = FreeCAD.openDocument(os.path.join(folder, "copy.FCStd"))
+        self.addCleanup(FreeCAD.closeDocument, copy.Name)
+        guide = copy.getObject(self.guide.Name)
+        self.assertEqual(type(guide.Proxy).__name__, "ObjectGuideCurveFinishing")
+        guide.touch()
+        copy.recompute()
+        self.assertEqual(guide.Passes, self.guide.Passes)
+
+
+class Posts(unittest.TestCase):
+    """Both posts on a small fixed operation, against golden files (FreeCAD's time stamp line left out)."""
+
+    LINES = ["(small fixed program)", "G0 X0 Y0 Z5", "G1 X0 Y0 Z-1 F10", "G1 X20 Y0 Z-1", "G2 X20 Y10 Z-1 I0 J5",
+             "G1 X0.0004 Y10", "G3 X0 Y20 I0 J5 F20", "G0 Z5"]
+
+    @classmethod
+    def setUpClass(cls):
+        cls.document = FreeCAD.newDocument("Posts")
+        part = master_feature_object.create(cls.document)
+        cls.job = create_job([part])
+        cls.controller = finishing.ball_end_controller(cls.job, 4.0, 4000.0)
+        cls.op = cam_module("custom_op").Create("Fixed", parentJob=cls.job)
+        cls.op.Gcode = cls.LINES
+        cls.document.recompute()
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.document.Name)
+
+    def check(self, text, golden):
+        text = "".join(line for line in text.splitlines(True) if "Output Time" not in line)
+        path = os.path.join(GOLDEN, golden)
+        if REGENERATE:
+            with open(path, "w") as stream:
+                stream.write(text)
+        with open(path) as stream:
+            self.assertEqual(text, stream.read(), "regenerate with HSM_REGENERATE_GOLDEN=1 if the change is meant")
+
+    def test_siemens_840d(self):
+        text = siemens840d_post.export([self.job, self.controller, self.op], "-", "--tolerance=0.005")
+        self.check(text, "siemens840d_fixed.mpf")
+        self.assertIn("CYCLE832(0.005,1,1)", text)
+        summary = hsmplanner.simulate(text, "mikron-ucp710-840d", refuse_unknown_words=True).summary
+        self.assertEqual(summary.cutting_blocks, 5)
+
+    def test_linuxcnc(self):
+        path = os.path.join(temporary_directory(self), "fixed.ngc")
+        post_module("linuxcnc").export([self.job, self.op], path, "--no-show-editor")
+        with open(path) as stream:
+            self.check(stream.read(), "linuxcnc_fixed.ngc")
+        self.assertEqual(hsmplanner.simulate(path, "linuxcnc-2.9").summary.cutting_blocks, 5)
+
+    def test_bad_post_arguments(self):
+        with self.assertRaisesRegex(ValueError, "--tolerance must be positive"):
+            siemens840d_post.export([self.job, self.op], "-", "--tolerance=-1")
+        with self.assertRaises(SystemExit):
+            siemens840d_post.export([self.job, self.op], "-", "--unknown-option")
+
+
+class Evaluation(unittest.TestCase):
+    def test_sequences_entries_and_short_share(self):
+        program = ("G0 X0 Y0 Z1\nG1 Z0 F1000\nG1 X50\nG0 Z1\nG0 X60\nG1 Z0\nG1 X65\nG0 Z1\n")
+        figures = evaluation.evaluate(hsmplanner.simulate(program, blocks=True))
+        self.assertEqual(figures["tool_entries"], 2)
+        self.assertEqual(figures["short_sequences"], 1)  # 1 + 5 mm < 20 mm; 1 + 50 mm is not
+        self.assertAlmostEqual(figures["short_sequence_share"], 0.5)
+        self.assertAlmostEqual(figures["path_length_mm"], 57.0)
+        self.assertAlmostEqual(evaluation.short_share([5, 30, 40, 10]), 0.5)
+        with self.assertRaisesRegex(ValueError, "blocks=True"):
+            evaluation.evaluate(hsmplanner.simulate(program))
+
+
+if __name__ == "__main__":
+    unittest.main()
