@@ -1,0 +1,217 @@
+#include "direction/direction.hpp"
+
+#include "common/error.hpp"
+#include "geometry/face_drop.hpp"
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace hsm::direction {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+const double kSteepest = std::cos(89.0 * M_PI / 180.0);  // flatter than 89° from horizontal: machinable from above
+
+Eigen::Vector3d toEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+Eigen::Vector3d toEigen(const gp_Dir& d) { return {d.X(), d.Y(), d.Z()}; }
+
+std::string number(double x) {
+  std::ostringstream text;
+  text.precision(4);
+  text << x;
+  return text.str();
+}
+
+void validate(const CuttingConditions& c) {
+  auto positive = [](double x, const char* what, const char* fix) {
+    if (!(x > 0.0) || !std::isfinite(x)) throw InputError(std::string(what) + " = " + number(x) + " must be positive: " + fix);
+  };
+  positive(c.toolRadius, "tool radius", "give the ball's radius in mm");
+  positive(c.scallop, "scallop height Sz", "e.g. 0.01 mm");
+  positive(c.programmedFeed, "programmed feed", "give it in mm/s (mm/min in Python)");
+  positive(c.spindleSpeed, "spindle speed", "give N in rev/s (rpm in Python)");
+  positive(c.acceleration, "acceleration", "the slowest axis's, mm/s²");
+  if (c.teeth < 1) throw InputError("teeth Z = " + std::to_string(c.teeth) + ": a tool has at least one tooth");
+  if (!(c.jerk >= 0.0)) throw InputError("jerk must be 0 (no jerk limit) or positive");
+}
+
+// The feed marks of the programmed fz alone, fz²/(8·Ro), against Sz: above it only the directions where
+// the machine slows down can keep the scallop.
+std::string scallopTooSmall(const CuttingConditions& c) {
+  const double fz = c.programmedFeedPerTooth(), marks = fz * fz / (8.0 * c.toolRadius);
+  if (marks < c.scallop) return "";
+  return "Sz = " + number(c.scallop) + " mm is too small for fz = " + number(fz) +
+         " mm per tooth: the feed marks alone are fz²/(8·Ro) = " + number(marks) +
+         " mm high; raise Sz or lower the feed per tooth";
+}
+}  // namespace
+
+std::vector<SurfacePoint> sampleFace(const TopoDS_Face& face, int nu, int nv) {
+  if (face.IsNull()) throw InputError("the face is null: pick a face");
+  if (nu < 2 || nv < 2) throw InputError("the sample grid must be at least 2 × 2");
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  const geometry::FaceDropper inside(face, Eigen::Vector3d::UnitZ());
+  const double orientation = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+  std::vector<SurfacePoint> points;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = u0 + (u1 - u0) * (i + 0.5) / nu, v = v0 + (v1 - v0) * (j + 0.5) / nv;
+      if (!inside.inside(u, v)) continue;
+      GeomLProp_SLProps props(surface, u, v, 2, 1e-9);
+      if (!props.IsNormalDefined() || !props.IsCurvatureDefined()) continue;
+      SurfacePoint m;
+      m.point = toEigen(props.Value());
+      m.normal = orientation * toEigen(props.Normal());
+      // OCCT's curvatures are positive when the centre of curvature lies on the side of its normal.
+      m.k1 = orientation * props.MaxCurvature();
+      m.k2 = orientation * props.MinCurvature();
+      if (props.IsUmbilic()) {
+        m.e1 = m.normal.unitOrthogonal();
+        m.e2 = m.normal.cross(m.e1);
+      } else {
+        gp_Dir d1, d2;
+        props.CurvatureDirections(d1, d2);
+        m.e1 = toEigen(d1);
+        m.e2 = toEigen(d2);
+      }
+      points.push_back(m);
+    }
+  // A face is machined from above: if most of it faces down, its parametrisation is upside down.
+  const long down = std::count_if(points.begin(), points.end(), [](const SurfacePoint& m) { return m.normal.z() < 0; });
+  if (2 * down > static_cast<long>(points.size()))
+    for (SurfacePoint& m : points) {
+      m.normal = -m.normal;
+      m.k1 = -m.k1;
+      m.k2 = -m.k2;
+    }
+  return points;
+}
+
+Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c) {
+  const double theta = thetaDeg * M_PI / 180.0;
+  const Eigen::Vector3d d(std::cos(theta), std::sin(theta), 0.0), k = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d& n = m.normal;
+  Performance p;
+  // Transverse step (eq. 7-9): the step measured on the surface across d, for the scallop Sz.
+  const Eigen::Vector3d dn = d.cross(n);
+  const double cosBeta = dn.norm() > 1e-12 ? (dn.normalized().cross(d)).dot(k) : 0.0;
+  // Radius of the path: the offset surface cut by the vertical plane through d.
+  const Eigen::Vector3d planeNormal = d.cross(k);
+  Eigen::Vector3d t = planeNormal.cross(n);
+  double radius = kInfinity;
+  if (t.norm() > 1e-12) {
+    t.normalize();
+    const double r = c.toolRadius;
+    const double k1 = m.k1 / (1.0 - r * m.k1), k2 = m.k2 / (1.0 - r * m.k2);  // the offset's curvatures
+    const double kn = k1 * std::pow(t.dot(m.e1), 2) + k2 * std::pow(t.dot(m.e2), 2);
+    const double cosN = planeNormal.cross(t).normalized().dot(n);               // Meusnier
+    const double kappa = std::abs(cosN) > 1e-12 ? kn / cosN : 0.0;
+    if (std::abs(kappa) > 1e-15) radius = 1.0 / std::abs(kappa);
+  }
+  double reachable = c.programmedFeed;
+  if (std::isfinite(radius)) {
+    reachable = std::min(reachable, std::sqrt(radius * c.acceleration));
+    if (c.jerk > 0.0) reachable = std::min(reachable, std::cbrt(c.jerk * radius * radius));
+  }
+  p.pathRadius = radius;
+  p.feedPerTooth = reachable / (c.teeth * c.spindleSpeed);
+  const double room = 8.0 * c.scallop * c.toolRadius - p.feedPerTooth * p.feedPerTooth;
+  p.transverseStep = room > 0.0 ? std::sqrt(room) * std::abs(cosBeta) : 0.0;
+  p.fitness = p.transverseStep * p.feedPerTooth;
+  return p;
+}
+
+DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingConditions& c, const DirectionSettings& s) {
+  return optimalDirection(sampleFace(face, s.gridU, s.gridV), c, s);
+}
+
+DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const CuttingConditions& c,
+                                 const DirectionSettings& s) {
+  validate(c);
+  if (!(s.angleStepDeg > 0.0 && s.angleStepDeg <= 1.0))
+    throw InputError("the angle step " + number(s.angleStepDeg) + "° must be in (0°, 1°]: directions at 1° or finer");
+  if (!(s.reportAlpha > 0.0 && s.reportAlpha <= 1.0)) throw InputError("the reported α must be in (0, 1]");
+  DirectionResult result;
+  std::vector<const SurfacePoint*> points;
+  long steep = 0, tooTight = 0;
+  for (const SurfacePoint& m : all) {
+    if (m.normal.z() <= kSteepest) {
+      ++steep;
+    } else if (1.0 - c.toolRadius * std::max(m.k1, m.k2) <= 0.0) {
+      ++tooTight;
+    } else {
+      points.push_back(&m);
+    }
+  }
+  if (steep) result.warnings.push_back(std::to_string(steep) + " point(s) vertical or undercut (facing 89° or more from the tool axis) left out: parallel planes from above cannot finish them");
+  if (tooTight) result.warnings.push_back(std::to_string(tooTight) + " point(s) concave tighter than the ball left out: a smaller tool is needed there");
+  if (points.empty())
+    throw InputError("no point of the face can be finished by parallel planes with this tool (" + std::to_string(steep) +
+                     " vertical or undercut, " + std::to_string(tooTight) +
+                     " tighter than the ball): use a Z-level strategy or a smaller ball");
+
+  const int count = static_cast<int>(std::lround(180.0 / s.angleStepDeg));
+  for (int j = 0; j < count; ++j) result.anglesDeg.push_back(180.0 * j / count);
+  result.rate.assign(count, kInfinity);
+  result.points.resize(static_cast<Eigen::Index>(points.size()), 3);
+  std::vector<double> fitness(count);
+  for (size_t i = 0; i < points.size(); ++i) {
+    double best = 0.0;
+    int at = 0;
+    for (int j = 0; j < count; ++j) {
+      fitness[j] = performance(*points[i], result.anglesDeg[j], c).fitness;
+      if (fitness[j] > best) {
+        best = fitness[j];
+        at = j;
+      }
+    }
+    result.points.row(static_cast<Eigen::Index>(i)) = points[i]->point.transpose();
+    result.bestAngleDeg.push_back(result.anglesDeg[at]);
+    result.fitnessMax.push_back(best);
+    if (best <= 0.0) continue;
+    for (int j = 0; j < count; ++j) result.rate[j] = std::min(result.rate[j], fitness[j] / best);
+  }
+  const bool anyFitness = std::any_of(result.fitnessMax.begin(), result.fitnessMax.end(), [](double g) { return g > 0; });
+  const std::string marks = scallopTooSmall(c);
+  if (!anyFitness) throw InputError(marks.empty() ? "no direction gives a transverse step at any point" : marks);
+  if (!marks.empty()) result.warnings.push_back(marks + " (only where the machine slows down is Sz kept)");
+  for (double& r : result.rate)
+    if (!std::isfinite(r)) r = 0.0;
+  const auto top = std::max_element(result.rate.begin(), result.rate.end());
+  result.alpha = *top;
+  result.optimalAngleDeg = result.anglesDeg[top - result.rate.begin()];
+  const double worst = *std::min_element(result.rate.begin(), result.rate.end());
+  result.allTie = result.alpha - worst < 1e-9;
+  if (result.allTie)
+    result.warnings.push_back("every direction performs the same (a flat face): choose the direction by path length");
+  result.reportedAlpha = std::min(result.alpha, s.reportAlpha);
+  for (int j = 0; j < count; ++j)
+    if (result.rate[j] >= result.reportedAlpha - 1e-12) result.acceptableDeg.push_back(result.anglesDeg[j]);
+  return result;
+}
+
+double beamAlgorithmAlpha(const std::vector<double>& rate, double start, double step, double precision) {
+  auto intersectionEmpty = [&](double alpha) {
+    return std::none_of(rate.begin(), rate.end(), [&](double r) { return r >= alpha; });
+  };
+  double alpha = intersectionEmpty(start) ? 0.0 : start;
+  while (step > precision) {
+    if (!intersectionEmpty(alpha + step)) {
+      alpha += step;  // the beams still meet: demand more of every direction
+    } else {
+      step *= 0.5;    // the intersection emptied: come back and take a smaller step
+    }
+  }
+  return alpha;
+}
+
+}  // namespace hsm::direction
