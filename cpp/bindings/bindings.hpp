@@ -14,4 +14,5 @@ void bindGeometry(pybind11::module_& module);
 void bindCurvenet(pybind11::module_& module);
 void bindKinematics(pybind11::module_& module);
 void bindToolpath(pybind11::module_& module);
+void bindDirection(pybind11::module_& module);
 }

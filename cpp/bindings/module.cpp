@@ -30,4 +30,5 @@ PYBIND11_MODULE(_core, module) {
   hsm::bindings::bindCurvenet(module);
   hsm::bindings::bindKinematics(module);
   hsm::bindings::bindToolpath(module);
+  hsm::bindings::bindDirection(module);
 }

@@ -59,7 +59,7 @@ public:
     bottom_ = TopoDS::Face(faces(bottomFace));
     std::vector<int> around = faceAndNeighbours(part, bottomFace);
     around.erase(around.begin());  // the bottom face itself is dropped on exactly
-    TriangleMesh mesh = meshFaces(part, settings.meshDeflection, around);
+    TriangleMesh mesh = around.empty() ? TriangleMesh{} : meshFaces(part, settings.meshDeflection, around);
     addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
     exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius);
