@@ -3,11 +3,12 @@
 #include "common/error.hpp"
 #include "curvenet/plane_cuts.hpp"
 #include "geometry/face_drop.hpp"
+#include "toolpath/cusp.hpp"
 #include "toolpath/surface_drop.hpp"
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
-#include <GeomLProp_SLProps.hxx>
+#include <Geom_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -18,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <thread>
 
 namespace hsm::toolpath {
@@ -39,12 +41,6 @@ void validate(const FinishingSettings& s) {
   if (!(s.clearance >= 0.0)) throw InputError("clearance must be 0 or more");
 }
 
-struct SurfacePoint {
-  Vector3 p;
-  double u = 0, v = 0;
-  bool inside = false;
-};
-
 // What every strategy needs: the part meshed for the drop-cutter, the bottom face for contact points.
 class Context {
 public:
@@ -64,6 +60,7 @@ public:
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
     exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius);
     dropper_ = std::make_unique<geometry::FaceDropper>(bottom_, Vector3::UnitZ());
+    gauge_ = std::make_unique<CuspGauge>(*exact_, *dropper_, settings.toolRadius);
     Bnd_Box box;
     BRepBndLib::Add(part, box);
     double x0, y0, z0, x1, y1, z1;
@@ -79,6 +76,7 @@ public:
   }
 
   const FinishingSettings& settings() const { return settings_; }
+  const CuspGauge& gauge() const { return *gauge_; }
 
   // The tool tip at (x, y): the highest of the exact contact on the bottom face and the mesh contacts.
   // `state` carries the surface parameters from one point to the next along a pass.
@@ -134,62 +132,6 @@ public:
   Vector2 faceMin() const { return faceMin_; }
   Vector2 faceMax() const { return faceMax_; }
   long dropped = 0;
-
-  // Where the ball above each plan position touches the bottom face: the contact points whose spacing
-  // across passes sets the cusp (inside = the contact is on the face).
-  std::vector<SurfacePoint> contacts(const std::vector<Vector2>& plan) const {
-    std::vector<SurfacePoint> result(plan.size());
-    SurfaceBallDrop::Result state;
-    bool haveGuess = false;
-    for (size_t i = 0; i < plan.size(); ++i) {
-      if (!exact_->drop(plan[i].x(), plan[i].y(), state, haveGuess)) {
-        haveGuess = false;
-        continue;
-      }
-      haveGuess = true;
-      const gp_Pnt p = exact_->surface()->Value(state.u, state.v);
-      result[i] = {Vector3(p.X(), p.Y(), p.Z()), state.u, state.v, state.onFace};
-    }
-    return result;
-  }
-
-  // Points of the bottom face under plan positions.
-  std::vector<SurfacePoint> onFace(const std::vector<Vector2>& plan) const {
-    std::vector<SurfacePoint> result(plan.size());
-    bool haveGuess = false;
-    double u = 0, v = 0;
-    for (size_t i = 0; i < plan.size(); ++i) {
-      Eigen::RowVector3d p(plan[i].x(), plan[i].y(), faceTop_ + 1.0);
-      haveGuess = dropper_->dropOne(p, u, v, haveGuess);
-      result[i] = {p.transpose(), u, v, haveGuess && dropper_->inside(u, v)};
-    }
-    return result;
-  }
-
-  // The stepover that leaves the cusp height, at a face point, for passes next to each other along `across`.
-  double allowedStep(const SurfacePoint& sp, const Vector3& across) const {
-    GeomLProp_SLProps props(dropper_->surface(), sp.u, sp.v, 2, 1e-9);
-    const double r = settings_.toolRadius, h = settings_.cuspHeight;
-    double kappa = 0.0;
-    if (props.IsNormalDefined()) {
-      gp_Dir n = props.Normal();
-      const double sign = n.Z() < 0 ? -1.0 : 1.0;  // the face's upward side is where the tool is
-      const gp_Vec su = props.D1U(), sv = props.D1V();
-      const Eigen::Matrix<double, 3, 2> basis = (Eigen::Matrix<double, 3, 2>() << su.X(), sv.X(), su.Y(), sv.Y(),
-                                                 su.Z(), sv.Z()).finished();
-      const Eigen::Vector2d ab = basis.colPivHouseholderQr().solve(across);
-      const gp_Vec duu = props.D2U(), duv = props.DUV(), dvv = props.D2V();
-      const gp_Vec nv(n.X() * sign, n.Y() * sign, n.Z() * sign);
-      const double L = nv.Dot(duu), M = nv.Dot(duv), N = nv.Dot(dvv);
-      const double E = su.Dot(su), F = su.Dot(sv), G = sv.Dot(sv);
-      const double a = ab.x(), b = ab.y();
-      const double first = E * a * a + 2 * F * a * b + G * b * b;
-      if (first > 1e-18) kappa = (L * a * a + 2 * M * a * b + N * b * b) / first;
-    }
-    const double inverse = std::max(1.0 / r - kappa, 1.0 / (100.0 * r));  // concave tighter than the ball: no cusp
-    const double effective = 1.0 / inverse;
-    return std::min(2.0 * std::sqrt(std::max(0.0, 2.0 * effective * h - h * h)), r);
-  }
 
   // Cutter passes along a plan polyline: dropped, kept over the bottom face (extended past open ends),
   // refined within the tolerance and reduced to G1 points. A polyline may give several passes.
@@ -301,6 +243,7 @@ private:
   std::unique_ptr<BallDropCutter> cutter_;
   std::unique_ptr<SurfaceBallDrop> exact_;
   std::unique_ptr<geometry::FaceDropper> dropper_;
+  std::unique_ptr<CuspGauge> gauge_;
   double safeHeight_ = 0.0, faceTop_ = 0.0, extension_ = 0.0;
   Vector2 faceMin_, faceMax_;
 };
@@ -320,29 +263,17 @@ std::vector<double> passParameters(const Context& context, const Family& family,
   double lastStep = 1e-3 * span;
   while (std::abs(current - family.begin) < span - 1e-12) {
     const std::vector<Vector2> plan = family.plan(current, kStationStep);
-    const std::vector<SurfacePoint> here = context.contacts(plan);
-    // Allowed stepover at each station, measured across the passes.
-    const std::vector<Vector2> ahead = family.plan(current + sense * 1e-3 * span, kStationStep);
-    const std::vector<SurfacePoint> near = context.contacts(ahead);
-    std::vector<double> allowed(here.size(), kInfinity);
-    for (size_t k = 0; k < here.size() && k < near.size(); ++k) {
-      if (!here[k].inside || !near[k].inside) continue;
-      const Vector3 across = near[k].p - here[k].p;
-      if (across.norm() > 1e-12) allowed[k] = context.allowedStep(here[k], across.normalized());
-    }
-    // Where the current pass is off the face, the next may not step by more than the largest stepover
-    // allowed where it is on it (or the flat-surface stepover): the passes must not jump over a corner.
-    double largest = 0.0;
-    for (double a : allowed)
-      if (std::isfinite(a)) largest = std::max(largest, a);
-    if (largest == 0.0) largest = context.flatStep();
+    const std::vector<BallContact> here = context.gauge().contacts(plan);
+    const double h = context.settings().cuspHeight, flat = context.flatStep();
     auto fits = [&](double candidate) {
-      const std::vector<SurfacePoint> there = context.contacts(family.plan(candidate, kStationStep));
+      const std::vector<Vector2> candidatePlan = family.plan(candidate, kStationStep);
+      const std::vector<BallContact> there = context.gauge().contacts(candidatePlan);
       for (size_t k = 0; k < here.size() && k < there.size(); ++k) {
         if (!there[k].inside) continue;
-        const double limit = here[k].inside ? allowed[k] : largest;
-        const Vector2 planGap = there[k].p.head<2>() - here[k].p.head<2>();
-        if ((here[k].inside ? (there[k].p - here[k].p).norm() : planGap.norm()) > limit) return false;
+        // Where the current pass is off the face (or its cusp cannot be told), the next may not step by
+        // more than the flat-face stepover in plan: the passes must not jump over a corner.
+        const std::optional<double> cusp = context.gauge().cusp(here, k, candidatePlan, there, h);
+        if (cusp ? *cusp > h : (candidatePlan[k] - plan[k]).norm() > flat) return false;
       }
       return true;
     };

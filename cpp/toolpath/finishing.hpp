@@ -6,10 +6,12 @@
 //   found by Newton: no mesh error where the finish matters) and by drop-cutter on a mesh of every face
 //   touching it (flanks, within 0.004 mm) and on the bottom face's own edges; the highest contact wins.
 //   Positions are of the tool tip.
-// - Stepover: the next pass is the farthest one whose distance to the current pass, measured between
-//   the ball's contact points on the bottom face, stays within the stepover that leaves the cusp height on the real
-//   surface: s = 2·sqrt(2·R·h − h²) with R = 1/(1/r − κ), κ the normal curvature of the face across the
-//   passes (concave > 0), so that passes close up on convex parts and open on concave ones.
+// - Stepover: the next pass is the farthest one that leaves at most the cusp height on the real face at
+//   every station of the current pass: in the plane normal to the path of the ball's centre, the ridge
+//   where that ball's circle meets the next pass's balls, its height above the face (toolpath/cusp.hpp).
+//   Passes close up on convex parts and open on concave ones; where the contacts slide along the pass
+//   from one pass to the next (valleys crossed at a slant, morphed passes) they are not crowded. Where the
+//   current pass is off the face, the next steps by at most the flat-face stepover 2·sqrt(2·r·h − h²).
 // - Points: the cutter positions are sampled, refined where the path bends, then reduced to the fewest
 //   G1 points within the machining tolerance (Douglas–Peucker on the refined polyline).
 // - Passes keep the ball on the bottom face: where a flank would hold it up the pass ends (the first pass

@@ -1,11 +1,15 @@
-// Finishing toolpaths on the master bottom feature, checked by an independent measure: the height map of
-// the ball swept along the G1 moves, against the face itself (no number of the generator is reused).
+// Finishing toolpaths on the master bottom feature and on slanted valleys, checked by an independent measure:
+// the height map of the ball swept along the G1 moves, against the face itself (no generator number reused).
 #include "common/error.hpp"
 #include "curvenet/curvenet.hpp"
 #include "geometry/face_drop.hpp"
 #include "support/master_feature.hpp"
 #include "toolpath/finishing.hpp"
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <gtest/gtest.h>
@@ -36,7 +40,8 @@ struct Residual {
 
 // The lowest point of the ball swept along the feed moves, above each point of a grid on the face, in the
 // window [x0, x1] × [y0, y1]; compared with the face's own height there.
-Residual sweep(const Toolpath& path, double r, double x0, double x1, double y0, double y1, double grid) {
+Residual sweep(const Toolpath& path, const TopoDS_Face& bottom, double r, double x0, double x1, double y0, double y1,
+               double grid) {
   const int nx = int((x1 - x0) / grid) + 1, ny = int((y1 - y0) / grid) + 1;
   std::vector<double> envelope(static_cast<size_t>(nx) * ny, 1e300);
   for (size_t k = 1; k < path.moves.size(); ++k) {
@@ -63,7 +68,7 @@ Residual sweep(const Toolpath& path, double r, double x0, double x1, double y0, 
         }
     }
   }
-  const geometry::FaceDropper face(feature().bottom, Eigen::Vector3d::UnitZ());
+  const geometry::FaceDropper face(bottom, Eigen::Vector3d::UnitZ());
   Residual result;
   double u = 0, v = 0;
   bool guess = false;
@@ -105,11 +110,11 @@ void expectCuspAndNoGouge(const std::function<Toolpath(const FinishingSettings&)
   const Toolpath ideal = strategy(tight), usual = strategy(settings());
   EXPECT_GT(usual.passes, 80) << name;
   for (const auto& [x0, x1, y0, y1] : windows) {
-    const Residual cusp = sweep(ideal, 2.0, x0, x1, y0, y1, 0.025);
+    const Residual cusp = sweep(ideal, feature().bottom, 2.0, x0, x1, y0, y1, 0.025);
     EXPECT_GT(cusp.samples, 50000);
     EXPECT_LE(cusp.worstCusp, 0.011) << name << ": cusp between passes, window at " << x0 << ", " << y0;
     EXPECT_LE(cusp.worstGouge, 0.001) << name;
-    const Residual real = sweep(usual, 2.0, x0, x1, y0, y1, 0.025);
+    const Residual real = sweep(usual, feature().bottom, 2.0, x0, x1, y0, y1, 0.025);
     EXPECT_LE(real.worstCusp, 0.01 + 0.01 + 0.001) << name << ": cusp and chords";
     EXPECT_LE(real.worstGouge, 0.01) << name << ": chords within the tolerance";
   }
@@ -129,6 +134,42 @@ TEST(Finishing, ParallelPlanesKeepTheCuspAndNeverGouge) {
     expectCuspAndNoGouge([angle](const FinishingSettings& s) {
       return parallelPlaneFinishing(feature().shape, bottomIndex(), angle, s);
     }, angle == 0.0 ? "planes at 0°" : "planes at 30°");
+}
+
+// Valleys running at 45° (z = h/2·(1 − cos 2πu/λ) across them) on a 40 × 40 mm face: passes along X
+// cross them at a slant, so the contact of a station slides along the pass from one pass to the next.
+TopoDS_Face slantedValleys() {
+  const int n = 33;
+  const double size = 40.0, height = 3.0, wavelength = 18.0;  // concave radius λ²/(2π²h) = 5.5 mm at the bottoms
+  TColgp_Array2OfPnt grid(1, n, 1, n);
+  for (int i = 1; i <= n; ++i)
+    for (int j = 1; j <= n; ++j) {
+      const double x = size * (i - 1) / (n - 1), y = size * (j - 1) / (n - 1), u = (y - x) / std::sqrt(2.0);
+      grid.SetValue(i, j, gp_Pnt(x, y, 0.5 * height * (1.0 - std::cos(2.0 * M_PI * u / wavelength))));
+    }
+  const Handle(Geom_BSplineSurface) surface = GeomAPI_PointsToBSplineSurface(grid, 3, 8, GeomAbs_C2, 1e-6).Surface();
+  return BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
+}
+
+TEST(Finishing, PassesAcrossSlantedValleysKeepTheCuspWithoutCrowding) {
+  const TopoDS_Face face = slantedValleys();
+  FinishingSettings s = settings();
+  s.tolerance = 0.001;
+  const Toolpath path = parallelPlaneFinishing(face, 1, 0.0, s);
+  const Residual cusp = sweep(path, face, 2.0, 17, 23, 17, 23, 0.025);
+  EXPECT_GT(cusp.samples, 50000);
+  EXPECT_LE(cusp.worstCusp, 0.011);
+  EXPECT_LE(cusp.worstGouge, 0.001);
+  // The cusp is set by where the passes' tubes meet, not by how far a station's contact slides along the
+  // pass: where it is worst (the valley bottoms, seen at 45°: a concave section of radius R = 2·ρ) the
+  // passes may be d = √(8·r·h·(1 − r/R)) apart; no more passes than that over the 40 mm, give or take the
+  // edges, and the cusp left is the one asked for, not far less.
+  const double rho = 18.0 * 18.0 / (2.0 * M_PI * M_PI * 3.0), r = 2.0, h = 0.01;
+  const double bottomStep = std::sqrt(8.0 * r * h * (1.0 - r / (2.0 * rho)));
+  const double flat = 2.0 * std::sqrt(2.0 * r * h - h * h);
+  EXPECT_LE(path.passes, 1.1 * 40.0 / bottomStep + 4) << "passes crowd where the contacts slide";
+  EXPECT_GE(cusp.worstCusp, 0.009) << "the passes are closer than the cusp needs";
+  EXPECT_GE(path.passes, 40.0 / flat - 4) << "fewer passes than on a flat face";
 }
 
 TEST(Finishing, MovesStartAndEndAtTheSafeHeightAndRapidsStayAbove) {
