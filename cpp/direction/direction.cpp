@@ -134,6 +134,25 @@ DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingCondition
   return optimalDirection(sampleFace(face, s.gridU, s.gridV), c, s);
 }
 
+namespace {
+
+// Symmetric faces give the same α* at θ and 180° − θ: the tie goes to the direction nearest the X axis,
+// then to the smaller angle, so that the answer does not flip between feeds or platforms.
+double tieBrokenOptimum(const std::vector<double>& anglesDeg, const std::vector<double>& rate, double alpha) {
+  double chosen = 0.0, chosenFromAxis = kInfinity;
+  for (size_t j = 0; j < rate.size(); ++j) {
+    if (rate[j] < alpha - 1e-9) continue;
+    const double fromAxis = std::min(anglesDeg[j], 180.0 - anglesDeg[j]);
+    if (fromAxis < chosenFromAxis - 1e-12) {
+      chosen = anglesDeg[j];
+      chosenFromAxis = fromAxis;
+    }
+  }
+  return chosen;
+}
+
+}  // namespace
+
 DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const CuttingConditions& c,
                                  const DirectionSettings& s) {
   validate(c);
@@ -186,9 +205,8 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
   if (!marks.empty()) result.warnings.push_back(marks + " (only where the machine slows down is Sz kept)");
   for (double& r : result.rate)
     if (!std::isfinite(r)) r = 0.0;
-  const auto top = std::max_element(result.rate.begin(), result.rate.end());
-  result.alpha = *top;
-  result.optimalAngleDeg = result.anglesDeg[top - result.rate.begin()];
+  result.alpha = *std::max_element(result.rate.begin(), result.rate.end());
+  result.optimalAngleDeg = tieBrokenOptimum(result.anglesDeg, result.rate, result.alpha);
   const double worst = *std::min_element(result.rate.begin(), result.rate.end());
   result.allTie = result.alpha - worst < 1e-9;
   if (result.allTie)

@@ -102,6 +102,7 @@ TEST(Direction, Case1TransverseAtLowFeedAlongTheAxisAtHighFeed) {
   for (double feed : {1.1 * switching, 16000.0, 20000.0, 25000.0, 29000.0}) {
     const DirectionResult r = optimalDirection(cylinderTop(), case1(feed), s);
     EXPECT_NE(r.optimalAngleDeg, 0.0) << feed;
+    EXPECT_LE(r.optimalAngleDeg, 90.0) << feed << ": the tie between θ and 180° − θ goes to the smaller angle";
     // θ and 180° − θ are the same on a cylinder symmetric about its top line.
     const double expected = closedFormOptimum(case1(feed));
     EXPECT_LE(std::min(std::abs(r.optimalAngleDeg - expected), std::abs(r.optimalAngleDeg - (180.0 - expected))), 1.0)
