@@ -40,12 +40,14 @@ demo: build
 	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
 	scripts/run-freecadcmd.sh examples/curve_nets.py $(OUT)
 	scripts/run-freecadcmd.sh examples/feedrate_study.py $(OUT)
+	scripts/run-freecadcmd.sh examples/machining_direction.py $(OUT)
 
 bench: build
 	$(BUILD_DIR)/bin/bench_curvenet
 	$(BUILD_DIR)/bin/bench_feedsim
 	scripts/run-freecadcmd.sh tests/bench/bench_preview.py
 	$(BUILD_DIR)/bin/bench_dropcutter
+	$(BUILD_DIR)/bin/bench_direction
 	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
 
 clean:

@@ -70,6 +70,7 @@ std::vector<SurfacePoint> sampleFace(const TopoDS_Face& face, int nu, int nv) {
       if (!props.IsNormalDefined() || !props.IsCurvatureDefined()) continue;
       SurfacePoint m;
       m.point = toEigen(props.Value());
+      m.planArea = std::abs(props.D1U().Crossed(props.D1V()).Z()) * (u1 - u0) / nu * (v1 - v0) / nv;
       m.normal = orientation * toEigen(props.Normal());
       // OCCT's curvatures are positive when the centre of curvature lies on the side of its normal.
       m.k1 = orientation * props.MaxCurvature();
@@ -94,6 +95,12 @@ std::vector<SurfacePoint> sampleFace(const TopoDS_Face& face, int nu, int nv) {
       m.k2 = -m.k2;
     }
   return points;
+}
+
+double stopAndGoLoss(double speed, double acceleration, double jerk) {
+  if (jerk <= 0.0) return speed / acceleration;
+  if (speed * jerk <= acceleration * acceleration) return 2.0 * std::sqrt(speed / jerk);  // a_max not reached
+  return speed / acceleration + acceleration / jerk;
 }
 
 Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c) {
@@ -136,12 +143,47 @@ DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingCondition
 
 namespace {
 
+// The time of parallel planes along `thetaDeg` over the points. A plane keeps one stepover from its
+// neighbour: the smallest p1 along it. The face is cut into strips along the planes, one point spacing
+// wide; in each, the path length per plan area is 1/min p1, stretched by the slope along d, at each point's
+// real feed fz·Z·N; each plane adds its run-outs and a reversal. Infinite where a strip gets no step.
+double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDeg, const CuttingConditions& c) {
+  const double theta = thetaDeg * M_PI / 180.0;
+  const Eigen::Vector2d along(std::cos(theta), std::sin(theta)), across(-along.y(), along.x());
+  double area = 0.0, lo = kInfinity, hi = -kInfinity;
+  for (const SurfacePoint* m : points) {
+    area += m->planArea;
+    const double q = across.dot(m->point.head<2>());
+    lo = std::min(lo, q);
+    hi = std::max(hi, q);
+  }
+  const double width = std::max(std::sqrt(area / points.size()), 1e-9);
+  const size_t strips = static_cast<size_t>((hi - lo) / width) + 1;
+  std::vector<double> minStep(strips, kInfinity), timeAtUnitStep(strips, 0.0);
+  for (const SurfacePoint* m : points) {
+    const size_t s = std::min(strips - 1, static_cast<size_t>((across.dot(m->point.head<2>()) - lo) / width));
+    const Performance p = performance(*m, thetaDeg, c);
+    const double slope = along.dot(m->normal.head<2>()) / m->normal.z();
+    minStep[s] = std::min(minStep[s], p.transverseStep);
+    timeAtUnitStep[s] += m->planArea * std::sqrt(1.0 + slope * slope) / (p.feedPerTooth * c.teeth * c.spindleSpeed);
+  }
+  double time = 0.0, planes = 0.0;
+  for (size_t s = 0; s < strips; ++s) {
+    if (timeAtUnitStep[s] <= 0.0) continue;
+    if (minStep[s] <= 0.0) return kInfinity;
+    time += timeAtUnitStep[s] / minStep[s];
+    planes += width / minStep[s];
+  }
+  const double perPlane = 2.0 * c.toolRadius / c.programmedFeed + stopAndGoLoss(c.programmedFeed, c.acceleration, c.stopJerk);
+  return time + planes * perPlane;
+}
+
 // Symmetric faces give the same α* at θ and 180° − θ: the tie goes to the direction nearest the X axis,
 // then to the smaller angle, so that the answer does not flip between feeds or platforms.
 double tieBrokenOptimum(const std::vector<double>& anglesDeg, const std::vector<double>& rate, double alpha) {
   double chosen = 0.0, chosenFromAxis = kInfinity;
   for (size_t j = 0; j < rate.size(); ++j) {
-    if (rate[j] < alpha - 1e-9) continue;
+    if (rate[j] < alpha * (1.0 - 1e-9)) continue;
     const double fromAxis = std::min(anglesDeg[j], 180.0 - anglesDeg[j]);
     if (fromAxis < chosenFromAxis - 1e-12) {
       chosen = anglesDeg[j];
@@ -197,7 +239,9 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
     result.bestAngleDeg.push_back(result.anglesDeg[at]);
     result.fitnessMax.push_back(best);
     if (best <= 0.0) continue;
-    for (int j = 0; j < count; ++j) result.rate[j] = std::min(result.rate[j], fitness[j] / best);
+    for (int j = 0; j < count; ++j) {
+      result.rate[j] = std::min(result.rate[j], fitness[j] / best);
+    }
   }
   const bool anyFitness = std::any_of(result.fitnessMax.begin(), result.fitnessMax.end(), [](double g) { return g > 0; });
   const std::string marks = scallopTooSmall(c);
@@ -207,6 +251,10 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
     if (!std::isfinite(r)) r = 0.0;
   result.alpha = *std::max_element(result.rate.begin(), result.rate.end());
   result.optimalAngleDeg = tieBrokenOptimum(result.anglesDeg, result.rate, result.alpha);
+  for (int j = 0; j < count; ++j) result.predictedTime.push_back(planesTime(points, result.anglesDeg[j], c));
+  std::vector<double> speed(count);  // 1/T, so that the same tie rule picks the least time
+  for (int j = 0; j < count; ++j) speed[j] = result.predictedTime[j] > 0.0 ? 1.0 / result.predictedTime[j] : 0.0;
+  result.fastestAngleDeg = tieBrokenOptimum(result.anglesDeg, speed, *std::max_element(speed.begin(), speed.end()));
   const double worst = *std::min_element(result.rate.begin(), result.rate.end());
   result.allTie = result.alpha - worst < 1e-9;
   if (result.allTie)

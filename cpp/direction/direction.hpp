@@ -11,6 +11,12 @@
 // α* = max_θ min_M G_p(M, θ)/G_pmax(M), at θ*: the optimal direction. The paper's algorithm (Fig. 8)
 // raises α until the intersection empties, halving its step; it converges to α* (tested).
 //
+// Beyond the paper: the predicted cutting time of parallel planes per direction, T(θ) = Σ A·√(1 + s²)/(p1·Vf)
+// with A the plan area a point stands for, s the slope along d, Vf = fz·Z·N the real feed and p1 the
+// smallest step along the point's plane (strips one point spacing wide), plus per plane its run-out of a
+// tool radius past each end and the time a stop and a start cost there (S-curve with a_max and the stop
+// jerk); and the direction minimising it.
+//
 // Where the paper is silent: curvatures are signed positive where the face bends towards the tool; points
 // whose concave radius is below the ball's, undercut (n·k < 0) or vertical (n·k ≈ 0) are left out with a
 // warning (refused if no point is left); a flat face, where every direction ties, is reported as such.
@@ -33,6 +39,7 @@ struct CuttingConditions {
   int teeth = 2;                 // Z
   double acceleration = 3000.0;  // a_max of the slowest axis, mm/s²
   double jerk = 0.0;             // mm/s³; 0: the paper's model (no jerk limit)
+  double stopJerk = 0.0;         // mm/s³ of the slowest axis, for the time a plane's reversal costs (0: unknown)
 
   double programmedFeedPerTooth() const { return programmedFeed / (teeth * spindleSpeed); }
 };
@@ -41,6 +48,7 @@ struct SurfacePoint {
   Eigen::Vector3d point, normal;          // normal towards the tool (n·k > 0)
   double k1 = 0.0, k2 = 0.0;              // principal curvatures, > 0 where the face bends towards the tool
   Eigen::Vector3d e1, e2;                 // principal directions
+  double planArea = 1.0;                  // mm² of the face's plan view the point stands for
 };
 
 // Sample points of the face on an nu × nv grid of its parameters, inside its boundaries.
@@ -52,6 +60,9 @@ struct Performance {
   double pathRadius = 0.0;      // Rc, mm (infinity: straight)
   double fitness = 0.0;         // G_p = p1·fz, mm²
 };
+
+// The time lost by stopping from `speed` and starting again (S-curve: jerk-limited, then acceleration-limited).
+double stopAndGoLoss(double speed, double acceleration, double jerk);
 
 // Eq. 9–12 at one point for the direction at `thetaDeg` from X.
 Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c);
@@ -72,6 +83,11 @@ struct DirectionResult {
   geometry::PointArray points;        // the points used
   std::vector<double> bestAngleDeg;   // per point: the direction of G_pmax
   std::vector<double> fitnessMax;     // per point: G_pmax, mm²
+  // Beyond the paper: the cutting time the same model predicts for parallel planes over the whole face,
+  // per direction, and the direction where it is least. The beams guard the worst point; this weighs every
+  // point by the area it stands for, and gives each plane the smallest step along it, as planes have.
+  std::vector<double> predictedTime;  // s, per direction (infinite where some point gets no step)
+  double fastestAngleDeg = 0.0;
   bool allTie = false;                // flat face: every direction equal
   std::vector<std::string> warnings;
 };

@@ -229,3 +229,129 @@ def save_strategy_times(times, feeds, path):
     figure.tight_layout()
     figure.savefig(path)
     return path
+
+
+# --- machining direction ------------------------------------------------------------------------------------
+
+def draw_directions_over_feeds(axes, rows):
+    """The paper's Fig. 10 on `axes`: acceptable directions (squares) and the optimum (line) against the
+    programmed feed. rows: (feed mm/min, optimal angle, acceptable angles)."""
+    for feed, optimum, acceptable in rows:
+        axes.plot(np.full(len(acceptable), feed / 1000.0), acceptable, "s", color="#9ecae1", markersize=3)
+    axes.plot([r[0] / 1000.0 for r in rows], [r[1] for r in rows], "o-", color="#d62728", label="optimal direction")
+    axes.plot([], [], "s", color="#9ecae1", label="acceptable directions")
+    axes.set_xlabel("programmed feed (m/min)")
+    axes.set_ylabel("machining direction θ from X (°)")
+    axes.set_ylim(-5, 185)
+    axes.set_yticks(range(0, 181, 30))
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="center right", fontsize=8)
+
+
+def save_directions_over_feeds(rows, path, title):
+    figure = new_figure(9, 5)
+    axes = figure.add_subplot(1, 1, 1)
+    draw_directions_over_feeds(axes, rows)
+    axes.set_title(title, fontsize=10)
+    figure.tight_layout()
+    figure.savefig(path)
+    return path
+
+
+def draw_direction_map(axes, points, angles_deg, values, optimal_deg=None, arrows=600):
+    """Arrows of the best local direction at the sample points, coloured by G_pmax, in plan."""
+    points, angles, values = np.asarray(points), np.radians(np.asarray(angles_deg)), np.asarray(values)
+    step = max(1, len(points) // arrows)
+    p, a, v = points[::step], angles[::step], values[::step]
+    span = float(np.ptp(points[:, 0]) + np.ptp(points[:, 1])) / 2 or 1.0
+    length = 0.6 * span / np.sqrt(len(p))
+    quiver = axes.quiver(p[:, 0], p[:, 1], np.cos(a), np.sin(a), v, angles="xy", scale_units="xy",
+                         scale=1.0 / length, pivot="middle", headwidth=0, headlength=0, headaxislength=0,
+                         width=0.004, cmap="viridis")
+    if optimal_deg is not None:
+        c = points[:, :2].mean(axis=0)
+        d = np.array([np.cos(np.radians(optimal_deg)), np.sin(np.radians(optimal_deg))]) * span * 0.45
+        axes.annotate("", xy=c + d, xytext=c - d, arrowprops=dict(arrowstyle="<->", color="#d62728", lw=2.5))
+    axes.set_aspect("equal")
+    return quiver
+
+
+def draw_direction_rate(axes, result):
+    """The beams' intersection: min over the points of G_p/G_pmax per direction, the optimum marked."""
+    axes.plot(result.angles_deg, result.rate, color="#1f77b4")
+    axes.axvline(result.angle_deg, color="#d62728", label="θ* = %.0f°, α* = %.3f" % (result.angle_deg, result.alpha))
+    axes.axhline(result.reported_alpha, color="grey", linestyle=":", label="α = %.2f" % result.reported_alpha)
+    axes.set_ylim(0, 1.05)
+    axes.set_xlabel("direction θ from X (°)")
+    axes.set_ylabel("min over the points of G_p / G_pmax")
+    axes.set_xlim(0, 180)
+    axes.set_xticks(range(0, 181, 30))
+    times = np.asarray(result.predicted_time_s, dtype=float)
+    handles, labels = axes.get_legend_handles_labels()
+    if np.isfinite(times).any():
+        twin = axes.twinx()
+        twin.plot(result.angles_deg, np.where(np.isfinite(times), times, np.nan), "--", color="#9467bd")
+        twin.set_ylabel("predicted cutting time (s)", color="#9467bd")
+        line = axes.axvline(result.fastest_angle_deg, color="#9467bd", linestyle="--")
+        handles.append(line)
+        labels.append("least predicted time: %.0f°" % result.fastest_angle_deg)
+    axes.legend(handles, labels, fontsize=8, loc="lower left")
+
+
+def draw_direction_report(figure, result, title, scan=None, validation=None, stacked=False):
+    """Rate per direction, then the simulated validation, the feed scan or the map of local best directions:
+    side by side, or one above the other (`stacked`, for a narrow task panel)."""
+    figure.clear()
+    rows, columns = (2, 1) if stacked else (1, 2)
+    left, right = figure.add_subplot(rows, columns, 1), figure.add_subplot(rows, columns, 2)
+    draw_direction_rate(left, result)
+    if validation:
+        draw_direction_validation(right, validation, [("directional beams", result.angle_deg),
+                                                      ("least predicted time", result.fastest_angle_deg)])
+        right.set_title("parallel planes simulated on the machine", fontsize=9)
+    elif scan:
+        draw_directions_over_feeds(right, scan)
+        right.set_title("directions against the programmed feed", fontsize=9)
+    else:
+        quiver = draw_direction_map(right, result.points, result.best_angle_deg, result.fitness_max, result.angle_deg)
+        figure.colorbar(quiver, ax=right, label="G_pmax (mm²)")
+        right.set_title("best local direction; red: the optimum", fontsize=9)
+    figure.suptitle(title, fontsize=10)
+    figure.tight_layout()
+
+
+def save_direction_report(result, path, title, scan=None, validation=None):
+    figure = new_figure(13, 5)
+    draw_direction_report(figure, result, title, scan, validation)
+    figure.savefig(path)
+    return path
+
+
+def draw_direction_validation(axes, rows, marks=()):
+    """Simulated machining time of parallel planes against their angle (rows of simulated_directions), with
+    length/feed, the fastest marked, and `marks`: (label, angle) of the criteria's choices."""
+    angles = [row["angle_deg"] for row in rows]
+    simulated = [row["simulated_s"] for row in rows]
+    axes.plot(angles, simulated, "o-", label="simulated (feed-rate simulator)")
+    axes.plot(angles, [row["length_over_feed_s"] for row in rows], "s--", color="grey", label="length / feed")
+    colours = ["#d62728", "#9467bd", "#8c564b"]
+    for (label, angle), colour in zip(marks, colours):
+        axes.axvline(angle, color=colour, label="%s: %.0f°" % (label, angle))
+    best = angles[int(np.argmin(simulated))]
+    axes.axvline(best, color="#2ca02c", linestyle=":", lw=2, label="fastest simulated: %.0f° (%.1f s)"
+                 % (best, min(simulated)))
+    axes.set_xlabel("direction of the planes θ from X (°)")
+    axes.set_ylabel("machining time (s)")
+    axes.set_xticks(range(0, 181, 30))
+    axes.legend(fontsize=8)
+    axes.grid(True, alpha=0.3)
+
+
+def save_direction_validation(rows, marks, path, title):
+    figure = new_figure(9, 5)
+    axes = figure.add_subplot(1, 1, 1)
+    draw_direction_validation(axes, rows, marks)
+    axes.set_title(title, fontsize=10)
+    figure.tight_layout()
+    figure.savefig(path)
+    return path

@@ -76,3 +76,13 @@ def path_length(moves, rapid=False):
     steps = np.linalg.norm(np.diff(moves[:, :3], axis=0), axis=1)
     kind = moves[1:, 3] == (1.0 if rapid else 0.0)
     return float(steps[kind].sum())
+
+
+def moves_to_gcode(moves, feed_mm_min):
+    """Plain ISO G-code of `moves` (G0 where rapid, G1 at `feed_mm_min`), absolute, mm: what any of our
+    machine models reads, with the controller's default rounding tolerance."""
+    if not feed_mm_min > 0:
+        raise ValueError("feed %r mm/min must be positive" % (feed_mm_min,))
+    lines = ["G90 G17", "G1 F%g" % feed_mm_min]
+    lines += ["%s X%.4f Y%.4f Z%.4f" % ("G0" if rapid else "G1", x, y, z) for x, y, z, rapid in np.asarray(moves)]
+    return "\n".join(lines + ["M30", ""])

@@ -80,5 +80,30 @@ class GuidanceStudyExample(unittest.TestCase):
                 self.assertEqual(stream.read(4), b"\x89PNG")
 
 
+class MachiningDirectionExample(unittest.TestCase):
+    def test_both_cases_with_the_validation(self):
+        import csv
+        import math
+
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "machining_direction.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-3000:] + result.stderr[-2000:])
+        with open(os.path.join(out, "direction_case1_feeds.csv")) as stream:
+            case1 = [(float(r["feed_mm_min"]), float(r["optimal_deg"])) for r in csv.DictReader(stream)]
+        switching = math.sqrt(15.0 * 3000.0) * 60.0  # √((R + Ro)·a), mm/min
+        self.assertTrue(all(angle == 0.0 for feed, angle in case1 if feed < switching), case1)
+        self.assertTrue(all(angle != 0.0 for feed, angle in case1 if feed > switching), case1)
+        with open(os.path.join(out, "direction_case2_validation.csv")) as stream:
+            case2 = list(csv.DictReader(stream))
+        self.assertEqual([float(r["angle_deg"]) for r in case2], [float(a) for a in range(0, 181, 10)])
+        for row in case2:
+            self.assertGreater(float(row["simulated_s"]), float(row["length_over_feed_s"]))
+        fastest = min(case2, key=lambda r: float(r["simulated_s"]))
+        self.assertIn("fastest simulated %.0f°" % float(fastest["angle_deg"]), result.stdout)
+        for name in ("direction_case1_feeds.png", "direction_case2.png", "direction_case2_validation.png"):
+            with open(os.path.join(out, name), "rb") as stream:
+                self.assertEqual(stream.read(4), b"\x89PNG")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -5,7 +5,7 @@ import FreeCADGui
 from hsmplanner.resources import icon
 
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
-                 "HSM_ParallelPlaneFinishing", "HSM_FeedRateAnalysis"]
+                 "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis"]
 
 
 class CommandMasterBottomFeature:
@@ -103,10 +103,50 @@ class CommandFeedRateAnalysis:
         return obj
 
 
+class CommandMachiningDirection:
+    """The raster angle of parallel-plane finishing for the selected face, by directional beams."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("MachiningDirection"),
+            "MenuText": "Machining direction",
+            "ToolTip": "Choose the angle of parallel planes over the selected face: directional beams, the least "
+                       "predicted time, or planes simulated on the machine; arrows of the best local direction",
+        }
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    @staticmethod
+    def selected_face():
+        picked = [(s.Object, [name]) for s in FreeCADGui.Selection.getSelectionEx() for name in s.SubElementNames
+                  if name.startswith("Face")]
+        return picked[0] if len(picked) == 1 else None
+
+    def Activated(self):
+        from hsmplanner.app import direction_object
+        from hsmplanner.gui.view_providers import ViewProviderMachiningDirection
+
+        document = FreeCAD.ActiveDocument
+        document.openTransaction("Machining direction")
+        try:
+            obj = direction_object.create(document=document)
+            ViewProviderMachiningDirection(obj.ViewObject)
+            face = self.selected_face()
+            if face is not None:
+                obj.Face = face
+                obj.recompute()
+        finally:
+            document.commitTransaction()
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        return obj
+
+
 def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
     FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())
     FreeCADGui.addCommand("HSM_FeedRateAnalysis", CommandFeedRateAnalysis())
+    FreeCADGui.addCommand("HSM_MachiningDirection", CommandMachiningDirection())
     from hsmplanner.gui import finishing_ops_gui
 
     finishing_ops_gui.register_commands()

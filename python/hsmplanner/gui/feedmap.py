@@ -13,7 +13,8 @@ def _packed(rgb):
     return (r << 24) | (g << 16) | (b << 8) | 0xFF
 
 
-def _line_set(polylines, colors=None, width=2.0, pattern=None):
+def line_set(polylines, colors=None, width=2.0, pattern=None):
+    """Polylines in one colour each (RGB rows), or grey; lit by their own colour only."""
     group = coin.SoSeparator()
     style = coin.SoDrawStyle()
     style.lineWidth = width
@@ -54,15 +55,15 @@ def map_node(blocks, color_by):
     colors, scale = block_colors(blocks, color_by)
     cut = [p for p, c in zip(lines, cutting) if c]
     if cut:
-        root.addChild(_line_set(cut, colors[cutting], width=2.5))
+        root.addChild(line_set(cut, colors[cutting], width=2.5))
     rapid = [p for p, c in zip(lines, cutting) if not c]
     if rapid:
-        root.addChild(_line_set(rapid, None, width=1.0, pattern=0xF0F0))
+        root.addChild(line_set(rapid, None, width=1.0, pattern=0xF0F0))
     root.addChild(legend_node(*scale))
     return root
 
 
-def legend_node(low, high, unit):
+def legend_node(low, high, unit, title="mean reached feed", digits=0):
     """A vertical colour bar with labels at the right of the view, in normalised screen coordinates."""
     root = coin.SoSeparator()
     camera = coin.SoOrthographicCamera()
@@ -73,7 +74,7 @@ def legend_node(low, high, unit):
     light.model = coin.SoLightModel.BASE_COLOR
     root.addChild(camera)
     root.addChild(light)
-    x0, x1, y0, y1 = 0.86, 0.92, -0.6, 0.6  # at the right edge; labels to the left of the bar
+    x0, x1, y0, y1 = 0.86, 0.92, -0.8, 0.4  # at the right edge, below the navigation cube; labels to the left
     vertices, colors = [], []
     for k in range(LEGEND_STEPS):
         a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS
@@ -94,8 +95,8 @@ def legend_node(low, high, unit):
     text_colour.rgb = (1, 1, 1)
     root.addChild(text_colour)
     for value, y in ((low, y0), (0.5 * (low + high), 0.5 * (y0 + y1)), (high, y1)):
-        root.addChild(_label("%g %s" % (round(value, 0), unit), x0 - 0.02, y - 0.02))
-    root.addChild(_label("mean reached feed", x1, y1 + 0.06))
+        root.addChild(_label("%g %s" % (round(value, digits), unit), x0 - 0.02, y - 0.02))
+    root.addChild(_label(title, x1, y1 + 0.06))
     return root
 
 

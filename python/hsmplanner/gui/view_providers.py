@@ -82,10 +82,11 @@ class ViewProviderGuideCurveNet(_StatelessViewProvider):
         return True
 
 
-class ViewProviderFeedRateAnalysis(_StatelessViewProvider):
-    """The feed-rate map of the simulated path, with its legend."""
+class _AnalysisViewProvider(_StatelessViewProvider):
+    """An analysis drawn as one Coin scene (redrawn when its `REDRAW_ON` properties change), edited in its
+    task panel."""
 
-    ICON = "FeedRateAnalysis"
+    REDRAW_ON = ()
 
     def attach(self, view_object):
         from pivy import coin
@@ -104,21 +105,19 @@ class ViewProviderFeedRateAnalysis(_StatelessViewProvider):
         return mode
 
     def updateData(self, obj, prop):
-        if prop in ("TotalTime", "ColorBy"):
+        if prop in self.REDRAW_ON:
             self.redraw(obj)
 
     def onChanged(self, view_object, prop):
         pass
 
     def redraw(self, obj):
-        from .feedmap import map_node
-
         if not hasattr(self, "root"):
             return
         self.root.removeAllChildren()
-        result = obj.Proxy.ensure_result(obj) if obj.Proxy else None
-        if result is not None and len(result.blocks["line"]):
-            self.root.addChild(map_node(result.blocks, obj.ColorBy))
+        node = self.scene(obj) if obj.Proxy else None
+        if node is not None:
+            self.root.addChild(node)
 
     def doubleClicked(self, view_object):
         import FreeCADGui
@@ -129,9 +128,7 @@ class ViewProviderFeedRateAnalysis(_StatelessViewProvider):
     def setEdit(self, view_object, mode=0):
         import FreeCADGui
 
-        from .feedrate_panel import FeedRatePanel
-
-        FreeCADGui.Control.showDialog(FeedRatePanel(view_object.Object))
+        FreeCADGui.Control.showDialog(self.panel(view_object.Object))
         return True
 
     def unsetEdit(self, view_object, mode=0):
@@ -139,3 +136,38 @@ class ViewProviderFeedRateAnalysis(_StatelessViewProvider):
 
         FreeCADGui.Control.closeDialog()
         return True
+
+
+class ViewProviderFeedRateAnalysis(_AnalysisViewProvider):
+    """The feed-rate map of the simulated path, with its legend."""
+
+    ICON = "FeedRateAnalysis"
+    REDRAW_ON = ("TotalTime", "ColorBy")
+
+    def scene(self, obj):
+        from .feedmap import map_node
+
+        result = obj.Proxy.ensure_result(obj)
+        return map_node(result.blocks, obj.ColorBy) if result is not None and len(result.blocks["line"]) else None
+
+    def panel(self, obj):
+        from .feedrate_panel import FeedRatePanel
+
+        return FeedRatePanel(obj)
+
+
+class ViewProviderMachiningDirection(_AnalysisViewProvider):
+    """Strokes of the best local direction on the face, coloured by G_pmax, and the chosen direction."""
+
+    ICON = "MachiningDirection"
+    REDRAW_ON = ("ChosenAngle", "Arrows")
+
+    def scene(self, obj):
+        from .direction_view import direction_node
+
+        return direction_node(obj.Proxy.ensure_result(obj), obj.ChosenAngle.Value, obj.Arrows)
+
+    def panel(self, obj):
+        from .direction_panel import DirectionPanel
+
+        return DirectionPanel(obj)

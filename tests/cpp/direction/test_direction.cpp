@@ -163,3 +163,25 @@ TEST(Direction, FlatFaceTiesVerticalFaceAndTightScallopAreReported) {
   }
   EXPECT_THROW(optimalDirection(flat, case1(6000), DirectionSettings{50, 50, 2.0, 0.95}), InputError);
 }
+
+TEST(Direction, PredictedTimeOfPlanesOnASquareCountsPathAndReversals) {
+  const TopoDS_Face square = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), 0, 100, 0, 100).Face();
+  CuttingConditions c = case1(6000);
+  c.stopJerk = 5000.0;
+  const DirectionResult r = optimalDirection(square, c, DirectionSettings{});
+  // Flat: every plane steps p1 = √(8·Sz·Ro − fz²) at the programmed feed; 100/p1 planes, each with a run-out
+  // of a tool radius at both ends and one stop-and-go (jerk-limited at 5 m/s³: 2·√(v/J)).
+  const double fz = c.programmedFeedPerTooth(), p1 = std::sqrt(8.0 * c.scallop * c.toolRadius - fz * fz);
+  const double perPlane = 2.0 * c.toolRadius / c.programmedFeed + 2.0 * std::sqrt(c.programmedFeed / 5000.0);
+  const double expected = 100.0 * 100.0 / (p1 * c.programmedFeed) + 100.0 / p1 * perPlane;
+  EXPECT_NEAR(r.predictedTime[0], expected, 1e-6 * expected);
+  EXPECT_NEAR(r.predictedTime[90], expected, 1e-6 * expected);
+  EXPECT_GT(r.predictedTime[45], r.predictedTime[0] + 0.3 * 100.0 / p1 * perPlane);  // 141 mm of planes across
+  EXPECT_EQ(r.fastestAngleDeg, 0.0);  // 0° and 90° tie: the one nearest X
+}
+
+TEST(Direction, StopAndGoLossFollowsTheSCurve) {
+  EXPECT_DOUBLE_EQ(stopAndGoLoss(100.0, 2500.0, 0.0), 0.04);                        // v/a
+  EXPECT_DOUBLE_EQ(stopAndGoLoss(100.0, 2500.0, 5000.0), 2.0 * std::sqrt(0.02));    // a never reached
+  EXPECT_DOUBLE_EQ(stopAndGoLoss(500.0, 1000.0, 1e6), 0.5 + 0.001);                 // v/a + a/J
+}

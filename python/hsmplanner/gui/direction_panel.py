@@ -1,0 +1,201 @@
+"""Task panel of a machining direction analysis: the face, tool, scallop, feed (or feed range), machine; the
+three choices (beams, least predicted time, fastest simulated) with their plots; and a button that sets the
+angle of a Parallel plane finishing operation."""
+import FreeCADGui
+from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
+from matplotlib.figure import Figure
+from PySide2 import QtWidgets
+
+from hsmplanner import plots
+from hsmplanner.app import direction_object
+from hsmplanner.app.direction_object import CHOICES, FEED_FROM
+
+ACTIVE_PANEL = None  # the open panel, for tests and macros
+
+# (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
+_NUMBERS = [
+    ("ToolDiameter", "Ball diameter", 0.1, 100.0, 3, " mm"),
+    ("Teeth", "Teeth Z", 1, 20, 0, ""),
+    ("Scallop", "Scallop Sz", 0.0001, 1.0, 4, " mm"),
+    ("Feed", "Programmed feed", 1.0, 100000.0, 0, " mm/min"),
+    ("FeedPerTooth", "Feed per tooth fz", 0.001, 5.0, 3, " mm"),
+    ("SpindleSpeed", "Spindle speed N", 1.0, 100000.0, 0, " rpm"),
+    ("Acceleration", "a_max (no machine)", 0.01, 100.0, 2, " m/s²"),
+    ("ScanFrom", "Feed scan from", 0.0, 100000.0, 0, " mm/min"),
+    ("ScanTo", "Feed scan to", 0.0, 100000.0, 0, " mm/min"),
+    ("ScanSteps", "Feeds in the scan", 2, 100, 0, ""),
+    ("ValidationStep", "Simulate planes every", 1.0, 90.0, 1, " °"),
+]
+
+
+def _value(obj, name):
+    value = getattr(obj, name)
+    return value.Value if hasattr(value, "Value") else value
+
+
+def summary_text(obj):
+    """The result as people read it."""
+    if not obj.PointCount:
+        return "Not computed yet."
+    lines = ["<b>Chosen (%s): %.0f°</b> — predicted %.0f s of planes" % (obj.Choice.lower(), obj.ChosenAngle.Value,
+                                                                        obj.PredictedTime),
+             "Directional beams: %.0f°, α* %.3f; acceptable %s" % (obj.OptimalAngle.Value, obj.BeamAlpha,
+                                                                 obj.AcceptableRanges or "—"),
+             "Least predicted time: %.0f°" % obj.LeastTimeAngle.Value]
+    if obj.ValidationTimes:
+        best = min(zip(obj.ValidationTimes, obj.ValidationAngles))
+        lines.append("Fastest simulated: %.0f° (%.1f s)" % (best[1], best[0]))
+    lines += ["⚠ " + warning for warning in obj.Warnings]
+    return "<br>".join(lines)
+
+
+class DirectionPanel:
+    def __init__(self, obj):
+        global ACTIVE_PANEL
+        self.obj = obj
+        self.form = self._build_form()
+        self.refresh()
+        ACTIVE_PANEL = self
+
+    def _build_form(self):
+        form = QtWidgets.QWidget()
+        form.setWindowTitle("Machining direction")
+        form.setMinimumWidth(440)
+        layout = QtWidgets.QVBoxLayout(form)
+        settings = QtWidgets.QFormLayout()
+        face_row = QtWidgets.QHBoxLayout()
+        self.face_label = QtWidgets.QLabel()
+        self.face_button = QtWidgets.QPushButton("Use selected face")
+        face_row.addWidget(self.face_label, 1)
+        face_row.addWidget(self.face_button)
+        settings.addRow("Face", face_row)
+        self.feed_from = QtWidgets.QComboBox()
+        self.feed_from.addItems(FEED_FROM)
+        settings.addRow("Feed from", self.feed_from)
+        self.numbers = {}
+        for name, label, low, high, decimals, suffix in _NUMBERS:
+            box = QtWidgets.QSpinBox() if decimals == 0 and high <= 100 else QtWidgets.QDoubleSpinBox()
+            if isinstance(box, QtWidgets.QDoubleSpinBox):
+                box.setDecimals(decimals)
+            box.setRange(low, high)
+            box.setSuffix(suffix)
+            self.numbers[name] = box
+            settings.addRow(label, box)
+        self.machine = QtWidgets.QComboBox()
+        self.machine.addItems(self.obj.getEnumerationsOfProperty("Machine"))
+        settings.addRow("Machine", self.machine)
+        self.use_jerk = QtWidgets.QCheckBox("limit the real feed by the axes' jerk too")
+        settings.addRow("", self.use_jerk)
+        self.choice = QtWidgets.QComboBox()
+        self.choice.addItems(CHOICES)
+        settings.addRow("Apply", self.choice)
+        layout.addLayout(settings)
+        self.compute_button = QtWidgets.QPushButton("Compute")
+        layout.addWidget(self.compute_button)
+        self.summary = QtWidgets.QLabel()
+        self.summary.setWordWrap(True)
+        layout.addWidget(self.summary)
+        self.figure = Figure(figsize=(5.5, 6.5), dpi=80)
+        self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.setMinimumHeight(520)
+        layout.addWidget(self.canvas)
+        apply_row = QtWidgets.QHBoxLayout()
+        self.operations = QtWidgets.QComboBox()
+        self.apply_button = QtWidgets.QPushButton("Set the angle of")
+        apply_row.addWidget(self.apply_button)
+        apply_row.addWidget(self.operations, 1)
+        layout.addLayout(apply_row)
+        self.message = QtWidgets.QLabel()
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.face_button.clicked.connect(self.use_selected_face)
+        self.compute_button.clicked.connect(self.compute)
+        self.apply_button.clicked.connect(self.apply)
+        self.load_form()
+        return form
+
+    def load_form(self):
+        self.face_label.setText(self.face_text())
+        self.feed_from.setCurrentText(self.obj.FeedFrom)
+        for name, box in self.numbers.items():
+            box.setValue(_value(self.obj, name))
+        self.machine.setCurrentText(self.obj.Machine)
+        self.use_jerk.setChecked(self.obj.UseJerk)
+        self.choice.setCurrentText(self.obj.Choice)
+        self.list_operations()
+
+    def face_text(self):
+        if not self.obj.Face:
+            return "none: select a face in the 3D view"
+        part, subs = self.obj.Face
+        return "%s, %s" % (part.Label, ", ".join([subs] if isinstance(subs, str) else subs))
+
+    def list_operations(self):
+        self.operations.clear()
+        self.operation_objects = [o for o in self.obj.Document.Objects if direction_object.is_parallel_plane_finishing(o)]
+        self.operations.addItems([o.Label for o in self.operation_objects])
+        self.apply_button.setEnabled(bool(self.operation_objects))
+
+    def use_selected_face(self):
+        picked = [(s.Object, name) for s in FreeCADGui.Selection.getSelectionEx() for name in s.SubElementNames
+                  if name.startswith("Face")]
+        if len(picked) != 1:
+            self.message.setText("Select exactly one face in the 3D view (%d selected)." % len(picked))
+            return False
+        self.obj.Face = (picked[0][0], [picked[0][1]])
+        self.face_label.setText(self.face_text())
+        return True
+
+    def store_form(self):
+        self.obj.FeedFrom = self.feed_from.currentText()
+        for name, box in self.numbers.items():
+            setattr(self.obj, name, box.value())
+        self.obj.Machine = self.machine.currentText()
+        self.obj.UseJerk = self.use_jerk.isChecked()
+        self.obj.Choice = self.choice.currentText()
+
+    def compute(self):
+        """Store the form and compute; a bad input is shown, not raised (the document stays as it was)."""
+        self.store_form()
+        if self.obj.Choice == CHOICES[2]:
+            self.message.setText("Finishing and simulating planes every %g°…" % self.obj.ValidationStep)
+            QtWidgets.QApplication.processEvents()
+        try:
+            self.obj.Proxy.execute(self.obj)
+        except (ValueError, RuntimeError) as error:
+            self.message.setText("Not computed: %s" % error)
+            return False
+        self.obj.purgeTouched()
+        self.message.setText("")
+        self.refresh()
+        return True
+
+    def refresh(self):
+        self.summary.setText(summary_text(self.obj))
+        proxy = self.obj.Proxy
+        if getattr(proxy, "result", None) is None:
+            return
+        plots.draw_direction_report(self.figure, proxy.result, "", scan=proxy.scan, validation=proxy.validation,
+                                    stacked=True)
+        self.canvas.draw()
+
+    def apply(self):
+        operation = self.operation_objects[self.operations.currentIndex()]
+        try:
+            angle = direction_object.apply_to_operation(self.obj, operation)
+        except ValueError as error:
+            self.message.setText(str(error))
+            return None
+        self.message.setText("%s: planes at %.0f°, %d passes." % (operation.Label, angle, operation.Passes))
+        return angle
+
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Close)
+
+    def reject(self):
+        global ACTIVE_PANEL
+        ACTIVE_PANEL = None
+        FreeCADGui.Control.closeDialog()
+        if FreeCADGui.ActiveDocument is not None:
+            FreeCADGui.ActiveDocument.resetEdit()
+        return True

@@ -1,0 +1,127 @@
+"""GUI test: pick the valleys face, run the Machining direction command, see the arrows and plots, change the
+feed in the panel, validate by simulation, and set the angle of a Parallel plane finishing operation."""
+import os
+import sys
+
+import FreeCAD
+import FreeCADGui as Gui
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import OUT, GuiRun  # noqa: E402
+
+run = GuiRun()
+state = {}
+
+
+def panel():
+    from hsmplanner.gui import direction_panel
+
+    return direction_panel.ACTIVE_PANEL
+
+
+def save_panel_plots(run, name):
+    """The panel's plots as the user sees them (the panel scrolls them out of the window's screenshot)."""
+    image = os.path.join(OUT, name + ".png")
+    panel().figure.savefig(image)
+    run.screenshots.append(image)
+
+
+@run.step
+def valleys_with_a_job(run):
+    from hsmplanner.app import finishing, finishing_ops, surfaces
+    from hsmplanner.app.compat import create_job
+
+    Gui.activateWorkbench("HSMPlannerWorkbench")
+    document = FreeCAD.newDocument("Direction")
+    part = document.addObject("Part::Feature", "Valleys")
+    part.Shape = surfaces.valleys()
+    document.recompute()
+    job = create_job([part])
+    finishing.ball_end_controller(job, 10.0, 6000.0)
+    state["planes"] = finishing_ops.CreateParallelPlaneFinishing("Planes", parentJob=job)
+    state["planes"].Face = (job.Model.Group[0], ["Face1"])
+    document.recompute()
+    state["part"] = part
+    for obj in (job, state["planes"]):
+        obj.ViewObject.Visibility = False
+    run.process_events(0.5)
+
+
+@run.step
+def command_on_the_selected_face(run):
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(state["part"], "Face1")
+    run.process_events(0.3)
+    Gui.runCommand("HSM_MachiningDirection")
+    run.process_events(1.0)
+    analysis = FreeCAD.ActiveDocument.getObject("MachiningDirection")
+    state["analysis"] = analysis
+    run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
+    run.check("panel open", panel() is not None)
+    run.check("arrows drawn", analysis.ViewObject.Proxy.root.getNumChildren() > 0)
+    run.check("face taken from the selection", analysis.Face[1] == ("Face1",) or analysis.Face[1] == ["Face1"],
+              str(analysis.Face))
+    run.check("summary shows the beams", "Directional beams" in panel().summary.text(), panel().summary.text())
+    run.notes["beams deg, alpha"] = [analysis.OptimalAngle.Value, round(analysis.BeamAlpha, 3)]
+    state["part"].ViewObject.Transparency = 40
+    Gui.Selection.clearSelection()
+    Gui.activeDocument().activeView().viewTop()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("direction_beams_top")
+    save_panel_plots(run, "direction_panel_beams")
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("direction_beams_iso")
+
+
+@run.step
+def feed_scan_in_the_panel(run):
+    p = panel()
+    p.numbers["ScanFrom"].setValue(2000.0)
+    p.numbers["ScanTo"].setValue(12000.0)
+    p.numbers["ScanSteps"].setValue(6)
+    run.check("computed with a scan", p.compute(), p.message.text())
+    run.process_events(0.5)
+    analysis = state["analysis"]
+    run.check("scan of 6 feeds", len(analysis.ScanFeeds) == 6, str(list(analysis.ScanFeeds)))
+    run.notes["scan optimum deg"] = list(analysis.ScanOptimalAngles)
+    run.screenshot("direction_feed_scan")
+    save_panel_plots(run, "direction_panel_scan")
+
+
+@run.step
+def bad_input_is_shown_not_raised(run):
+    p = panel()
+    p.numbers["ScanFrom"].setValue(9000.0)
+    p.numbers["ScanTo"].setValue(3000.0)
+    run.check("refused", not p.compute())
+    run.check("message names the input", "ScanFrom" in p.message.text(), p.message.text())
+    p.numbers["ScanFrom"].setValue(0.0)
+    p.numbers["ScanTo"].setValue(0.0)
+
+
+@run.step
+def fastest_simulated_applied_to_the_operation(run):
+    p = panel()
+    p.numbers["ValidationStep"].setValue(45.0)
+    p.choice.setCurrentText("Fastest simulated")
+    run.check("validated", p.compute(), p.message.text())
+    analysis = state["analysis"]
+    run.check("five angles simulated", list(analysis.ValidationAngles) == [0.0, 45.0, 90.0, 135.0, 180.0],
+              str(list(analysis.ValidationAngles)))
+    run.check("operation listed", p.operations.count() == 1 and p.apply_button.isEnabled())
+    angle = p.apply()
+    run.process_events(0.5)
+    planes = state["planes"]
+    run.check("angle applied", angle is not None and abs(planes.Angle.Value - analysis.ChosenAngle.Value) < 1e-9,
+              "%s %s" % (planes.Angle, analysis.ChosenAngle))
+    run.check("operation recomputed", planes.isValid() and planes.Passes > 100, str(planes.State))
+    run.notes["fastest simulated deg, times s"] = [analysis.ChosenAngle.Value,
+                                                   [round(t, 1) for t in analysis.ValidationTimes]]
+    run.screenshot("direction_validation_applied")
+    save_panel_plots(run, "direction_panel_validation")
+    p.reject()
+    run.process_events(0.3)
+
+
+run.start()
