@@ -34,7 +34,7 @@ def case1(out):
     switching = math.sqrt((10.0 + 5.0) * 3000.0) * 60.0
     plots.save_directions_over_feeds(
         rows, os.path.join(out, "direction_case1_feeds.png"),
-        "Case 1: cylinder R10 about Y, Ø10 ball, Sz 0.01 mm, a_max 3 m/s², Z 4 at 18,000 rpm; "
+        "Case 1: cylinder R10 about Y, Ø10 ball, Sz 0.01 mm, a_max 3 m/s², Z 4 at 18,000 rpm\n"
         "the optimum leaves 0° above √((R+Ro)·a) = %.0f mm/min" % switching)
     with open(os.path.join(out, "direction_case1_feeds.csv"), "w", newline="") as stream:
         writer = csv.writer(stream)

@@ -245,7 +245,7 @@ def draw_directions_over_feeds(axes, rows):
     axes.set_ylim(-5, 185)
     axes.set_yticks(range(0, 181, 30))
     axes.grid(True, alpha=0.3)
-    axes.legend(loc="center right", fontsize=8)
+    axes.legend(loc="center left", fontsize=8)
 
 
 def save_directions_over_feeds(rows, path, title):
