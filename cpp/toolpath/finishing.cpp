@@ -8,7 +8,6 @@
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
-#include <Geom_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
