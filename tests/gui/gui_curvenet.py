@@ -15,7 +15,7 @@ state = {}
 def panel():
     from hsmplanner.gui import guide_curve_net_panel
 
-    return guide_curve_net_panel.ACTIVE_PANEL
+    return guide_curve_net_panel.GuideCurveNetPanel.active
 
 
 def curve_count(run):

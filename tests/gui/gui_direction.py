@@ -16,7 +16,7 @@ state = {}
 def panel():
     from hsmplanner.gui import direction_panel
 
-    return direction_panel.ACTIVE_PANEL
+    return direction_panel.DirectionPanel.active
 
 
 def save_panel_plots(run, name):

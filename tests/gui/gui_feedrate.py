@@ -15,7 +15,7 @@ state = {}
 def panel():
     from hsmplanner.gui import feedrate_panel
 
-    return feedrate_panel.ACTIVE_PANEL
+    return feedrate_panel.FeedRatePanel.active
 
 
 @run.step

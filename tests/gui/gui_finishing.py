@@ -91,7 +91,7 @@ def feed_rate_maps_of_both(run):
         run.notes["%s simulated s / length-feed s" % name] = [round(analysis.TotalTime, 1), round(analysis.NaiveTime, 1)]
         from hsmplanner.gui import feedrate_panel
 
-        feedrate_panel.ACTIVE_PANEL.reject()
+        feedrate_panel.FeedRatePanel.active.reject()
         show_only(state["part"], analysis)
         state["part"].ViewObject.Transparency = 75
         Gui.Selection.clearSelection()

@@ -117,14 +117,9 @@ class CommandMachiningDirection:
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
 
-    @staticmethod
-    def selected_face():
-        picked = [(s.Object, [name]) for s in FreeCADGui.Selection.getSelectionEx() for name in s.SubElementNames
-                  if name.startswith("Face")]
-        return picked[0] if len(picked) == 1 else None
-
     def Activated(self):
         from hsmplanner.app import direction_object
+        from hsmplanner.gui.task_panel import selected_faces
         from hsmplanner.gui.view_providers import ViewProviderMachiningDirection
 
         document = FreeCAD.ActiveDocument
@@ -132,9 +127,9 @@ class CommandMachiningDirection:
         try:
             obj = direction_object.create(document=document)
             ViewProviderMachiningDirection(obj.ViewObject)
-            face = self.selected_face()
-            if face is not None:
-                obj.Face = face
+            faces = selected_faces()
+            if len(faces) == 1:
+                obj.Face = (faces[0][0], [faces[0][1]])
                 obj.recompute()
         finally:
             document.commitTransaction()

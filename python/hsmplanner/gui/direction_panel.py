@@ -1,7 +1,6 @@
 """Task panel of a machining direction analysis: the face, tool, scallop, feed (or feed range), machine; the
 three choices (beams, least predicted time, fastest simulated) with their plots; and a button that sets the
 angle of a Parallel plane finishing operation."""
-import FreeCADGui
 from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
 from matplotlib.figure import Figure
 from PySide2 import QtWidgets
@@ -10,7 +9,7 @@ from hsmplanner import plots
 from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM
 
-ACTIVE_PANEL = None  # the open panel, for tests and macros
+from .task_panel import AnalysisPanel, selected_faces
 
 # (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
 _NUMBERS = [
@@ -49,20 +48,9 @@ def summary_text(obj):
     return "<br>".join(lines)
 
 
-class DirectionPanel:
-    def __init__(self, obj):
-        global ACTIVE_PANEL
-        self.obj = obj
-        self.form = self._build_form()
-        self.refresh()
-        ACTIVE_PANEL = self
-
+class DirectionPanel(AnalysisPanel):
     def _build_form(self):
-        form = QtWidgets.QWidget()
-        form.setWindowTitle("Machining direction")
-        form.setMinimumWidth(440)
-        layout = QtWidgets.QVBoxLayout(form)
-        settings = QtWidgets.QFormLayout()
+        form, layout, settings = self.new_form("Machining direction", 440)
         face_row = QtWidgets.QHBoxLayout()
         self.face_label = QtWidgets.QLabel()
         self.face_button = QtWidgets.QPushButton("Use selected face")
@@ -89,7 +77,6 @@ class DirectionPanel:
         self.choice = QtWidgets.QComboBox()
         self.choice.addItems(CHOICES)
         settings.addRow("Apply", self.choice)
-        layout.addLayout(settings)
         self.compute_button = QtWidgets.QPushButton("Compute")
         layout.addWidget(self.compute_button)
         self.summary = QtWidgets.QLabel()
@@ -137,8 +124,7 @@ class DirectionPanel:
         self.apply_button.setEnabled(bool(self.operation_objects))
 
     def use_selected_face(self):
-        picked = [(s.Object, name) for s in FreeCADGui.Selection.getSelectionEx() for name in s.SubElementNames
-                  if name.startswith("Face")]
+        picked = selected_faces()
         if len(picked) != 1:
             self.message.setText("Select exactly one face in the 3D view (%d selected)." % len(picked))
             return False
@@ -188,14 +174,3 @@ class DirectionPanel:
             return None
         self.message.setText("%s: planes at %.0f°, %d passes." % (operation.Label, angle, operation.Passes))
         return angle
-
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Close)
-
-    def reject(self):
-        global ACTIVE_PANEL
-        ACTIVE_PANEL = None
-        FreeCADGui.Control.closeDialog()
-        if FreeCADGui.ActiveDocument is not None:
-            FreeCADGui.ActiveDocument.resetEdit()
-        return True

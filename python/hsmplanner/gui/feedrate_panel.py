@@ -1,5 +1,4 @@
 """Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
-import FreeCADGui
 from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
 from matplotlib.figure import Figure
 from PySide2 import QtWidgets
@@ -7,7 +6,7 @@ from PySide2 import QtWidgets
 from hsmplanner import feedsim, plots
 from hsmplanner.app.feedrate_object import COLOR_MODES
 
-ACTIVE_PANEL = None  # the open panel, for tests and macros
+from .task_panel import AnalysisPanel
 
 
 def summary_rows(summary):
@@ -28,20 +27,9 @@ def summary_rows(summary):
     return rows
 
 
-class FeedRatePanel:
-    def __init__(self, obj):
-        global ACTIVE_PANEL
-        self.obj = obj
-        self.form = self._build_form()
-        self.refresh()
-        ACTIVE_PANEL = self
-
+class FeedRatePanel(AnalysisPanel):
     def _build_form(self):
-        form = QtWidgets.QWidget()
-        form.setWindowTitle("Feed-rate analysis")
-        form.setMinimumWidth(420)
-        layout = QtWidgets.QVBoxLayout(form)
-        settings = QtWidgets.QFormLayout()
+        form, layout, settings = self.new_form("Feed-rate analysis", 420)
         self.machine = QtWidgets.QComboBox()
         self.machine.addItems(self.obj.getEnumerationsOfProperty("Machine"))
         self.machine.setCurrentText(self.obj.Machine)
@@ -50,7 +38,6 @@ class FeedRatePanel:
         self.color_by.addItems(COLOR_MODES)
         self.color_by.setCurrentText(self.obj.ColorBy)
         settings.addRow("Colours show", self.color_by)
-        layout.addLayout(settings)
         self.simulate_button = QtWidgets.QPushButton("Simulate")
         layout.addWidget(self.simulate_button)
         self.table = QtWidgets.QTableWidget(0, 2)
@@ -106,14 +93,3 @@ class FeedRatePanel:
         paths = feedsim.write_report(result, folder, stem, self.obj.Source.Label)
         self.message.setText("written: " + ", ".join(paths))
         return paths
-
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Close)
-
-    def reject(self):
-        global ACTIVE_PANEL
-        ACTIVE_PANEL = None
-        FreeCADGui.Control.closeDialog()
-        if FreeCADGui.ActiveDocument is not None:
-            FreeCADGui.ActiveDocument.resetEdit()
-        return True

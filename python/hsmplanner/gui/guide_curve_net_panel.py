@@ -11,8 +11,7 @@ from hsmplanner.app.guide_curve_net import MODES, NetParameters, build_guide_cur
 from hsmplanner.app.guide_curve_net_object import linked_shape
 
 from .preview import NetPreview
-
-ACTIVE_PANEL = None  # the open panel, for tests and macros
+from .task_panel import TaskPanel
 
 K_SLIDER_SCALE = 100     # slider units per unit of K
 STEP_SLIDER_SCALE = 2    # slider units per mm of P (0.5 mm resolution)
@@ -52,9 +51,8 @@ class _LinkField:
         self.text.setText("%s: %s" % (obj.Label, ", ".join(subs)) if obj is not None else "")
 
 
-class GuideCurveNetPanel:
+class GuideCurveNetPanel(TaskPanel):
     def __init__(self, obj, created=False):
-        global ACTIVE_PANEL
         self.obj, self.created = obj, created
         self.preview = NetPreview()
         self.last_result = None
@@ -67,7 +65,7 @@ class GuideCurveNetPanel:
         self.form = self._build_form()
         self._load(obj)
         FreeCADGui.Selection.addObserver(self)
-        ACTIVE_PANEL = self
+        self.opened()
         self.schedule()
 
     # --- form ---------------------------------------------------------------------------------------------
@@ -249,12 +247,8 @@ class GuideCurveNetPanel:
         return True
 
     def _close(self):
-        global ACTIVE_PANEL
         self._timer.stop()
         FreeCADGui.Selection.removeObserver(self)
         FreeCADGui.Selection.removeSelectionGate()
         self.preview.detach()
-        ACTIVE_PANEL = None
-        FreeCADGui.Control.closeDialog()
-        if FreeCADGui.ActiveDocument is not None:
-            FreeCADGui.ActiveDocument.resetEdit()
+        self.close_edit()
