@@ -7,6 +7,8 @@ import FreeCAD
 
 from hsmplanner import direction, feedsim
 
+from .proxy_state import InMemoryResult
+
 TYPE_NAME = "App::FeaturePython"
 DEFAULT_MACHINE = "mikron-ucp710-840d"
 ACCELERATION_ONLY = "(acceleration only)"
@@ -75,7 +77,9 @@ def face_shape(link):
         raise ValueError("%s has no %s: pick the face again" % (obj.Label, faces[0])) from None
 
 
-class MachiningDirection:
+class MachiningDirection(InMemoryResult):
+    """The per-point result, the feed scan and the simulated planes are computed again after reopening."""
+
     def __init__(self, obj):
         for prop_type, name, group, tooltip, default in _INPUTS:
             obj.addProperty(prop_type, name, group, tooltip)
@@ -89,7 +93,7 @@ class MachiningDirection:
         obj.addProperty("App::PropertyInteger", "Arrows", "Display", "arrows drawn on the face, at most")
         obj.Arrows = 600
         obj.Proxy = self
-        self.result, self.scan, self.validation = None, [], []
+        self.forget()
 
     def feed_mm_min(self, obj):
         return obj.Feed if obj.FeedFrom == FEED_FROM[0] else obj.FeedPerTooth.Value * obj.Teeth * obj.SpindleSpeed
@@ -159,25 +163,10 @@ class MachiningDirection:
         scan_options = {k: v for k, v in options.items() if k != "feed_mm_min"}
         return direction.directions_over_feeds(face, feeds, **scan_options)
 
-    def ensure_result(self, obj):
-        """The per-point result, computed again after the document was reopened."""
-        if getattr(self, "result", None) is None and obj.Face:
-            self.execute(obj)
-        return self.result
+    def has_input(self, obj):
+        return bool(obj.Face)
 
-    def onDocumentRestored(self, obj):
-        self.result, self.scan, self.validation = None, [], []
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        self.result, self.scan, self.validation = None, [], []
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
+    def forget(self):
         self.result, self.scan, self.validation = None, [], []
 
 

@@ -7,6 +7,7 @@ import FreeCAD
 from hsmplanner import feedsim
 
 from .feedrate import is_simulatable, simulate_object
+from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
 DEFAULT_MACHINE = "mikron-ucp710-840d"
@@ -28,7 +29,9 @@ _OUTPUTS = [
 ]
 
 
-class FeedRateAnalysis:
+class FeedRateAnalysis(InMemoryResult):
+    """The per-block result is simulated again after the document was reopened."""
+
     def __init__(self, obj):
         obj.addProperty("App::PropertyLink", "Source", "Feed-rate analysis", "Job or operation to simulate")
         obj.addProperty("App::PropertyEnumeration", "Machine", "Feed-rate analysis", "machine model")
@@ -67,26 +70,8 @@ class FeedRateAnalysis:
         obj.Report = self.result.summary.to_json(obj.Source.Label)
         obj.TotalTime = summary["total_time_s"]  # last: the view provider redraws on it
 
-    def ensure_result(self, obj):
-        """The per-block result, simulated again after the document was reopened."""
-        if getattr(self, "result", None) is None and is_simulatable(obj.Source):
-            self.execute(obj)
-        return self.result
-
-    def onDocumentRestored(self, obj):
-        self.result = None
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        self.result = None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        self.result = None
+    def has_input(self, obj):
+        return is_simulatable(obj.Source)
 
 
 def create(source, machine=DEFAULT_MACHINE, document=None, name="FeedRateAnalysis"):

@@ -7,6 +7,7 @@ import FreeCAD
 import Part
 
 from .guide_curve_net import DEFAULT_MODE, MODES, NetParameters, build_guide_curve_net
+from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
 
@@ -51,7 +52,7 @@ def linked_shape(link, name, faces=False):
     return shapes[0] if len(shapes) == 1 else Part.Compound(shapes)
 
 
-class GuideCurveNet:
+class GuideCurveNet(NoSavedState):
     def __init__(self, obj):
         for prop_type, name, tooltip, default in _INPUTS:
             obj.addProperty(prop_type, name, "Guide curve net", tooltip)
@@ -95,18 +96,6 @@ class GuideCurveNet:
         spacing = [b - a for a, b in zip(stations, stations[1:])]
         obj.PlaneSpacing = "%d planes, %.2f to %.2f mm apart" % (len(stations), min(spacing), max(spacing))
         obj.Warnings = list(result.net.warnings)
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
 
 def create(document=None, boundary_1=None, boundary_2=None, bottom_face=None, name="GuideCurveNet", **values):

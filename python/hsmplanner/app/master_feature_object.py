@@ -6,6 +6,7 @@ bottom face and of the boundary edges are published as read-only properties for 
 import FreeCAD
 
 from .master_feature import MasterFeatureParameters, make_master_bottom_feature
+from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
 
@@ -24,7 +25,7 @@ _TOPOLOGY = [
 ]
 
 
-class MasterBottomFeature:
+class MasterBottomFeature(NoSavedState):
     def __init__(self, obj):
         for prop_type, name, tooltip, default in _DIMENSIONS:
             obj.addProperty(prop_type, name, "Master bottom feature", tooltip)
@@ -43,19 +44,6 @@ class MasterBottomFeature:
         feature = make_master_bottom_feature(self.parameters(obj))
         obj.Shape = feature.shape
         obj.BottomFace, obj.Boundary1, obj.Boundary2 = feature.bottom_face, feature.boundary_1, feature.boundary_2
-
-    # No state beyond the properties: saved documents store none (0.20 and 1.x spellings).
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
 
 def create(document=None, name="MasterBottomFeature"):

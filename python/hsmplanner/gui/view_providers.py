@@ -1,10 +1,11 @@
 """View providers of HSM Planner document objects (their class names are saved in documents)."""
+from hsmplanner.app.proxy_state import NoSavedState
 from hsmplanner.resources import icon
 
 from .colors import CURVE_COLORS, REGION_BORDER, area_color
 
 
-class _StatelessViewProvider:
+class _StatelessViewProvider(NoSavedState):
     """Common part: the object, the icon, nothing to save (0.20 and 1.x spellings)."""
 
     ICON = "HSMPlanner"
@@ -17,18 +18,6 @@ class _StatelessViewProvider:
 
     def getIcon(self):
         return icon(self.ICON)
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
 
 class ViewProviderMasterBottomFeature(_StatelessViewProvider):
