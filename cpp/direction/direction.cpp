@@ -147,7 +147,10 @@ namespace {
 // neighbour: the smallest p1 along it. The face is cut into strips along the planes, one point spacing
 // wide; in each, the path length per plan area is 1/min p1, stretched by the slope along d, at each point's
 // real feed fz·Z·N; each plane adds its run-outs and a reversal. Infinite where a strip gets no step.
-double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDeg, const CuttingConditions& c) {
+// `steps` and `feeds`: p1 and the real fz of each point along that direction.
+double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDeg,
+                  Eigen::Ref<const Eigen::VectorXd> steps, Eigen::Ref<const Eigen::VectorXd> feeds,
+                  const CuttingConditions& c) {
   const double theta = thetaDeg * M_PI / 180.0;
   const Eigen::Vector2d along(std::cos(theta), std::sin(theta)), across(-along.y(), along.x());
   double area = 0.0, lo = kInfinity, hi = -kInfinity;
@@ -160,12 +163,13 @@ double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDe
   const double width = std::max(std::sqrt(area / points.size()), 1e-9);
   const size_t strips = static_cast<size_t>((hi - lo) / width) + 1;
   std::vector<double> minStep(strips, kInfinity), timeAtUnitStep(strips, 0.0);
-  for (const SurfacePoint* m : points) {
-    const size_t s = std::min(strips - 1, static_cast<size_t>((across.dot(m->point.head<2>()) - lo) / width));
-    const Performance p = performance(*m, thetaDeg, c);
-    const double slope = along.dot(m->normal.head<2>()) / m->normal.z();
-    minStep[s] = std::min(minStep[s], p.transverseStep);
-    timeAtUnitStep[s] += m->planArea * std::sqrt(1.0 + slope * slope) / (p.feedPerTooth * c.teeth * c.spindleSpeed);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const SurfacePoint& m = *points[i];
+    const size_t s = std::min(strips - 1, static_cast<size_t>((across.dot(m.point.head<2>()) - lo) / width));
+    const double slope = along.dot(m.normal.head<2>()) / m.normal.z();
+    const Eigen::Index at = static_cast<Eigen::Index>(i);
+    minStep[s] = std::min(minStep[s], steps(at));
+    timeAtUnitStep[s] += m.planArea * std::sqrt(1.0 + slope * slope) / (feeds(at) * c.teeth * c.spindleSpeed);
   }
   double time = 0.0, planes = 0.0;
   for (size_t s = 0; s < strips; ++s) {
@@ -223,19 +227,24 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
   const int count = static_cast<int>(std::lround(180.0 / s.angleStepDeg));
   for (int j = 0; j < count; ++j) result.anglesDeg.push_back(180.0 * j / count);
   result.rate.assign(count, kInfinity);
-  result.points.resize(static_cast<Eigen::Index>(points.size()), 3);
+  const Eigen::Index n = static_cast<Eigen::Index>(points.size());
+  result.points.resize(n, 3);
+  Eigen::MatrixXd steps(n, count), feeds(n, count);  // p1 and the real fz, per point and direction
   std::vector<double> fitness(count);
-  for (size_t i = 0; i < points.size(); ++i) {
+  for (Eigen::Index i = 0; i < n; ++i) {
     double best = 0.0;
     int at = 0;
     for (int j = 0; j < count; ++j) {
-      fitness[j] = performance(*points[i], result.anglesDeg[j], c).fitness;
+      const Performance p = performance(*points[i], result.anglesDeg[j], c);
+      steps(i, j) = p.transverseStep;
+      feeds(i, j) = p.feedPerTooth;
+      fitness[j] = p.fitness;
       if (fitness[j] > best) {
         best = fitness[j];
         at = j;
       }
     }
-    result.points.row(static_cast<Eigen::Index>(i)) = points[i]->point.transpose();
+    result.points.row(i) = points[i]->point.transpose();
     result.bestAngleDeg.push_back(result.anglesDeg[at]);
     result.fitnessMax.push_back(best);
     if (best <= 0.0) continue;
@@ -251,7 +260,8 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
     if (!std::isfinite(r)) r = 0.0;
   result.alpha = *std::max_element(result.rate.begin(), result.rate.end());
   result.optimalAngleDeg = tieBrokenOptimum(result.anglesDeg, result.rate, result.alpha);
-  for (int j = 0; j < count; ++j) result.predictedTime.push_back(planesTime(points, result.anglesDeg[j], c));
+  for (int j = 0; j < count; ++j)
+    result.predictedTime.push_back(planesTime(points, result.anglesDeg[j], steps.col(j), feeds.col(j), c));
   std::vector<double> speed(count);  // 1/T, so that the same tie rule picks the least time
   for (int j = 0; j < count; ++j) speed[j] = result.predictedTime[j] > 0.0 ? 1.0 / result.predictedTime[j] : 0.0;
   result.fastestAngleDeg = tieBrokenOptimum(result.anglesDeg, speed, *std::max_element(speed.begin(), speed.end()));
