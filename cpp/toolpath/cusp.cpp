@@ -23,8 +23,9 @@ Vector2 planDirection(const std::vector<Vector2>& plan, size_t k) {
 }
 }  // namespace
 
-CuspGauge::CuspGauge(const SurfaceBallDrop& ball, const geometry::FaceDropper& face, double toolRadius)
-    : ball_(ball), face_(face), radius_(toolRadius) {}
+CuspGauge::CuspGauge(const SurfaceBallDrop& ball, double toolRadius) : ball_(ball), radius_(toolRadius) {
+  ball_.surface()->Bounds(u0_, u1_, v0_, v1_);
+}
 
 std::vector<BallContact> CuspGauge::contacts(const std::vector<Vector2>& plan) const {
   std::vector<BallContact> result(plan.size());
@@ -48,8 +49,6 @@ std::optional<Vector3> CuspGauge::centreAt(const Vector2& plan, SurfaceBallDrop:
 // Newton on the closest point of the surface from (u, v).
 std::optional<double> CuspGauge::heightAboveFace(const Vector3& q, double u, double v, const Vector3& up) const {
   const Handle(Geom_Surface)& surface = ball_.surface();
-  double u0, u1, v0, v1;
-  surface->Bounds(u0, u1, v0, v1);
   for (int iteration = 0; iteration < 20; ++iteration) {
     gp_Pnt p;
     gp_Vec su, sv, suu, svv, suv;
@@ -60,10 +59,10 @@ std::optional<double> CuspGauge::heightAboveFace(const Vector3& q, double u, dou
     const double det = a * c - b * b;
     if (std::abs(det) < 1e-18) return std::nullopt;
     const double du = (c * f1 - b * f2) / det, dv = (a * f2 - b * f1) / det;
-    u = std::clamp(u - du, u0, u1);
-    v = std::clamp(v - dv, v0, v1);
+    u = std::clamp(u - du, u0_, u1_);
+    v = std::clamp(v - dv, v0_, v1_);
     if (std::abs(du) + std::abs(dv) < 1e-12 * (1.0 + std::abs(u) + std::abs(v))) {
-      if (!face_.inside(u, v)) return std::nullopt;
+      if (!ball_.inside(u, v)) return std::nullopt;
       const gp_Pnt foot = surface->Value(u, v);
       const Vector3 offset = q - Vector3(foot.X(), foot.Y(), foot.Z());
       return offset.dot(up) >= 0.0 ? offset.norm() : -offset.norm();

@@ -9,7 +9,6 @@
 // spacing of contact points would crowd the passes, and where the next pass bends out of the plane.
 #pragma once
 
-#include "geometry/face_drop.hpp"
 #include "toolpath/surface_drop.hpp"
 
 #include <Eigen/Core>
@@ -31,7 +30,7 @@ struct BallContact {
 
 class CuspGauge {
 public:
-  CuspGauge(const SurfaceBallDrop& ball, const geometry::FaceDropper& face, double toolRadius);
+  CuspGauge(const SurfaceBallDrop& ball, double toolRadius);
 
   // The contacts of the ball above plan positions along a pass (not dropped where Newton finds none).
   std::vector<BallContact> contacts(const std::vector<Eigen::Vector2d>& plan) const;
@@ -47,8 +46,8 @@ private:
   std::optional<Eigen::Vector3d> centreAt(const Eigen::Vector2d& plan, SurfaceBallDrop::Result& state) const;
 
   const SurfaceBallDrop& ball_;
-  const geometry::FaceDropper& face_;
   double radius_;
+  double u0_ = 0.0, u1_ = 0.0, v0_ = 0.0, v1_ = 0.0;  // the surface's parameter bounds
 };
 
 }  // namespace hsm::toolpath

@@ -58,8 +58,7 @@ public:
     addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
     exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius);
-    dropper_ = std::make_unique<geometry::FaceDropper>(bottom_, Vector3::UnitZ());
-    gauge_ = std::make_unique<CuspGauge>(*exact_, *dropper_, settings.toolRadius);
+    gauge_ = std::make_unique<CuspGauge>(*exact_, settings.toolRadius);
     Bnd_Box box;
     BRepBndLib::Add(part, box);
     double x0, y0, z0, x1, y1, z1;
@@ -70,7 +69,6 @@ public:
     faceBox.Get(x0, y0, z0, x1, y1, z1);
     faceMin_ = Vector2(x0, y0);
     faceMax_ = Vector2(x1, y1);
-    faceTop_ = z1;
     extension_ = settings.extension >= 0.0 ? settings.extension : settings.toolRadius;
   }
 
@@ -241,9 +239,8 @@ private:
   TopoDS_Face bottom_;
   std::unique_ptr<BallDropCutter> cutter_;
   std::unique_ptr<SurfaceBallDrop> exact_;
-  std::unique_ptr<geometry::FaceDropper> dropper_;
   std::unique_ptr<CuspGauge> gauge_;
-  double safeHeight_ = 0.0, faceTop_ = 0.0, extension_ = 0.0;
+  double safeHeight_ = 0.0, extension_ = 0.0;
   Vector2 faceMin_, faceMax_;
 };
 

@@ -24,6 +24,8 @@ public:
   // (u, v) in `guess` when `haveGuess`; false when Newton does not converge (no contact on the surface).
   bool drop(double x, double y, Result& result, bool haveGuess) const;
   const Handle(Geom_Surface)& surface() const { return surface_; }
+  // (u, v) inside the face's boundaries.
+  bool inside(double u, double v) const { return dropper_.inside(u, v); }
 
 private:
   bool newton(double x, double y, double& u, double& v, Eigen::Vector3d& centre) const;

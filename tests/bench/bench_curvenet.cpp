@@ -10,10 +10,7 @@ using namespace hsm;
 using namespace hsm::curvenet;
 
 namespace {
-const test::MasterFeature& feature() {
-  static const test::MasterFeature loaded = test::loadMasterFeature();
-  return loaded;
-}
+constexpr auto feature = test::masterFeature;  // loaded once per program
 
 NetSettings settings(bool onFace) {
   NetSettings s;

@@ -12,10 +12,7 @@ using namespace hsm;
 using namespace hsm::curvenet;
 
 namespace {
-const test::MasterFeature& feature() {
-  static const test::MasterFeature loaded = test::loadMasterFeature();
-  return loaded;
-}
+constexpr auto feature = test::masterFeature;  // loaded once per program
 
 NetSettings onBottom() {
   NetSettings settings;

@@ -43,4 +43,9 @@ MasterFeature loadMasterFeature() {
   return feature;
 }
 
+const MasterFeature& masterFeature() {
+  static const MasterFeature loaded = loadMasterFeature();
+  return loaded;
+}
+
 }  // namespace hsm::test

@@ -16,4 +16,7 @@ struct MasterFeature {
 // Loads tests/data/master_bottom_feature.{brep,json}; names like "Face4" count as FreeCAD does.
 MasterFeature loadMasterFeature();
 
+// The same, loaded once per program.
+const MasterFeature& masterFeature();
+
 }  // namespace hsm::test

@@ -4,12 +4,9 @@
 #include "curvenet/curvenet.hpp"
 #include "geometry/face_drop.hpp"
 #include "support/master_feature.hpp"
+#include "support/surfaces.hpp"
 #include "toolpath/finishing.hpp"
 
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <GeomAPI_PointsToBSplineSurface.hxx>
-#include <Geom_BSplineSurface.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <gtest/gtest.h>
@@ -21,10 +18,7 @@ using namespace hsm;
 using namespace hsm::toolpath;
 
 namespace {
-const test::MasterFeature& feature() {
-  static const test::MasterFeature loaded = test::loadMasterFeature();
-  return loaded;
-}
+constexpr auto feature = test::masterFeature;  // loaded once per program
 
 int bottomIndex() {
   TopTools_IndexedMapOfShape faces;
@@ -136,23 +130,10 @@ TEST(Finishing, ParallelPlanesKeepTheCuspAndNeverGouge) {
     }, angle == 0.0 ? "planes at 0°" : "planes at 30°");
 }
 
-// Valleys running at 45° (z = h/2·(1 − cos 2πu/λ) across them) on a 40 × 40 mm face: passes along X
-// cross them at a slant, so the contact of a station slides along the pass from one pass to the next.
-TopoDS_Face slantedValleys() {
-  const int n = 33;
-  const double size = 40.0, height = 3.0, wavelength = 18.0;  // concave radius λ²/(2π²h) = 5.5 mm at the bottoms
-  TColgp_Array2OfPnt grid(1, n, 1, n);
-  for (int i = 1; i <= n; ++i)
-    for (int j = 1; j <= n; ++j) {
-      const double x = size * (i - 1) / (n - 1), y = size * (j - 1) / (n - 1), u = (y - x) / std::sqrt(2.0);
-      grid.SetValue(i, j, gp_Pnt(x, y, 0.5 * height * (1.0 - std::cos(2.0 * M_PI * u / wavelength))));
-    }
-  const Handle(Geom_BSplineSurface) surface = GeomAPI_PointsToBSplineSurface(grid, 3, 8, GeomAbs_C2, 1e-6).Surface();
-  return BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
-}
-
 TEST(Finishing, PassesAcrossSlantedValleysKeepTheCuspWithoutCrowding) {
-  const TopoDS_Face face = slantedValleys();
+  // Valleys at 45° on 40 × 40 mm: passes along X cross them at a slant, so the contact of a station slides
+  // along the pass from one pass to the next. Concave radius 18²/(2π²·3) = 5.5 mm at the bottoms.
+  const TopoDS_Face face = test::slantedValleys(40.0, 3.0, 18.0, 33);
   FinishingSettings s = settings();
   s.tolerance = 0.001;
   const Toolpath path = parallelPlaneFinishing(face, 1, 0.0, s);
