@@ -21,8 +21,17 @@
 //   minimum gap to the target (or reaches its other side) in any plane but the pinches is dropped and the net
 //   ends. The
 //   default gap, 2 mm, the radius of the paper's 4 mm ball, reproduces the curve counts of Tables 1 and 2.
+//
+// Bounded work (issue 10): a net has at most kMaxPlanes planes (a step P that would need more is refused
+// with the step that fits), P at least kMinStep, the fit tolerance in [kMinFitTolerance, 1] mm, and at
+// most maxCurvesPerNet curves per net: a K that would need more (each curve closes the share K of the
+// gap left, so about log(gap/width)/log(1 − K) curves) is refused before any is built. A minimum gap as
+// wide as the area is refused (every plane would be a pinch and no net could stop). Boundaries drawn off
+// the face (a sketch above it) are put on the face along the tool axis, with a warning, so that the stop
+// rule measures on the face. Construction points that fall outside the face (over a hole) are warned of.
 #pragma once
 
+#include "common/progress.hpp"
 #include "geometry/curve_sampling.hpp"
 
 #include <Eigen/Geometry>
@@ -37,6 +46,10 @@ namespace hsm::curvenet {
 
 using geometry::PointArray;
 
+inline constexpr int kMaxPlanes = 2000;
+inline constexpr double kMinStep = 0.01;          // mm
+inline constexpr double kMinFitTolerance = 1e-4;  // mm
+
 struct NetSettings {
   double step = 5.0;                          // P, mm: largest distance between two planes
   std::optional<Eigen::Vector3d> direction;   // machining direction; default: mean chord of the boundaries,
@@ -46,7 +59,8 @@ struct NetSettings {
   double fitTolerance = 0.01;                 // mm, B-spline approximation of the points
   double minGap = 2.0;                        // mm, stop rule of the iterative nets
   double pinchFraction = 0.25;                // planes narrower than this share of the widest one are pinches
-  int maxCurvesPerNet = 200;                  // a guard; the stop rule ends real nets long before
+  int maxCurvesPerNet = 200;                  // a K that would need more curves is refused
+  ProgressCallback progress;                  // per curve built; false cancels (throws Cancelled)
 };
 
 enum class CurveRole { Boundary, Median, Intermediate };

@@ -8,6 +8,7 @@
 #include "curvenet/layout.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 #include "geometry/bspline.hpp"
 
 #include <algorithm>
@@ -86,9 +87,9 @@ std::vector<double> adaptedStations(const GuideShape& g1, const GuideShape& g2, 
 void checkSettings(const GuidanceSettings& settings) {
   detail::checkRatio(settings.kMedian, "K of the median");
   detail::checkRatio(settings.k, "K of the intermediate curves");
-  if (!(settings.minStep > 0.0) || settings.minStep > settings.net.step)
-    throw InputError("smallest step " + std::to_string(settings.minStep) + " mm must be positive and at most the "
-                     "initial step P0 (" + std::to_string(settings.net.step) + " mm)");
+  if (!(settings.minStep >= kMinStep) || settings.minStep > settings.net.step)
+    throw InputError("smallest step " + mm(settings.minStep) + " must be at least " + mm(kMinStep) +
+                     " and at most the initial step P0 (" + mm(settings.net.step) + "), e.g. 0.5 mm");
 }
 
 // The smallest distance between a curve and its target in planes where the boundaries are at least the

@@ -1,6 +1,7 @@
 #include "curvenet/layout.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 #include "geometry/bspline.hpp"
 
 
@@ -12,13 +13,6 @@ namespace hsm::curvenet::detail {
 namespace {
 constexpr double kExtentTolerance = 1e-3;  // mm: extents that differ by less are the same
 constexpr double kTouchTolerance = 1e-6;   // mm: boundaries closer than this have no side
-
-std::string mm(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value << " mm";
-  return text.str();
-}
 
 Eigen::Vector3d chord(const Handle(Geom_BSplineCurve)& curve, const Eigen::Vector3d& axis) {
   const gp_Vec v(curve->StartPoint(), curve->EndPoint());
@@ -61,7 +55,12 @@ void requireBSpline(const Handle(Geom_BSplineCurve)& curve, const char* name) {
 }  // namespace
 
 std::vector<double> evenStations(double from, double to, double step) {
-  const int intervals = std::max(1, static_cast<int>(std::ceil((to - from) / step - 1e-9)));
+  const double needed = std::ceil((to - from) / step - 1e-9);
+  if (!(needed <= kMaxPlanes))
+    throw InputError("step P = " + mm(step) + " gives " + number(needed) + " planes over the " + mm(to - from) +
+                     " the boundaries share; the limit is " + std::to_string(kMaxPlanes) + " planes: use P of at least " +
+                     mm((to - from) / kMaxPlanes) + " (the paper uses 5 mm)");
+  const int intervals = std::max(1, static_cast<int>(needed));
   std::vector<double> stations(intervals + 1);
   for (int i = 0; i <= intervals; ++i) stations[i] = from + (to - from) * i / intervals;
   return stations;
@@ -72,11 +71,15 @@ Layout::Layout(const Boundaries& boundaries, const NetSettings& settings, std::v
     : settings_(settings), input_(boundaries) {
   requireBSpline(boundaries.b1, "boundary 1");
   requireBSpline(boundaries.b2, "boundary 2");
-  if (!(settings.step > 0.0) || !std::isfinite(settings.step))
-    throw InputError("step P = " + mm(settings.step) + " must be positive: the paper uses 5 mm");
-  if (!(settings.fitTolerance > 0.0))
-    throw InputError("fit tolerance " + mm(settings.fitTolerance) + " must be positive, e.g. 0.01 mm");
-  if (!(settings.minGap >= 0.0)) throw InputError("minimum gap " + mm(settings.minGap) + " must be 0 or more");
+  if (!(settings.step >= kMinStep) || !std::isfinite(settings.step))
+    throw InputError("step P = " + mm(settings.step) + " must be at least " + mm(kMinStep) + ": the paper uses 5 mm");
+  if (!(settings.fitTolerance >= kMinFitTolerance && settings.fitTolerance <= 1.0))
+    throw InputError("fit tolerance " + mm(settings.fitTolerance) + " must be in [" + mm(kMinFitTolerance) +
+                     ", 1 mm], e.g. 0.01 mm");
+  if (!(settings.minGap >= 0.0) || !std::isfinite(settings.minGap))
+    throw InputError("minimum gap " + mm(settings.minGap) + " must be 0 or more, e.g. the tool radius 2 mm");
+  if (settings.maxCurvesPerNet < 1 || settings.maxCurvesPerNet > 10000)
+    throw InputError("the curve limit per net " + std::to_string(settings.maxCurvesPerNet) + " must be 1 to 10000");
   if (!(settings.pinchFraction >= 0.0 && settings.pinchFraction < 1.0))
     throw InputError("pinch fraction " + std::to_string(settings.pinchFraction) + " must be in [0, 1), e.g. 0.25");
   frame_ = makeFrame(warnings);
@@ -148,6 +151,7 @@ void Layout::checkBoundaries(std::vector<std::string>& warnings) {
   const auto cuts2 = b2_->cut(stations_);
   b1Points_ = cuts1.points;
   b2Points_ = cuts2.points;
+  putBoundariesOnFace(warnings);
   for (const auto& [cuts, name] : {std::pair{&cuts1, "B1"}, std::pair{&cuts2, "B2"}})
     if (!cuts->multiCutStations.empty())
       warnings.push_back(std::to_string(cuts->multiCutStations.size()) + " plane(s) cut " + name +
@@ -155,6 +159,11 @@ void Layout::checkBoundaries(std::vector<std::string>& warnings) {
                          "): the cut that continues the curve was used");
   contact_.assign(stations_.size(), 0);
   const double widest = (b2Points_ - b1Points_).rowwise().norm().maxCoeff();
+  if (settings_.minGap >= widest && widest > kTouchTolerance)
+    throw InputError("minimum gap " + mm(settings_.minGap) + " is as wide as the area (the boundaries are at most " +
+                     mm(widest) + " apart): no curve could be built; use a gap well below that, e.g. the tool "
+                     "radius (2 mm)");
+  widest_ = widest;
   const double pinch = std::max(settings_.minGap, settings_.pinchFraction * widest);
   int side = 0;
   for (size_t i = 0; i < stations_.size(); ++i) {
@@ -176,6 +185,21 @@ void Layout::checkBoundaries(std::vector<std::string>& warnings) {
                        "): the stop rule ignores them and the curves crowd there");
 }
 
+// Boundaries drawn off the face (a sketch above it) have their points put on it, so that distances to them
+// are measured on the face; the curves built from them do not change (their points are put on the face
+// along the axis anyway).
+void Layout::putBoundariesOnFace(std::vector<std::string>& warnings) {
+  if (!dropper_) return;
+  for (auto [points, name] : {std::pair{&b1Points_, "B1"}, std::pair{&b2Points_, "B2"}}) {
+    const PointArray drawn = *points;
+    dropper_->drop(*points);
+    const double off = (*points - drawn).rowwise().norm().maxCoeff();
+    if (off > 0.01)
+      warnings.push_back(std::string(name) + " lies up to " + mm(off) + " off the bottom face along the tool axis: "
+                         "its points were put on the face (pick the face's own edges to avoid this)");
+  }
+}
+
 PointArray Layout::pointsOn(const NetCurve& curve, const std::vector<double>& stations,
                             std::vector<std::string>& warnings) const {
   const bool layoutPlanes = &stations == &stations_ || stations == stations_;
@@ -194,10 +218,22 @@ PointArray Layout::pointsOn(const NetCurve& curve, const std::vector<double>& st
 
 void Layout::dropOnFace(PointArray& points, std::vector<std::string>& warnings) const {
   if (!dropper_) return;
-  const int failed = dropper_->drop(points);
+  long failed = 0, outside = 0;
+  bool haveGuess = false;
+  double u = 0.0, v = 0.0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const bool dropped = dropper_->dropOne(points.row(i), u, v, haveGuess);
+    haveGuess = haveGuess || dropped;
+    if (!dropped) ++failed;
+    // The end planes meet the face's own edges, where inside or not cannot be told: only the others count.
+    else if (i > 0 && i + 1 < points.rows() && !dropper_->inside(u, v)) ++outside;
+  }
   if (failed > 0)
     warnings.push_back(std::to_string(failed) + " point(s) could not be put on the bottom face along the tool axis "
                        "(the face is vertical or absent there): they stay between the curves");
+  if (outside > 0)
+    warnings.push_back(std::to_string(outside) + " point(s) of a curve lie over a hole or past the edge of the "
+                       "bottom face: the curve crosses it there (the finishing bridges holes at the face's level)");
 }
 
 bool Layout::tooClose(const PointArray& start, const PointArray& candidate, const PointArray& target) const {

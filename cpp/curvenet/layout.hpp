@@ -24,6 +24,8 @@ public:
   const std::vector<double>& stations() const { return stations_; }
   const PlaneCutter& boundary(int which) const { return which == 1 ? *b1_ : *b2_; }
   std::pair<double, double> commonExtent() const { return {from_, to_}; }
+  // Largest distance between the boundaries in the planes, mm.
+  double widest() const { return widest_; }
 
   // Points of a curve of this net in the given planes (the construction points when they match).
   PointArray pointsOn(const NetCurve& curve, const std::vector<double>& stations,
@@ -38,12 +40,13 @@ private:
   Frame makeFrame(std::vector<std::string>& warnings) const;
   void placeStations(std::optional<std::vector<double>> stations);
   void checkBoundaries(std::vector<std::string>& warnings);
+  void putBoundariesOnFace(std::vector<std::string>& warnings);
 
   NetSettings settings_;
   Frame frame_;
   Boundaries input_;
   std::unique_ptr<PlaneCutter> b1_, b2_;
-  double from_ = 0.0, to_ = 0.0;
+  double from_ = 0.0, to_ = 0.0, widest_ = 0.0;
   std::vector<double> stations_;
   PointArray b1Points_, b2Points_;
   std::vector<char> contact_;  // per station: the boundaries pinch there (ignored by the stop rule)

@@ -2,9 +2,11 @@
 #include "curvenet/layout.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace hsm::curvenet {
@@ -58,19 +60,35 @@ NetCurve buildCurve(const Layout& layout, const NetCurve& start, const NetCurve&
 
 namespace {
 
+// Refuses a K with which a net would need more curves than the limit: each curve closes the share K of
+// the gap left to its target, so from a width W about log(gap/W)/log(1 − K) curves end it.
+void checkCurveCount(const Layout& layout, double k, double width) {
+  const double gap = std::max(layout.settings().minGap, 1e-3);
+  if (width <= gap) return;
+  const double curves = std::log(gap / width) / std::log(1.0 - k);
+  const int limit = layout.settings().maxCurvesPerNet;
+  if (curves > limit) {
+    const double kMin = 1.0 - std::pow(gap / width, 1.0 / limit);
+    throw InputError("K = " + number(k) + " would build about " + number(std::ceil(curves)) + " curves across " +
+                     mm(width) + " (each closes " + number(100.0 * k) + " % of the gap left) and the limit is " +
+                     std::to_string(limit) + ": use K of at least " + number(std::ceil(kMin * 1000.0) / 1000.0) +
+                     " or a larger minimum gap");
+  }
+}
+
 // Grows a net from `start` towards `target` until the stop rule drops a curve (see curvenet.hpp).
 std::vector<NetCurve> growNet(const Layout& layout, const NetCurve& start, const NetCurve& target, double k,
-                              int net, std::vector<std::string>& warnings) {
+                              int net, std::vector<std::string>& warnings, const std::function<void(double)>& progress) {
   std::vector<NetCurve> built;
   const std::vector<double>& stations = layout.stations();
   const PointArray targetPoints = layout.pointsOn(target, stations, warnings);
   const NetCurve* current = &start;
   for (int rank = 1;; ++rank) {
-    if (rank > layout.settings().maxCurvesPerNet) {
-      warnings.push_back("net from " + start.label + " stopped at " +
-                         std::to_string(layout.settings().maxCurvesPerNet) + " curves (the limit)");
-      break;
-    }
+    if (rank > layout.settings().maxCurvesPerNet)
+      throw ComputationError("the net from " + start.label + " reached " +
+                             std::to_string(layout.settings().maxCurvesPerNet) + " curves without coming within the "
+                             "minimum gap of " + target.label + ": use a larger K or minimum gap");
+    progress(double(rank));
     NetCurve candidate = buildCurve(layout, *current, target, k, stations, warnings);
     const PointArray startPoints = layout.pointsOn(*current, stations, warnings);
     if (layout.tooClose(startPoints, candidate.points, targetPoints)) break;
@@ -134,21 +152,34 @@ NetCurve intermediateCurve(const Handle(Geom_BSplineCurve)& ca, const Handle(Geo
 
 CurveNet curveNet(const Boundaries& boundaries, double k, NetMode mode, const NetSettings& settings) {
   if (mode != NetMode::Median) checkRatio(k, "K");
+  if (mode != NetMode::Median && !(settings.minGap > 0.0))
+    throw InputError("minimum gap " + mm(settings.minGap) + " must be positive: with no gap a net halves the "
+                     "distance to its target for ever; use the tool radius, e.g. 2 mm");
   CurveNet net;
   const Layout layout(boundaries, settings, net.warnings);
   net.stations = layout.stations();
   net.direction = layout.frame().direction;
   const NetCurve b1 = boundaryCurve(layout, 1), b2 = boundaryCurve(layout, 2);
+  const bool halves = mode == NetMode::MedianToBoundaries || mode == NetMode::BoundariesToMedian;
+  const double width = layout.widest() * (halves ? 0.5 : 1.0);
+  if (mode != NetMode::Median) checkCurveCount(layout, k, width);
+  // Progress per curve built, against the count the stop rule should reach.
+  const double gap = std::max(settings.minGap, 1e-3);
+  const double perNet = width > gap && mode != NetMode::Median ? std::log(gap / width) / std::log(1.0 - k) : 1.0;
+  const double expected = std::max(1.0, (halves ? 2.0 : 1.0) * perNet);
+  ProgressReporter reporter(settings.progress, "curve net");
+  int built = 0;
+  const std::function<void(double)> progress = [&](double) { reporter(std::min(1.0, ++built / expected)); };
   auto& curves = net.curves;
   curves.push_back(b1);
   switch (mode) {
     case NetMode::B1ToB2: {
-      const auto grown = growNet(layout, b1, b2, k, 1, net.warnings);
+      const auto grown = growNet(layout, b1, b2, k, 1, net.warnings, progress);
       append(curves, grown.begin(), grown.end());
       break;
     }
     case NetMode::B2ToB1: {
-      const auto grown = growNet(layout, b2, b1, k, 2, net.warnings);
+      const auto grown = growNet(layout, b2, b1, k, 2, net.warnings, progress);
       append(curves, grown.rbegin(), grown.rend());
       break;
     }
@@ -157,8 +188,8 @@ CurveNet curveNet(const Boundaries& boundaries, double k, NetMode mode, const Ne
       break;
     case NetMode::MedianToBoundaries: {
       const NetCurve median = medianCurve(layout, 0.5, net.warnings);
-      const auto half1 = growNet(layout, median, b1, k, 1, net.warnings);
-      const auto half2 = growNet(layout, median, b2, k, 2, net.warnings);
+      const auto half1 = growNet(layout, median, b1, k, 1, net.warnings, progress);
+      const auto half2 = growNet(layout, median, b2, k, 2, net.warnings, progress);
       append(curves, half1.rbegin(), half1.rend());
       curves.push_back(median);
       append(curves, half2.begin(), half2.end());
@@ -166,8 +197,8 @@ CurveNet curveNet(const Boundaries& boundaries, double k, NetMode mode, const Ne
     }
     case NetMode::BoundariesToMedian: {
       const NetCurve median = medianCurve(layout, 0.5, net.warnings);
-      const auto half1 = growNet(layout, b1, median, k, 1, net.warnings);
-      const auto half2 = growNet(layout, b2, median, k, 2, net.warnings);
+      const auto half1 = growNet(layout, b1, median, k, 1, net.warnings, progress);
+      const auto half2 = growNet(layout, b2, median, k, 2, net.warnings, progress);
       append(curves, half1.begin(), half1.end());
       curves.push_back(median);
       append(curves, half2.rbegin(), half2.rend());
@@ -175,6 +206,7 @@ CurveNet curveNet(const Boundaries& boundaries, double k, NetMode mode, const Ne
     }
   }
   curves.push_back(b2);
+  reporter(1.0);
   return net;
 }
 

@@ -107,6 +107,9 @@ PlaneCutter::Cuts PlaneCutter::cut(const std::vector<double>& stations) const {
 std::pair<Handle(Geom_BSplineCurve), double> fitCurve(const PointArray& points, double tolerance) {
   const int n = static_cast<int>(points.rows());
   if (n < 2) throw InputError("an intermediate curve needs at least 2 planes; use a smaller step P");
+  if (n > kMaxPlanes + 1)  // the layout refuses such steps; a guard for OCCT's approximation, which fails past it
+    throw InputError("an intermediate curve on " + std::to_string(n) + " planes exceeds the limit of " +
+                     std::to_string(kMaxPlanes) + ": use a larger step P");
   TColgp_Array1OfPnt array(1, n);
   for (int i = 0; i < n; ++i) array.SetValue(i + 1, gp_Pnt(points(i, 0), points(i, 1), points(i, 2)));
   const int degree = std::min(5, n - 1);

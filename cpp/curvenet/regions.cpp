@@ -1,6 +1,9 @@
 #include "curvenet/regions.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
+#include "geometry/bspline.hpp"
+#include "geometry/face_drop.hpp"
 #include "curvenet/plane_cuts.hpp"
 
 #include <BRepAlgoAPI_Splitter.hxx>
@@ -78,6 +81,34 @@ int enclosingArea(const CurveNet& net, const std::vector<detail::PlaneCutter>& c
   return area;
 }
 
+// Refuses a face the net does not lie on: the net's inner curves (or its boundaries when it has none) are
+// sampled and put on the face along the axis; they must land inside it, within a tolerance of the curve.
+void checkNetOnFace(const CurveNet& net, const TopoDS_Face& face, const Eigen::Vector3d& axis, double size) {
+  const geometry::FaceDropper dropper(face, axis.normalized());
+  const bool inner = net.curves.size() > 2;
+  const double tolerance = 0.5 + 0.01 * size;
+  long samples = 0, landed = 0;
+  double farthest = 0.0;
+  for (size_t i = inner ? 1 : 0; i < (inner ? net.curves.size() - 1 : net.curves.size()); ++i) {
+    PointArray points = geometry::sampleByArcLength(Handle(Geom_Curve)(net.curves[i].curve), 21);
+    const PointArray drawn = points;
+    const std::vector<char> inside = dropper.dropAndClassify(points);
+    for (Eigen::Index k = 1; k + 1 < points.rows(); ++k) {  // the ends may lie on the face's edges
+      ++samples;
+      if (!inside[static_cast<size_t>(k)]) continue;
+      ++landed;
+      farthest = std::max(farthest, (points.row(k) - drawn.row(k)).norm());
+    }
+  }
+  if (landed < samples / 2)
+    throw InputError("the net does not lie on this face: " + std::to_string(samples - landed) + " of " +
+                     std::to_string(samples) + " points of its curves are outside it seen along the tool axis; pass "
+                     "the bottom face the net was built on");
+  if (farthest > tolerance)
+    throw InputError("the net does not lie on this face: its curves are up to " + mm(farthest) + " from it along the "
+                     "tool axis (tolerance " + mm(tolerance) + "); pass the bottom face the net was built on");
+}
+
 }  // namespace
 
 std::vector<AreaRegion> areaRegions(const CurveNet& net, const TopoDS_Face& face, const Eigen::Vector3d& toolAxis) {
@@ -87,6 +118,7 @@ std::vector<AreaRegion> areaRegions(const CurveNet& net, const TopoDS_Face& face
   BRepBndLib::Add(face, box);
   const double size = std::sqrt(box.SquareExtent());
   const gp_Vec axis(toolAxis.x(), toolAxis.y(), toolAxis.z());
+  checkNetOnFace(net, face, toolAxis, size);
 
   try {
     BRepAlgoAPI_Splitter splitter;

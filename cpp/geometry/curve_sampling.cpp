@@ -21,6 +21,10 @@ constexpr double kChainTolerance = 1e-4;  // mm
 TopoDS_Wire toWire(const TopoDS_Shape& curve) {
   if (curve.IsNull()) throw InputError("curve shape is null: pass an edge or a wire");
   if (curve.ShapeType() == TopAbs_WIRE) return TopoDS::Wire(curve);
+  // A face's edges form its outline, never a guide by themselves: taking them would silently machine
+  // along the whole outline.
+  if (TopExp_Explorer(curve, TopAbs_FACE).More())
+    throw InputError("the curve is a face (or holds faces): pick the boundary edge(s) of the face, not the face");
 
   Handle(TopTools_HSequenceOfShape) edges = new TopTools_HSequenceOfShape;
   for (TopExp_Explorer it(curve, TopAbs_EDGE); it.More(); it.Next()) edges->Append(it.Current());

@@ -1,9 +1,11 @@
 #include "toolpath/finishing.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 #include "curvenet/plane_cuts.hpp"
 #include "geometry/face_drop.hpp"
 #include "toolpath/cusp.hpp"
+#include "toolpath/reach.hpp"
 #include "toolpath/surface_drop.hpp"
 
 #include <BRepBndLib.hxx>
@@ -31,33 +33,58 @@ using Pass = std::vector<Vector3>;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kStationStep = 1.0;  // mm between the points that decide the stepover
 
-void validate(const FinishingSettings& s) {
-  if (!(s.toolRadius > 0.0)) throw InputError("tool radius " + std::to_string(s.toolRadius) + " mm must be positive");
-  if (!(s.cuspHeight > 0.0 && s.cuspHeight < s.toolRadius))
-    throw InputError("cusp height " + std::to_string(s.cuspHeight) + " mm must be positive and below the tool radius");
-  if (!(s.tolerance > 0.0)) throw InputError("machining tolerance " + std::to_string(s.tolerance) + " mm must be positive");
-  if (!(s.sampling > 0.0)) throw InputError("sampling " + std::to_string(s.sampling) + " mm must be positive");
-  if (!(s.clearance >= 0.0)) throw InputError("clearance must be 0 or more");
+void checkRange(double value, double low, double high, const std::string& what, const std::string& hint) {
+  if (!(value >= low && value <= high))
+    throw InputError(what + " " + mm(value) + " is outside [" + number(low) + ", " + number(high) + "] mm: " + hint);
 }
+
+void validate(const FinishingSettings& s) {
+  checkRange(2.0 * s.toolRadius, 2.0 * kMinToolRadius, 2.0 * kMaxToolRadius, "tool diameter",
+             "ball-end mills for finishing are 0.1 to 100 mm (the paper's is 4 mm)");
+  if (!(s.cuspHeight >= kMinCuspHeight && s.cuspHeight < s.toolRadius))
+    throw InputError("cusp height " + mm(s.cuspHeight) + " must be at least " + mm(kMinCuspHeight) +
+                     " (below any machine's repeatability) and below the tool radius " + mm(s.toolRadius) +
+                     ": the paper uses 0.01 mm");
+  checkRange(s.tolerance, kMinTolerance, kMaxTolerance, "machining tolerance", "the paper uses 0.01 mm");
+  checkRange(s.sampling, kMinSampling, s.toolRadius, "sampling", "cutter positions every 0.25 mm by default");
+  checkRange(s.clearance, 0.0, kMaxClearance, "clearance", "rapids run this far above the part, e.g. 5 mm");
+  checkRange(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "0.004 mm by default");
+  if (!(s.extension <= 10.0 * s.toolRadius) || std::isnan(s.extension))
+    throw InputError("extension " + mm(s.extension) + " past open boundaries must be at most ten tool radii (" +
+                     mm(10.0 * s.toolRadius) + "); a negative value means the tool radius");
+  if (s.threads < 0 || s.threads > 1024)
+    throw InputError("threads " + std::to_string(s.threads) + " must be 0 (all cores) to 1024");
+}
+
+std::string faceName(int index) { return "Face" + std::to_string(index); }
+
+// Holes a pass bridges in one straight move, as a share of the tool radius (see finishing.hpp).
+constexpr double kBridgeRadii = 10.0;
 
 // What every strategy needs: the part meshed for the drop-cutter, the bottom face for contact points.
 class Context {
 public:
   Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettings& settings)
-      : settings_(settings), bottomFace_(bottomFace) {
+      : settings_(settings), bottomFace_(bottomFace), progress_(settings.progress, "finishing") {
     validate(settings);
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(part, TopAbs_FACE, faces);
     if (bottomFace < 1 || bottomFace > faces.Extent())
-      throw InputError("bottom face " + std::to_string(bottomFace) + " does not exist: the part has " +
-                       std::to_string(faces.Extent()) + " faces");
+      throw InputError("bottom face " + faceName(bottomFace) + " does not exist: the part has " +
+                       std::to_string(faces.Extent()) + " faces (Face1 to Face" + std::to_string(faces.Extent()) + ")");
     bottom_ = TopoDS::Face(faces(bottomFace));
-    std::vector<int> around = faceAndNeighbours(part, bottomFace);
-    around.erase(around.begin());  // the bottom face itself is dropped on exactly
-    TriangleMesh mesh = around.empty() ? TriangleMesh{} : meshFaces(part, settings.meshDeflection, around);
+    const Reach reach = reachability(part, bottom_);
+    const std::string partly = checkReach(reach, faceName(bottomFace));
+    if (!partly.empty()) warnings.push_back(partly);
+    // Every face of the part holds the tool up (a pass must not cut through the part to reach the bottom
+    // face); the bottom face itself is dropped on exactly, and meshed too where part of it looks down.
+    std::vector<int> others;
+    for (int i = 1; i <= faces.Extent(); ++i)
+      if (i != bottomFace || reach.up < 1.0) others.push_back(i);
+    TriangleMesh mesh = others.empty() ? TriangleMesh{} : meshFaces(part, settings.meshDeflection, others);
     addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
-    exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius);
+    exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius, reach.toolSide);
     gauge_ = std::make_unique<CuspGauge>(*exact_, settings.toolRadius);
     Bnd_Box box;
     BRepBndLib::Add(part, box);
@@ -71,6 +98,27 @@ public:
     faceMax_ = Vector2(x1, y1);
     extension_ = settings.extension >= 0.0 ? settings.extension : settings.toolRadius;
   }
+
+  // Refuses settings that would need more passes or cutter positions than the limits, before any is
+  // computed: `width` across the passes, `length` of one pass (mm).
+  void checkWork(double width, double length) const {
+    const double passes = width / flatStep() + 1.0, perPass = length / settings_.sampling + 1.0;
+    if (passes > double(kMaxPasses)) {
+      const double step = width / double(kMaxPasses), r = settings_.toolRadius;
+      throw InputError("cusp height " + mm(settings_.cuspHeight) + " with a " + mm(2.0 * r) + " ball gives a " +
+                       "stepover of " + mm(flatStep()) + ": about " + number(std::round(passes)) + " passes over the " +
+                       mm(width) + " of " + faceName(bottomFace_) + " (the limit is " + std::to_string(kMaxPasses) +
+                       "): use a cusp height of at least " + mm(step * step / (8.0 * r)));
+    }
+    if (passes * perPass > kMaxPlanPoints)
+      throw InputError("about " + number(passes * perPass) + " cutter positions (" + number(std::round(passes)) +
+                       " passes of " + mm(length) + " sampled every " + mm(settings_.sampling) + ") exceed the limit " +
+                       number(kMaxPlanPoints) + ": use a larger cusp height or sampling, or split the face");
+  }
+
+  // Reports the share done; throws Cancelled when the user stops.
+  void report(double done) { progress_(done); }
+  std::vector<std::string> warnings;
 
   const FinishingSettings& settings() const { return settings_; }
   const CuspGauge& gauge() const { return *gauge_; }
@@ -140,25 +188,54 @@ public:
     std::vector<char> onBottom;
     dropAll(points, onBottom);
     dropped += points.rows();
-    size_t i = 0;
-    while (i < plan.size()) {
+    // Runs of positions where the ball rests on the bottom face; where a flank holds it up the run ends
+    // (it would only ride up the wall).
+    std::vector<std::pair<size_t, size_t>> runs;
+    for (size_t i = 0; i < plan.size();) {
       while (i < plan.size() && !onBottom[i]) ++i;
       if (i == plan.size()) break;
       size_t j = i;
       while (j + 1 < plan.size() && onBottom[j + 1]) ++j;
-      // [i, j]: the ball rests on the bottom face (where a flank holds it up, the pass ends: it would only
-      // ride up the wall); extend each end past an open boundary (where nothing lifts the tool).
-      const size_t first = extend(points, plan, i, -1), last = extend(points, plan, j, +1);
+      runs.emplace_back(i, j);
+      i = j + 1;
+    }
+    // Runs joined across the holes the tool bridges make one pass; each pass is extended past its open
+    // ends (where nothing lifts the tool) and refined within the tolerance.
+    for (size_t r = 0; r < runs.size();) {
+      size_t last = r;
+      while (last + 1 < runs.size() && bridges(points, plan, runs[last].second, runs[last + 1].first)) ++last;
       std::vector<size_t> indices;
-      for (size_t k = first; k <= last; ++k) indices.push_back(k);
+      for (size_t k = extend(points, plan, runs[r].first, -1); k <= runs[r].second; ++k) indices.push_back(k);
+      for (size_t q = r + 1; q <= last; ++q) {
+        const size_t to = q == last ? extend(points, plan, runs[q].second, +1) : runs[q].second;
+        for (size_t k = runs[q].first; k <= to; ++k) indices.push_back(k);
+      }
+      if (r == last) {
+        const size_t to = extend(points, plan, runs[r].second, +1);
+        for (size_t k = runs[r].second + 1; k <= to; ++k) indices.push_back(k);
+      }
       Pass pass = refine(points, plan, indices);
       if (pass.size() >= 2) passes.push_back(simplify(pass));
-      i = j + 1;
+      r = last + 1;
     }
     return passes;
   }
 
 private:
+  // The gap between positions `from` and `to` (the ball off the face in between) is a hole the tool
+  // bridges: short enough, and nothing in it stands above the straight line between its rims.
+  bool bridges(const geometry::PointArray& points, const std::vector<Vector2>& plan, size_t from, size_t to) const {
+    const double span = (plan[to] - plan[from]).norm();
+    if (span > kBridgeRadii * settings_.toolRadius) return false;
+    const double z0 = points(static_cast<Eigen::Index>(from), 2), z1 = points(static_cast<Eigen::Index>(to), 2);
+    for (size_t k = from + 1; k < to; ++k) {
+      const double f = span > 0.0 ? (plan[k] - plan[from]).norm() / span : 0.0;
+      const double z = points(static_cast<Eigen::Index>(k), 2);
+      if (z > z0 + f * (z1 - z0) + 0.5 * settings_.tolerance) return false;  // a wall or an island, not a hole
+    }
+    return true;
+  }
+
   size_t extend(const geometry::PointArray& points, const std::vector<Vector2>& plan, size_t end, int step) const {
     const double zEnd = points(static_cast<Eigen::Index>(end), 2);
     size_t k = end;
@@ -194,7 +271,8 @@ private:
       const Eigen::Index k = static_cast<Eigen::Index>(indices[n]);
       const Vector3 p(points(k, 0), points(k, 1), points(k, 2));
       if (!std::isfinite(p.z())) continue;
-      if (!pass.empty()) bisect(pass.back(), p, 0);
+      const bool bridge = n > 0 && indices[n] > indices[n - 1] + 1;  // straight across a hole
+      if (!pass.empty() && !bridge) bisect(pass.back(), p, 0);
       pass.push_back(p);
     }
     (void)plan;
@@ -236,6 +314,7 @@ private:
 
   FinishingSettings settings_;
   int bottomFace_;
+  ProgressReporter progress_;
   TopoDS_Face bottom_;
   std::unique_ptr<BallDropCutter> cutter_;
   std::unique_ptr<SurfaceBallDrop> exact_;
@@ -250,8 +329,15 @@ struct Family {
   double begin = 0.0, end = 1.0;
 };
 
+// The share of the work a phase stands for: progress from `base` over `width`.
+struct Phase {
+  double base = 0.0, width = 1.0;
+  double at(double done) const { return base + width * done; }
+};
+
 // The parameters of the passes from `begin` to `end`: each the farthest that keeps the cusp height.
-std::vector<double> passParameters(const Context& context, const Family& family, bool skipFirst) {
+// Progress: the first half of `phase`.
+std::vector<double> passParameters(Context& context, const Family& family, bool skipFirst, Phase phase) {
   std::vector<double> parameters;
   double current = family.begin;
   if (!skipFirst) parameters.push_back(current);
@@ -293,8 +379,21 @@ std::vector<double> passParameters(const Context& context, const Family& family,
     if (std::abs(lo - current) < 1e-9 * span) lo = current + sense * 1e-3 * span;  // always move on
     current = sense > 0 ? std::min(lo, family.end) : std::max(lo, family.end);
     parameters.push_back(current);
+    context.report(phase.at(0.5 * std::abs(current - family.begin) / span));
   }
   return parameters;
+}
+
+// The passes of a family cut along the parameters; progress: the second half of `phase`.
+std::vector<std::vector<Pass>> cutPasses(Context& context, const Family& family, const std::vector<double>& parameters,
+                                         Phase phase) {
+  std::vector<std::vector<Pass>> lines;
+  for (size_t k = 0; k < parameters.size(); ++k) {
+    std::vector<Pass> cut = context.cut(family.plan(parameters[k], context.settings().sampling));
+    if (!cut.empty()) lines.push_back(std::move(cut));
+    context.report(phase.at(0.5 + 0.5 * double(k + 1) / double(parameters.size())));
+  }
+  return lines;
 }
 
 double meanHeight(const std::vector<std::vector<Pass>>& lines) {
@@ -363,12 +462,12 @@ Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) 
     inside = true;
   }
   if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});
-  if (path.passes == 0) path.warnings.push_back("no pass touches the bottom face: check the face and the guides");
   return path;
 }
 
 // Groups (areas) of lines (passes, each in pieces) in sweeping order: upward starts on the lower side.
 void orderForSweep(std::vector<std::vector<std::vector<Pass>>>& groups, Sweep sweep) {
+  groups.erase(std::remove_if(groups.begin(), groups.end(), [](const auto& g) { return g.empty(); }), groups.end());
   if (groups.empty()) return;
   // Several areas: compare the first and last areas; one area: its first and last passes.
   const bool single = groups.size() == 1;
@@ -391,6 +490,22 @@ std::vector<std::vector<Pass>> lines(const std::vector<std::vector<std::vector<P
 
 }  // namespace
 
+namespace {
+// The passes of all groups linked into moves; refuses a result with no pass at all (nothing to cut).
+Toolpath finish(Context& context, std::vector<std::vector<std::vector<Pass>>> groups, int bottomFace,
+                const std::string& why) {
+  orderForSweep(groups, context.settings().sweep);
+  if (groups.empty())
+    throw InputError("no pass of the " + mm(2.0 * context.settings().toolRadius) + " ball rests on " +
+                     faceName(bottomFace) + ": " + why);
+  Toolpath path = assemble(context, lines(groups));
+  path.droppedPoints = context.dropped;
+  path.warnings.insert(path.warnings.begin(), context.warnings.begin(), context.warnings.end());
+  context.report(1.0);
+  return path;
+}
+}  // namespace
+
 Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double angleDeg,
                                 const FinishingSettings& settings) {
   if (!std::isfinite(angleDeg)) throw InputError("the angle of the planes must be a number of degrees");
@@ -406,6 +521,7 @@ Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double
     q1 = std::max(q1, corner.dot(across));
   }
   const double margin = settings.toolRadius + 1.0;
+  context.checkWork(q1 - q0, a1 - a0 + 2.0 * margin);
   Family family;
   family.begin = q0 + 1e-3;
   family.end = q1 - 1e-3;
@@ -414,17 +530,36 @@ Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double
     for (double t = a0 - margin; t <= a1 + margin + 1e-9; t += spacing) plan.push_back(t * along + q * across);
     return plan;
   };
-  std::vector<std::vector<Pass>> planes;
-  for (double q : passParameters(context, family, false)) {
-    std::vector<Pass> cut = context.cut(family.plan(q, settings.sampling));
-    if (!cut.empty()) planes.push_back(cut);
-  }
-  std::vector<std::vector<std::vector<Pass>>> groups{planes};
-  orderForSweep(groups, settings.sweep);
-  Toolpath path = assemble(context, lines(groups));
-  path.droppedPoints = context.dropped;
-  return path;
+  const std::vector<double> parameters = passParameters(context, family, false, {});
+  return finish(context, {cutPasses(context, family, parameters, {})}, bottomFace,
+                "the walls around it hold the tool up everywhere (a ball finishes a floor only where it fits): use "
+                "a smaller ball");
 }
+
+namespace {
+// Points of the guides in the planes of one spacing: every pass is a blend of the same two point lists.
+class GuidePoints {
+public:
+  GuidePoints(const curvenet::detail::PlaneCutter& first, const curvenet::detail::PlaneCutter& second, double s0,
+              double s1)
+      : first_(first), second_(second), s0_(s0), s1_(s1) {}
+
+  const std::pair<geometry::PointArray, geometry::PointArray>& at(double spacing) {
+    auto found = cache_.find(spacing);
+    if (found != cache_.end()) return found->second;
+    std::vector<double> stations;
+    for (double s = s0_; s < s1_; s += spacing) stations.push_back(s);
+    stations.push_back(s1_);
+    return cache_.emplace(spacing, std::make_pair(first_.cut(stations).points, second_.cut(stations).points))
+        .first->second;
+  }
+
+private:
+  const curvenet::detail::PlaneCutter &first_, &second_;
+  double s0_, s1_;
+  std::map<double, std::pair<geometry::PointArray, geometry::PointArray>> cache_;
+};
+}  // namespace
 
 Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std::vector<GuideArea>& areas,
                              const Eigen::Vector3d& directionIn, const FinishingSettings& settings) {
@@ -434,29 +569,27 @@ Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std
   Context context(part, bottomFace, settings);
   const Vector3 direction = Vector3(directionIn.x(), directionIn.y(), 0.0).normalized();
   std::vector<std::vector<std::vector<Pass>>> groups;
+  const double extension = (settings.extension >= 0 ? settings.extension : settings.toolRadius) + 1.0;
   for (size_t index = 0; index < areas.size(); ++index) {
     const GuideArea& area = areas[index];
-    if (area.first.IsNull() || area.second.IsNull()) throw InputError("area " + std::to_string(index + 1) + " lacks a guide");
+    const std::string name = "area " + std::to_string(index + 1);
+    if (area.first.IsNull() || area.second.IsNull()) throw InputError(name + " lacks a guide");
     const curvenet::detail::PlaneCutter first(area.first, direction), second(area.second, direction);
     const double s0 = std::max(first.extent().first, second.extent().first);
     const double s1 = std::min(first.extent().second, second.extent().second);
     if (s1 - s0 < settings.sampling)
-      throw InputError("the guides of area " + std::to_string(index + 1) + " do not overlap along the direction");
-    const double extension = (settings.extension >= 0 ? settings.extension : settings.toolRadius) + 1.0;
-    // The guides cut by the planes, once per spacing: every pass is a blend of the same two point lists.
-    std::map<double, std::pair<geometry::PointArray, geometry::PointArray>> guidePoints;
-    auto pointsAt = [&, s0, s1](double spacing) -> const std::pair<geometry::PointArray, geometry::PointArray>& {
-      auto found = guidePoints.find(spacing);
-      if (found != guidePoints.end()) return found->second;
-      std::vector<double> stations;
-      for (double s = s0; s < s1; s += spacing) stations.push_back(s);
-      stations.push_back(s1);
-      return guidePoints.emplace(spacing, std::make_pair(first.cut(stations).points, second.cut(stations).points))
-          .first->second;
-    };
+      throw InputError("the guides of " + name + " do not overlap along the machining direction: pick guides "
+                       "on either side of the area");
+    GuidePoints guides(first, second, s0, s1);
+    const auto& [a, b] = guides.at(std::max(settings.sampling, (s1 - s0) / 200.0));
+    const double width = (b - a).leftCols(2).rowwise().norm().maxCoeff();
+    if (width < 1e-3)
+      throw InputError("the guides of " + name + " coincide (at most " + mm(width) + " apart): pick two different "
+                       "curves on either side of the area");
+    context.checkWork(width, s1 - s0 + 2.0 * extension);
     Family family;
-    family.plan = [&, extension](double lambda, double spacing) {
-      const auto& [a, b] = pointsAt(spacing);
+    family.plan = [&guides, extension](double lambda, double spacing) {
+      const auto& [a, b] = guides.at(spacing);
       std::vector<Vector2> plan;
       for (Eigen::Index k = 0; k < a.rows(); ++k) {
         const Eigen::RowVector3d p = a.row(k) + lambda * (b.row(k) - a.row(k));
@@ -476,17 +609,12 @@ Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std
       }
       return plan;
     };
-    std::vector<std::vector<Pass>> group;
-    for (double lambda : passParameters(context, family, index > 0)) {
-      std::vector<Pass> cut = context.cut(family.plan(lambda, settings.sampling));
-      if (!cut.empty()) group.push_back(std::move(cut));
-    }
-    if (!group.empty()) groups.push_back(std::move(group));
+    const Phase phase{double(index) / areas.size(), 1.0 / areas.size()};
+    const std::vector<double> parameters = passParameters(context, family, index > 0, phase);
+    groups.push_back(cutPasses(context, family, parameters, phase));
   }
-  orderForSweep(groups, settings.sweep);
-  Toolpath path = assemble(context, lines(groups));
-  path.droppedPoints = context.dropped;
-  return path;
+  return finish(context, std::move(groups), bottomFace,
+                "check that the guides lie on the face, and that the ball fits between its walls");
 }
 
 }  // namespace hsm::toolpath

@@ -22,8 +22,21 @@
 //   downward the other way. Zigzag alternates pass directions and links neighbours by a G1 move that
 //   follows the surface when they are within ten tool radii and the link would not climb a wall;
 //   otherwise, and for one-way, the tool retracts to the safe height, moves in G0 and plunges in G1.
+// - Reach (issue 10): the drop-cutter holds the tool off every face of the part, not only the bottom
+//   face's neighbours, so no pass can cut through the part to a face below. A face the tool along +Z
+//   cannot reach (a wall, a face that looks down) is refused by name; where only part of it is out of
+//   reach, that part is left with a warning (toolpath/reach.hpp).
+// - Holes in the bottom face: where a pass crosses a hole (the face is missing and nothing stands above
+//   the straight line between the hole's rims) no wider than ten tool radii along the pass, the tool
+//   bridges it at the face's level in one straight move; the ball does not dip into the hole and the pass
+//   goes on without a retract. Wider holes are open edges, as the face's outer open boundaries: the pass
+//   rolls over the rim by the extension and links or retracts.
+// - Bounded work: the settings are checked against what a finishing computation can do (the limits below);
+//   the passes and the points the settings would need are estimated from the face before any is computed,
+//   and refused past the limits with the value that would fit. `progress` reports and can cancel.
 #pragma once
 
+#include "common/progress.hpp"
 #include "toolpath/dropcutter.hpp"
 
 #include <Geom_BSplineCurve.hxx>
@@ -36,6 +49,15 @@ namespace hsm::toolpath {
 
 enum class Sweep { Upward, Downward };
 
+// Limits of the settings (mm), and of the work they may ask for.
+inline constexpr double kMinToolRadius = 0.05, kMaxToolRadius = 50.0;
+inline constexpr double kMinCuspHeight = 1e-4;     // 0.1 µm: below any machine's repeatability
+inline constexpr double kMinTolerance = 1e-4, kMaxTolerance = 1.0;
+inline constexpr double kMinSampling = 0.01;       // and at most the tool radius
+inline constexpr double kMaxClearance = 1000.0;
+inline constexpr long kMaxPasses = 20000;           // estimated from the face's width and the flat stepover
+inline constexpr double kMaxPlanPoints = 4e7;       // cutter positions of all passes together
+
 struct FinishingSettings {
   double toolRadius = 2.0;      // ball radius, mm
   double cuspHeight = 0.01;     // mm
@@ -47,6 +69,7 @@ struct FinishingSettings {
   double meshDeflection = 0.004;  // mm, for the faces around the bottom face
   double sampling = 0.25;       // mm between cutter positions before refinement
   int threads = 0;              // 0: all cores
+  ProgressCallback progress;    // share of the passes done; returning false cancels (throws Cancelled)
 };
 
 struct Move {

@@ -1,7 +1,6 @@
 #include "toolpath/surface_drop.hpp"
 
 #include <BRep_Tool.hxx>
-#include <BRepTools.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -13,15 +12,10 @@ Eigen::Vector3d toEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 Eigen::Vector3d toEigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 }  // namespace
 
-SurfaceBallDrop::SurfaceBallDrop(const TopoDS_Face& face, double radius)
-    : surface_(BRep_Tool::Surface(face)), dropper_(face, Eigen::Vector3d::UnitZ()), radius_(radius), sign_(1.0) {
+SurfaceBallDrop::SurfaceBallDrop(const TopoDS_Face& face, double radius, double toolSide)
+    : surface_(BRep_Tool::Surface(face)), dropper_(face, Eigen::Vector3d::UnitZ()), radius_(radius),
+      sign_(toolSide >= 0.0 ? 1.0 : -1.0) {
   surface_->Bounds(u0_, u1_, v0_, v1_);
-  double fu0, fu1, fv0, fv1;
-  BRepTools::UVBounds(face, fu0, fu1, fv0, fv1);
-  gp_Pnt p;
-  gp_Vec su, sv;
-  surface_->D1(0.5 * (fu0 + fu1), 0.5 * (fv0 + fv1), p, su, sv);
-  sign_ = su.Crossed(sv).Z() >= 0.0 ? 1.0 : -1.0;  // the offset goes to the upward side
 }
 
 // Newton on the plan position of the ball centre C(u, v) = S + r·n, with n's derivatives from the
@@ -70,7 +64,13 @@ bool SurfaceBallDrop::drop(double x, double y, Result& result, bool haveGuess) c
   result.tipZ = centre.z() - radius_;
   result.u = u;
   result.v = v;
-  result.onFace = dropper_.inside(u, v);
+  // The ball rests on the contact from above only where the tool side's normal points up: the centre is
+  // above the contact point.
+  gp_Pnt contact;
+  gp_Vec su, sv;
+  surface_->D1(u, v, contact, su, sv);
+  const bool fromAbove = centre.z() > contact.Z() + 1e-9 * radius_;
+  result.onFace = fromAbove && dropper_.inside(u, v);
   return true;
 }
 

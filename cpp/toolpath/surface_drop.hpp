@@ -14,12 +14,15 @@ namespace hsm::toolpath {
 
 class SurfaceBallDrop {
 public:
-  SurfaceBallDrop(const TopoDS_Face& face, double radius);
+  // `toolSide`: +1 when the tool is on the side of the surface's natural normal Su × Sv, −1 on the other
+  // (toolpath/reach.hpp tells which).
+  SurfaceBallDrop(const TopoDS_Face& face, double radius, double toolSide);
 
   struct Result {
     double tipZ = 0.0;     // tool tip height
     double u = 0.0, v = 0.0;  // contact point parameters
-    bool onFace = false;   // the contact point is inside the face's boundaries
+    bool onFace = false;   // the contact point is inside the face's boundaries, and the ball rests on it
+                           // from above (where the face looks down, a ball from above cannot touch it)
   };
   // (u, v) in `guess` when `haveGuess`; false when Newton does not converge (no contact on the surface).
   bool drop(double x, double y, Result& result, bool haveGuess) const;
@@ -32,7 +35,7 @@ private:
 
   Handle(Geom_Surface) surface_;
   geometry::FaceDropper dropper_;  // first guesses, and the inside test
-  double radius_, sign_;           // sign_: which side of the surface the tool is on (its normal points up)
+  double radius_, sign_;           // sign_: which side of the surface the tool is on
   double u0_, u1_, v0_, v1_;
 };
 

@@ -155,11 +155,18 @@ TEST(CurveNet, UnknownModeIsRefused) {
   EXPECT_THROW(parseNetMode("sideways"), InputError);
 }
 
-TEST(CurveNet, MinimumGapZeroStopsAtTheLimit) {
+TEST(CurveNet, ANetThatCouldNotEndIsRefusedBeforeAnyCurveIsBuilt) {
   NetSettings settings;
-  settings.minGap = 0.0;
-  settings.maxCurvesPerNet = 30;
-  const CurveNet net = curveNet(parallel(), 0.5, NetMode::B1ToB2, settings);
-  EXPECT_EQ(net.curves.size(), 32u);
-  EXPECT_NE(net.warnings.back().find("the limit"), std::string::npos);
+  settings.minGap = 0.0;  // no gap: the net would halve the distance for ever
+  EXPECT_THROW(curveNet(parallel(), 0.5, NetMode::B1ToB2, settings), hsm::InputError);
+  settings.minGap = 1e9;  // wider than the area: every plane a pinch, the stop rule blind
+  EXPECT_THROW(curveNet(parallel(), 0.5, NetMode::B1ToB2, settings), hsm::InputError);
+  settings.minGap = 0.01;
+  settings.maxCurvesPerNet = 5;  // K = 0.5 needs about log2(width / 0.01) curves
+  try {
+    curveNet(parallel(), 0.5, NetMode::B1ToB2, settings);
+    ADD_FAILURE() << "no error";
+  } catch (const hsm::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("use K of at least"), std::string::npos) << error.what();
+  }
 }

@@ -1,0 +1,56 @@
+// Finishing on inputs that once crashed, hung or gouged (issue 10): each must end in an error that names the
+// input, or in a toolpath the independent checks accept.
+#include "common/error.hpp"
+#include "support/master_feature.hpp"
+#include "toolpath/finishing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace hsm;
+using namespace hsm::toolpath;
+
+namespace {
+constexpr auto feature = test::masterFeature;
+
+FinishingSettings ball(double diameter = 4.0) {
+  FinishingSettings s;
+  s.toolRadius = 0.5 * diameter;
+  return s;
+}
+
+// The message of the InputError `call` throws (fails the test when it throws nothing or something else).
+template <class Call>
+std::string inputError(Call&& call) {
+  try {
+    call();
+  } catch (const InputError& error) {
+    return error.what();
+  } catch (const std::exception& error) {
+    ADD_FAILURE() << "not an InputError: " << error.what();
+    return {};
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+}  // namespace
+
+TEST(FinishingBadInputs, VerticalWallsAreRefusedByName) {
+  for (int wall : {1, 7, 9, 10}) {
+    const std::string message = inputError([&] { parallelPlaneFinishing(feature().shape, wall, 0.0, ball()); });
+    EXPECT_NE(message.find("Face" + std::to_string(wall)), std::string::npos) << message;
+    EXPECT_NE(message.find("vertical"), std::string::npos) << message;
+  }
+}
+
+TEST(FinishingBadInputs, LargeBallsAreComputedOrRefused) {
+  for (double diameter : {55.0, 60.0, 80.0}) {
+    try {
+      const Toolpath path = parallelPlaneFinishing(feature().shape, 4, 0.0, ball(diameter));
+      for (const Move& m : path.moves) ASSERT_TRUE(m.point.allFinite());
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("tool"), std::string::npos) << error.what();
+    }
+  }
+}
