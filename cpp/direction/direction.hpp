@@ -17,9 +17,11 @@
 // tool radius past each end and the time a stop and a start cost there (S-curve with a_max and the stop
 // jerk); and the direction minimising it.
 //
-// Where the paper is silent: curvatures are signed positive where the face bends towards the tool; points
-// whose concave radius is below the ball's, undercut (n·k < 0) or vertical (n·k ≈ 0) are left out with a
-// warning (refused if no point is left); a flat face, where every direction ties, is reported as such.
+// Where the paper is silent: the tool is on the side of the face's normal as FreeCAD shows it (out of the
+// material for a face of a solid); curvatures are signed positive where the face bends towards the tool;
+// points whose concave radius is below the ball's, undercut (n·k < 0) or vertical (n·k ≈ 0) are left out
+// with a warning (refused if no point is left, and a face that looks down is refused as such); a flat face,
+// where every direction ties, is reported as such.
 #pragma once
 
 #include "geometry/curve_sampling.hpp"
@@ -66,6 +68,12 @@ double stopAndGoLoss(double speed, double acceleration, double jerk);
 
 // Eq. 9–12 at one point for the direction at `thetaDeg` from X.
 Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c);
+
+// Bounded work: at most kMaxGrid × kMaxGrid points, directions every kMinAngleStepDeg or more, and at
+// most kMaxEvaluations point-direction pairs.
+inline constexpr int kMaxGrid = 500;
+inline constexpr double kMinAngleStepDeg = 0.01;
+inline constexpr double kMaxEvaluations = 1e8;
 
 struct DirectionSettings {
   int gridU = 50, gridV = 50;   // sample points

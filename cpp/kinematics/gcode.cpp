@@ -1,5 +1,7 @@
 #include "kinematics/gcode.hpp"
 
+#include "common/text.hpp"
+
 #include <Eigen/Geometry>
 #include <fast_float/fast_float.h>
 
@@ -11,6 +13,23 @@
 #include <string_view>
 
 namespace hsm::kinematics {
+
+std::string printable(std::string_view text) {
+  static const char* digits = "0123456789ABCDEF";
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7F) {
+      out += c;
+    } else {
+      out += "\\x";
+      out += digits[byte >> 4];
+      out += digits[byte & 15];
+    }
+  }
+  return out;
+}
 
 // ---------------------------------------------------------------------------------------------------------
 // Block geometry
@@ -60,19 +79,27 @@ class LineSource {
 public:
   explicit LineSource(std::istream& input) : input_(input) { buffer_.reserve(kChunk * 2); }
 
-  // The next line without its end-of-line characters; false at the end.
+  // The next line without its end-of-line characters; false at the end. A line longer than
+  // kMaxLineLength is refused as soon as that many characters have come without a line end.
   bool next(std::string_view& line) {
+    size_t searched = position_;
     for (;;) {
-      const size_t newline = buffer_.find('\n', position_);
-      if (newline != std::string::npos) {
+      const size_t newline = buffer_.find('\n', searched);
+      if (newline != std::string::npos && newline - position_ <= kMaxLineLength) {
         line = trimmed(position_, newline);
         position_ = newline + 1;
+        ++lines_;
         return true;
       }
+      if (buffer_.size() - position_ > kMaxLineLength)
+        throw ParseError(lines_ + 1, "the line is longer than " + std::to_string(kMaxLineLength) +
+                                         " characters: a G-code block is one line (is this a G-code file?)");
+      searched = buffer_.size() - position_;  // as an offset: refill() moves the unread part to the front
       if (eof_) {
         if (position_ >= buffer_.size()) return false;
         line = trimmed(position_, buffer_.size());
         position_ = buffer_.size();
+        ++lines_;
         return true;
       }
       refill();
@@ -101,6 +128,7 @@ private:
   std::istream& input_;
   std::string buffer_;
   size_t position_ = 0;
+  long lines_ = 0;
   bool eof_ = false;
 };
 
@@ -158,36 +186,58 @@ public:
         const char after = p + 1 < end ? p[1] : ' ';
         p = isLetter(after) || after == '_' || after == '=' ? keyword(p, end, number) : word(p, end, number);
       } else {
-        throw ParseError(number, std::string("unexpected character '") + c + "': G-code words are a letter and a number");
+        throw ParseError(number, std::string("unexpected character '") + c + "' (byte " +
+                                     std::to_string(static_cast<unsigned char>(c)) +
+                                     "): G-code words are a letter and a number; is this a G-code file?");
       }
     }
   }
 
 private:
+  // A G-code number at p: an optional sign, digits with at most one point, no exponent, nan or inf, at
+  // most kMaxWordValue. Returns the end of the number; `what` names the word in messages.
+  const char* numberAt(const char* p, const char* end, double& value, std::string_view what, long number) {
+    const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
+    const char* token = p;  // what is quoted: up to the next blank, at most 24 characters
+    while (token < end && token - p < 24 && *token != ' ' && *token != '\t') ++token;
+    if (!(digits < end && (isDigit(*digits) || (*digits == '.' && digits + 1 < end && isDigit(digits[1])))))
+      throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+                                   "' is not a letter followed by a number (digits, an optional sign and point)");
+    const char* from = *p == '+' ? p + 1 : p;
+    const auto parsed = fast_float::from_chars(from, end, value, fast_float::chars_format::fixed);
+    const char* stop = parsed.ptr;
+    if (parsed.ec != std::errc() || (stop < end && (*stop == '.' || isDigit(*stop))))
+      throw ParseError(number, "'" + std::string(what) + std::string(p, token) + "' is not a number");
+    if (stop < end && (*stop == 'e' || *stop == 'E') && stop + 1 < end &&
+        (isDigit(stop[1]) || ((stop[1] == '+' || stop[1] == '-') && stop + 2 < end && isDigit(stop[2]))))
+      throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+                                   "': G-code numbers have no exponent; write the number in full");
+    if (!(std::abs(value) <= kMaxWordValue))
+      throw ParseError(number, "'" + std::string(what) + std::string(p, std::min<size_t>(stop - p, 24)) +
+                                   "' is out of range: words are at most " + std::to_string(long(kMaxWordValue)) +
+                                   " in size");
+    return stop;
+  }
+
   const char* word(const char* p, const char* end, long number) {
     const char letter = *p;
     const char* start = p++;
     while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    const char* numberStart = p;
-    if (p < end && *p == '+') ++p;
     double value = 0.0;
-    const auto parsed = fast_float::from_chars(p, end, value, fast_float::chars_format::fixed);
-    if (parsed.ec != std::errc() || parsed.ptr == p || (parsed.ptr < end && (*parsed.ptr == '.' || isDigit(*parsed.ptr))))
-      throw ParseError(number, "'" + std::string(start, std::min(end, std::max(parsed.ptr, p + 1)) - start) +
-                                   "' is not a letter followed by a number");
-    p = parsed.ptr;
+    const char* numberEnd = numberAt(p, end, value, std::string_view(start, p - start), number);
+    p = numberEnd;
     while (p < end && (*p == ' ' || *p == '\t')) ++p;
     if (p < end && *p == '=') {
       // R1=5, P3=… : a parameter assignment (Siemens R parameters): not a plain word.
       Keyword k;
-      k.name = std::string_view(start, numberStart - start + (parsed.ptr - numberStart));
+      k.name = std::string_view(start, numberEnd - start);
       k.hasValue = true;
       p = assignment(p + 1, end, k, number);
       keywords.push_back(k);
       return p;
     }
     if (wordCount == static_cast<int>(words.size())) throw ParseError(number, "more than 64 words on one line");
-    words[wordCount++] = Word{letter, value, std::string_view(start, parsed.ptr - start)};
+    words[wordCount++] = Word{letter, value, std::string_view(start, numberEnd - start)};
     return p;
   }
 
@@ -218,15 +268,16 @@ private:
 
   const char* assignment(const char* p, const char* end, Keyword& k, long number) {
     while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    if (p < end && *p == '+') ++p;
-    const auto parsed = fast_float::from_chars(p, end, k.value, fast_float::chars_format::fixed);
-    if (parsed.ec != std::errc()) {
-      // An expression or a variable (R1=R2*3): not evaluated; keep the name so it counts as unknown.
-      k.hasValue = false;
-      while (p < end && *p != ' ' && *p != '\t' && *p != ';') ++p;
-      return p;
+    const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
+    const char* stop = p;
+    if (digits < end && (isDigit(*digits) || *digits == '.')) {
+      stop = numberAt(p, end, k.value, std::string(k.name) + "=", number);
+      if (stop == end || *stop == ' ' || *stop == '\t' || *stop == ';') return stop;
     }
-    return parsed.ptr;
+    // An expression or a variable (R1=R2*3): not evaluated; keep the name so it counts as unknown.
+    k.hasValue = false;
+    while (p < end && *p != ' ' && *p != '\t' && *p != ';') ++p;
+    return p;
   }
 };
 
@@ -292,7 +343,7 @@ struct GcodeReader::Impl {
     bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
     double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
     double radiusWord = 0.0, pWord = -1.0, fWord = 0.0;
-    bool hasRadius = false, g64 = false, hasFeed = false;
+    bool hasRadius = false, g64 = false, hasFeed = false, hasP = false;
 
     for (const Keyword& k : line.keywords) {
       if (isFrameKeyword(k.name)) {
@@ -320,7 +371,7 @@ struct GcodeReader::Impl {
         }
         case 'F': fWord = w.value; hasFeed = true; break;
         case 'R': radiusWord = w.value; hasRadius = true; break;
-        case 'P': pWord = w.value; break;
+        case 'P': pWord = w.value; hasP = true; break;
         case 'M': mWord(w); break;
         case 'T': ++stats.toolChanges; break;
         case 'N': case 'S': case 'D': case 'H': case 'Q': case 'L': break;  // no effect on the motion
@@ -334,6 +385,8 @@ struct GcodeReader::Impl {
     }
     if (dwell) {
       const double seconds = pWord >= 0.0 ? pWord : hasFeed ? fWord : -1.0;  // LinuxCNC G4 P, Siemens G4 F
+      if (hasP && pWord < 0.0)
+        throw ParseError(lineNumber, "G4 P" + number(pWord) + ": a dwell lasts 0 s or more; write G4 P<seconds>");
       if (!(seconds >= 0.0)) throw ParseError(lineNumber, "G4 dwell needs its time: G4 P<seconds> (or F on the 840D)");
       stats.dwellTime += seconds;
     }
@@ -350,6 +403,9 @@ struct GcodeReader::Impl {
 
     const bool anyAxis = hasAxis[0] || hasAxis[1] || hasAxis[2];
     const bool anyOffset = hasOffset[0] || hasOffset[1] || hasOffset[2];
+    if ((newMotion == 2 || newMotion == 3) && !anyAxis && !anyOffset && !hasRadius)
+      throw ParseError(lineNumber, "G" + std::to_string(newMotion) + " without an end point or a centre: an arc needs "
+                                   "X/Y/Z and I/J/K (or R); the line moves nothing");
     if (!anyAxis && !(anyOffset && (motion == 2 || motion == 3))) return false;
     if (dwell) return false;
     if (motion < 0) throw ParseError(lineNumber, "coordinates before any motion mode: start with G0 or G1");

@@ -6,7 +6,10 @@
 // F S T D H M N, comments in ( ) and after ;, block delete /, % lines. Words that change nothing the
 // simulation sees (G40, G43, G54…, G80, G94, M3, COMPCAD, FFWON…) are accepted. Anything else is an
 // unknown word: skipped and counted, or refused, by option. A malformed line throws ParseError naming the
-// line number and the word.
+// line number and the word: numbers are digits with an optional sign and point (no exponent, no nan or
+// inf: G-code has none) of at most kMaxWordValue; a line is at most kMaxLineLength characters (a program
+// is streamed, so a file without line ends is refused at once instead of read whole); G2/G3 need an end
+// point or a centre; a dwell is 0 s or more.
 #pragma once
 
 #include "common/error.hpp"
@@ -17,19 +20,27 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hsm::kinematics {
 
+// Text as it may be shown: bytes outside printable ASCII written as \xNN (a program may hold anything,
+// and a message must stay valid text for Python and the GUI).
+std::string printable(std::string_view text);
+
 class ParseError : public InputError {
 public:
   ParseError(long line, const std::string& message)
-      : InputError("line " + std::to_string(line) + ": " + message), line_(line) {}
+      : InputError("line " + std::to_string(line) + ": " + printable(message)), line_(line) {}
   long line() const { return line_; }
 
 private:
   long line_;
 };
+
+inline constexpr size_t kMaxLineLength = 1 << 16;  // characters
+inline constexpr double kMaxWordValue = 1e9;       // |value| of any word (mm: a thousand kilometres)
 
 enum class Motion { Rapid, Linear, ArcClockwise, ArcCounterClockwise };
 

@@ -1,6 +1,7 @@
 #include "kinematics/machine.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,27 @@ std::string controllerName(ControllerKind kind) {
   return "?";
 }
 
+void checkMachine(const MachineModel& m) {
+  auto check = [&](double value, double low, double high, const std::string& what, double display,
+                   const std::string& unit) {
+    if (!(value >= low && value <= high))
+      throw InputError("machine \"" + m.name + "\": " + what + " = " + hsm::number(value * display) + " " + unit +
+                       " is outside [" + hsm::number(low * display) + ", " + hsm::number(high * display) + "] " + unit);
+  };
+  for (int i = 0; i < 3; ++i) {
+    const std::string axis = std::string(" of axis ") + kAxes[i];
+    check(m.maxVelocity[i], 1e-3, 1e6, "max velocity" + axis, 60.0, "mm/min");
+    check(m.rapidVelocity[i], 1e-3, 1e6, "rapid velocity" + axis, 60.0, "mm/min");
+    check(m.maxAcceleration[i], 1e-3, 1e9, "max acceleration" + axis, 1e-3, "m/s²");
+    check(m.maxJerk[i], 1e-3, 1e12, "max jerk" + axis, 1e-3, "m/s³");
+    check(m.velocityJump[i], 0.0, 1e6, "velocity jump" + axis, 60.0, "mm/min");
+  }
+  check(m.interpolationCycle, 0.0, 1.0, "interpolation cycle", 1e3, "ms");
+  check(m.lookAheadBlocks, 1, 100000, "look-ahead", 1.0, "blocks");
+  check(m.cornerTolerance, 0.0, 10.0, "corner tolerance", 1.0, "mm");
+  check(m.arcTolerance, 1e-4, 1.0, "arc tolerance", 1.0, "mm");
+}
+
 MachineModel machineFromJson(const std::string& text, const std::string& origin) {
   json root;
   try {
@@ -90,6 +112,11 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
   m.cornerTolerance = number(root, "corner_tolerance_mm", origin, 1.0, false);
   m.jerkLimitedByDefault = root.value("jerk_limited_by_default", m.controller == ControllerKind::Siemens840D);
   if (root.contains("arc_tolerance_mm")) m.arcTolerance = number(root, "arc_tolerance_mm", origin, 1.0, true);
+  try {
+    checkMachine(m);
+  } catch (const InputError& error) {
+    bad(origin, error.what());
+  }
   return m;
 }
 

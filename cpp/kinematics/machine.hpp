@@ -31,6 +31,10 @@ struct MachineModel {
   double arcTolerance = 0.002;        // mm: grbl cuts arcs into chords within this
 };
 
+// Checks every limit of a model (positive, finite, in a range a machine can have): InputError names the
+// field and its unit. The simulator checks the model it is given, since Python may set fields directly.
+void checkMachine(const MachineModel& machine);
+
 // Reads a machine model from JSON text; InputError names the missing or bad key and the file.
 MachineModel machineFromJson(const std::string& text, const std::string& origin = "machine file");
 // Writes the model as JSON in the same keys and units (mm/min for velocities, m/s² and m/s³).

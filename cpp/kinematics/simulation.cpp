@@ -1,5 +1,7 @@
 #include "kinematics/simulation.hpp"
 
+#include "common/text.hpp"
+
 #include "kinematics/planner.hpp"
 #include "kinematics/runs.hpp"
 
@@ -63,6 +65,9 @@ public:
     if (!open_) return;
     open_ = false;
     BlockResult& b = current_;
+    if (!std::isfinite(b.time) || b.time < 0.0 || !std::isfinite(b.length))
+      throw ComputationError("line " + std::to_string(b.line) + ": the simulated time of the block is not a finite "
+                             "number (length " + mm(b.length) + "); check its coordinates and the machine's limits");
     b.meanFeed = b.time > 0.0 ? b.length / b.time : 0.0;
     SimulationSummary& sum = result_.summary;
     ++sum.blockCount;
@@ -92,9 +97,13 @@ public:
     const TraceSample sample{t, x.x(), x.y(), x.z(), speed};
     if (options_.onTraceSample) {
       options_.onTraceSample(sample);
-    } else {
-      result_.trace.push_back(sample);
+      return;
     }
+    if (static_cast<long>(result_.trace.size()) >= kMaxTraceSamples)
+      throw InputError("the trace reached " + std::to_string(kMaxTraceSamples) + " samples at t = " + number(t) +
+                       " s: use a trace period of at least " + number(std::max(10.0 * options_.tracePeriod, 1e-3)) +
+                       " s, or write the trace to a file as it comes");
+    result_.trace.push_back(sample);
   }
 
   void finish(const ReaderStats& reader) {
@@ -131,7 +140,8 @@ void feed(detail::Planner& planner, const MachineModel& machine, const Block& bl
   }
   const double r = block.radius, tol = std::min(machine.arcTolerance, 0.5 * r);
   const double step = 2.0 * std::acos(1.0 - tol / r);
-  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(block.sweep) / step)));
+  // At most 100,000 chords: an arc of absurd radius is bounded work too.
+  const int pieces = std::clamp(static_cast<int>(std::min(1e5, std::ceil(std::abs(block.sweep) / step))), 1, 100000);
   const double length = block.length();
   Eigen::Vector3d from = block.start;
   for (int i = 1; i <= pieces; ++i) {
@@ -147,6 +157,10 @@ void feed(detail::Planner& planner, const MachineModel& machine, const Block& bl
 template <class Next>
 SimulationResult run(const MachineModel& machine, const SimulationOptions& options, Next&& next,
                      const std::function<ReaderStats()>& stats) {
+  checkMachine(machine);
+  if (!(options.tracePeriod == 0.0 || (options.tracePeriod >= kMinTracePeriod && options.tracePeriod <= 3600.0)))
+    throw InputError("trace period " + number(options.tracePeriod) + " s must be 0 (no trace) or between " +
+                     number(kMinTracePeriod) + " s and 1 h, e.g. 0.001 s (LinuxCNC's servo cycle)");
   SimulationResult result;
   Collector collector(machine, options, result);
   detail::RunTimer runs([&](const detail::Segment& s, const detail::BlockTiming& t) { collector.commit(s, t); },

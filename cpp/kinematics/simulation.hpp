@@ -63,6 +63,11 @@ struct SimulationResult {
   std::vector<TraceSample> trace;   // when SimulationOptions::tracePeriod > 0
 };
 
+// A trace samples at most every kMinTracePeriod (a tenth of the fastest servo cycle), and keeps at most
+// kMaxTraceSamples in memory (a sink, onTraceSample, takes any number).
+inline constexpr double kMinTracePeriod = 1e-4;  // s
+inline constexpr long kMaxTraceSamples = 5000000;
+
 struct SimulationOptions {
   bool keepBlocks = false;
   double tracePeriod = 0.0;                               // s between trace samples; 0: no trace

@@ -73,7 +73,7 @@ public:
       throw InputError("bottom face " + faceName(bottomFace) + " does not exist: the part has " +
                        std::to_string(faces.Extent()) + " faces (Face1 to Face" + std::to_string(faces.Extent()) + ")");
     bottom_ = TopoDS::Face(faces(bottomFace));
-    const Reach reach = reachability(part, bottom_);
+    const Reach reach = reachability(bottom_);
     const std::string partly = checkReach(reach, faceName(bottomFace));
     if (!partly.empty()) warnings.push_back(partly);
     // Every face of the part holds the tool up (a pass must not cut through the part to reach the bottom

@@ -5,7 +5,6 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
-#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
@@ -16,13 +15,6 @@ namespace hsm::toolpath {
 namespace {
 constexpr int kGrid = 32;
 
-bool belongsToSolid(const TopoDS_Shape& part, const TopoDS_Face& face) {
-  for (TopExp_Explorer solid(part, TopAbs_SOLID); solid.More(); solid.Next())
-    for (TopExp_Explorer it(solid.Current(), TopAbs_FACE); it.More(); it.Next())
-      if (it.Current().IsSame(face)) return true;
-  return false;
-}
-
 std::string percent(double share) {
   std::ostringstream text;
   text.precision(3);
@@ -31,16 +23,14 @@ std::string percent(double share) {
 }
 }  // namespace
 
-Reach reachability(const TopoDS_Shape& part, const TopoDS_Face& face) {
+Reach reachability(const TopoDS_Face& face) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (surface.IsNull()) throw InputError("the face has no surface: pass a face of a solid or a surface model");
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
   const geometry::UVClassifier inside(face);
-  const bool solid = belongsToSolid(part, face);
   // Natural normals Su × Sv at the samples inside the face; the tool side follows from the orientation.
   std::vector<double> nz;
-  double middle = 0.0, sum = 0.0;
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const double u = u0 + (u1 - u0) * (i + 0.5) / kGrid, v = v0 + (v1 - v0) * (j + 0.5) / kGrid;
@@ -51,18 +41,11 @@ Reach reachability(const TopoDS_Shape& part, const TopoDS_Face& face) {
       const gp_Vec n = su.Crossed(sv);
       if (n.Magnitude() < 1e-14) continue;  // a singular point (a cone's apex): no normal
       nz.push_back(n.Z() / n.Magnitude());
-      sum += nz.back();
-      if (i == kGrid / 2 && j == kGrid / 2) middle = nz.back();
     }
   Reach reach;
   reach.samples = static_cast<int>(nz.size());
   if (nz.empty()) return reach;
-  if (solid) {
-    reach.toolSide = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
-  } else {
-    const double lean = std::abs(middle) > kReachSlope ? middle : sum;
-    reach.toolSide = lean >= 0.0 ? 1.0 : -1.0;
-  }
+  reach.toolSide = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
   for (double z : nz) {
     const double up = reach.toolSide * z;
     (up > kReachSlope ? reach.up : up < -kReachSlope ? reach.down : reach.vertical) += 1.0;
@@ -82,9 +65,11 @@ std::string checkReach(const Reach& reach, const std::string& faceName) {
                      "only touches it with its side; finish walls with a Z-level (waterline) contour, and pick "
                      "the bottom face for this operation");
   if (reach.up == 0.0)
-    throw InputError(faceName + " faces down (" + percent(reach.down) + " of it looks below the horizontal, "
-                     "the rest is vertical): a tool along +Z cannot reach it without cutting through the part; "
-                     "finish it from a second setup with the part turned over, or with a tilted (5-axis) tool");
+    throw InputError(faceName + " faces down (" + percent(reach.down) + " of it looks below the horizontal" +
+                     (reach.vertical > 0.0 ? ", the rest is vertical" : "") + "): a tool along +Z cannot reach it "
+                     "without cutting through the part; finish it from a second setup with the part turned over, or "
+                     "with a tilted (5-axis) tool. (A face of a surface model whose normal points the wrong way: "
+                     "reverse it, Face.reversed() in FreeCAD.)");
   if (reach.up < 1.0)
     return percent(1.0 - reach.up) + " of " + faceName + " is vertical or faces down: a tool along +Z cannot "
            "reach those parts; they are left unmachined (finish them from another setup or with a tilted tool)";

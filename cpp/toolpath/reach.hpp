@@ -1,16 +1,15 @@
 // Which parts of a face a 3-axis tool along +Z can reach (issue 10: a face that looks down, or a wall,
 // was "finished" by passes through the part).
 //
-// The face is sampled on a grid of its parameters, inside its boundaries. At each sample the normal on
-// the tool's side is taken: the outward normal when the face belongs to a solid (the material is inside),
-// otherwise the side its normal points to at the middle of the face, turned up (a surface model gives no
-// inside). A sample is reachable when that normal points up by more than kReachSlope (1°): a ball then
-// rests on the face from above. Vertical parts are reached only by the ball's side (waterline work) and
-// parts that face down not at all.
+// The face is sampled on a grid of its parameters, inside its boundaries. The tool is on the side the
+// face's normal points to, as FreeCAD shows it (the surface's normal, turned when the face is reversed):
+// for a face of a solid that is out of the material; a face of a surface model that points the wrong way
+// is refused with the hint to reverse it. A sample is reachable when that normal points up by more than
+// kReachSlope (1°): a ball then rests on the face from above. Vertical parts are reached only by the
+// ball's side (waterline work) and parts that face down not at all.
 #pragma once
 
 #include <TopoDS_Face.hxx>
-#include <TopoDS_Shape.hxx>
 
 #include <string>
 
@@ -24,8 +23,7 @@ struct Reach {
   double toolSide = 1.0;  // +1: the tool is on the side of the surface's natural normal Su × Sv, −1 the other
 };
 
-// `part` tells whether the face has an inside (it belongs to a solid of the part).
-Reach reachability(const TopoDS_Shape& part, const TopoDS_Face& face);
+Reach reachability(const TopoDS_Face& face);
 
 // Refuses a face the tool cannot reach at all (InputError naming `faceName`, why, and what can finish it);
 // returns a warning (empty when none) when only part of it is reachable.

@@ -185,3 +185,18 @@ TEST(Direction, StopAndGoLossFollowsTheSCurve) {
   EXPECT_DOUBLE_EQ(stopAndGoLoss(100.0, 2500.0, 5000.0), 2.0 * std::sqrt(0.02));    // a never reached
   EXPECT_DOUBLE_EQ(stopAndGoLoss(500.0, 1000.0, 1e6), 0.5 + 0.001);                 // v/a + a/J
 }
+
+TEST(Direction, AFaceThatLooksDownIsRefusedAndWorkIsBounded) {
+  TopoDS_Face under = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), 0, 100, 0, 100).Face();
+  under.Reverse();  // the underside of a block: its normal, out of the material, is −Z
+  try {
+    optimalDirection(under, case1(6000), DirectionSettings{});
+    FAIL() << "a face that looks down was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("looks down"), std::string::npos) << e.what();
+  }
+  const TopoDS_Face flat = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), 0, 100, 0, 100).Face();
+  for (const DirectionSettings& s : {DirectionSettings{100000, 100000, 1.0, 0.95}, DirectionSettings{1, 50, 1.0, 0.95},
+                                     DirectionSettings{500, 500, 0.01, 0.95}, DirectionSettings{50, 50, 1e-9, 0.95}})
+    EXPECT_THROW(optimalDirection(flat, case1(6000), s), InputError) << s.gridU << " " << s.angleStepDeg;
+}

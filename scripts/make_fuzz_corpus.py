@@ -1,0 +1,75 @@
+"""Writes the seed inputs of the fuzz corpus (tests/fuzz/corpus/<harness>/seed_*): run with freecadcmd.
+
+    freecadcmd scripts/make_fuzz_corpus.py
+
+Seeds are real inputs the harnesses accept (the master bottom feature and small parts), and the bad inputs
+of issue 10, so that fuzzing starts from both sides of the parsers. Inputs found by `make fuzz` are kept
+beside them under their libFuzzer names; `make test` replays every file.
+"""
+import os
+import sys
+
+import FreeCAD
+import Part
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+CORPUS = os.path.join(REPO, "tests", "fuzz", "corpus")
+
+
+def write(harness, name, text):
+    folder = os.path.join(CORPUS, harness)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "seed_" + name), "w") as stream:
+        stream.write(text)
+
+
+def master_feature():
+    shape = Part.Shape()
+    shape.importBrepFromString(open(os.path.join(REPO, "tests", "data", "master_bottom_feature.brep")).read())
+    return shape
+
+
+def plate_with_hole():
+    """A 30 x 20 x 5 mm plate with a 6 mm through hole: a bottom face (its top) with an inner wire."""
+    return Part.makeBox(30, 20, 5).cut(Part.makeCylinder(3, 5, FreeCAD.Vector(15, 10, 0)))
+
+
+def gcode_seeds():
+    for name in ("linuxcnc_fixed.ngc", "siemens840d_fixed.mpf"):
+        write("gcode", name, open(os.path.join(REPO, "tests", "golden", name)).read())
+    cases = {
+        "arcs_and_modes": "G21 G90 G17\nG64 P0.01\nG0 X0 Y0 Z5\nG1 Z-1 F600\nG2 X10 Y0 R5\nG3 X0 Y0 I-5 J0\n"
+                          "G91 G1 X1 Y1\nG90 G61 G1 X5\nG4 P0.5\nM30\n",
+        "siemens": "CYCLE832(0.01,_ORI_FINISH,1)\nG642 SOFT\nG0 X0 Y0 Z10\nG1 Z0 F2000\nG2 X20 Y0 CR=10\n"
+                   "TRANS X5\nG1 X30\nBRISK G60 G1 Y10\nM30\n",
+        "exponent": "G1 X1e400 F100\n",
+        "nan": "G1 X0 F100\nG1 Y nan\nG1 X5\n",
+        "inf": "G1 X inf F100\n",
+        "bare_arc": "G2\n",
+        "negative_dwell": "G4 P-5\n",
+        "binary": "\x00\x01\xff\xfeG1\x80X\x81\n",
+        "feed_zero": "G1 X10 F0\n",
+    }
+    for name, text in cases.items():
+        write("gcode", name, text)
+
+
+def brep_seeds():
+    feature = master_feature()
+    boundaries = Part.Compound([feature.Edge13, feature.Edge14, feature.Face4])
+    write("brep_curvenet", "master_feature", "0.5 5 0 2\n" + boundaries.exportBrepToString())
+    write("brep_curvenet", "master_feature_median", "0.75 2 4 2\n" + boundaries.exportBrepToString())
+    lines = Part.Compound([Part.makeLine((0, 0, 0), (50, 0, 0)), Part.makeLine((0, 20, 0), (50, 22, 0))])
+    write("brep_curvenet", "two_lines", "0.25 1 1 1\n" + lines.exportBrepToString())
+    plate = plate_with_hole()
+    top = [i for i, f in enumerate(plate.Faces, 1) if f.Surface.__class__.__name__ == "Plane"
+           and abs(f.normalAt(0, 0).z - 1) < 1e-9][0]
+    write("brep_finishing", "plate_with_hole", "%d 4 0.05 0\n" % top + plate.exportBrepToString())
+    write("brep_finishing", "plate_underside", "%d 4 0.05 0\n" % [
+        i for i, f in enumerate(plate.Faces, 1) if abs(f.normalAt(0, 0).z + 1) < 1e-9][0] + plate.exportBrepToString())
+    write("brep_finishing", "master_feature", "4 4 0.05 30\n" + feature.exportBrepToString())
+
+
+gcode_seeds()
+brep_seeds()
+print("fuzz corpus seeds written to %s" % CORPUS)
