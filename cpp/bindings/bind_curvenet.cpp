@@ -42,7 +42,9 @@ curvenet::NetSettings makeSettings(double step, std::optional<Eigen::Vector3d> d
 
 py::list regions(const curvenet::CurveNet& net, const std::string& faceBrep) {
   py::list result;
-  for (const auto& region : curvenet::areaRegions(net, geometry::singleFace(geometry::readBrep(faceBrep))))
+  const TopoDS_Face face = geometry::singleFace(geometry::readBrep(faceBrep));
+  const auto found = guarded("split of the bottom face", [&] { return curvenet::areaRegions(net, face); });
+  for (const auto& region : found)
     result.append(py::make_tuple(region.area.lower, region.area.upper, geometry::writeBrep(region.faces),
                                  region.surfaceArea));
   return result;
@@ -59,7 +61,10 @@ void bindCurvenet(py::module_& m) {
            py::arg("n"), "(n, 3) points equally spaced by arc length")
       .def("to_brep", [](const BSplineCurve& c) { return geometry::edgeBrep(c.curve); }, "BREP text of an edge");
 
-  m.def("curve_from_brep", [](const std::string& brep) { return BSplineCurve{geometry::toBSpline(geometry::readBrep(brep))}; },
+  m.def("curve_from_brep",
+        [](const std::string& brep) {
+          return guarded("conversion of the curve", [&] { return BSplineCurve{geometry::toBSpline(geometry::readBrep(brep))}; });
+        },
         py::arg("brep"), "Exact B-spline of an edge, a wire or a chain of edges given as BREP text");
   m.def("curve_from_points", [](const geometry::PointArray& points) { return BSplineCurve{geometry::interpolatePoints(points)}; },
         py::arg("points"), "Cubic B-spline through an (N,3) array of points along a curve");
@@ -122,19 +127,25 @@ void bindCurvenet(py::module_& m) {
       "intermediate_curve",
       [](const BSplineCurve& a, const BSplineCurve& b, double k, double step, std::optional<Eigen::Vector3d> direction,
          std::optional<std::string> face, double fitTolerance) {
-        return curvenet::intermediateCurve(a.curve, b.curve, k, makeSettings(step, direction, face, fitTolerance, 0.0));
+        const auto settings = makeSettings(step, direction, face, fitTolerance, 0.0);
+        return guarded("intermediate curve", [&] { return curvenet::intermediateCurve(a.curve, b.curve, k, settings); });
       },
       py::arg("a"), py::arg("b"), py::arg("k"), py::arg("step"), py::arg("direction") = py::none(),
       py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01);
   m.def(
       "curve_net",
       [](const BSplineCurve& b1, const BSplineCurve& b2, double k, double step, const std::string& mode,
-         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap) {
-        return curvenet::curveNet({b1.curve, b2.curve}, k, curvenet::parseNetMode(mode),
-                                  makeSettings(step, direction, face, fitTolerance, minGap));
+         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap,
+         const py::object& progress) {
+        auto settings = makeSettings(step, direction, face, fitTolerance, minGap);
+        settings.progress = progressCallback(progress);
+        const auto netMode = curvenet::parseNetMode(mode);
+        py::gil_scoped_release release;
+        return guarded("curve net", [&] { return curvenet::curveNet({b1.curve, b2.curve}, k, netMode, settings); });
       },
       py::arg("b1"), py::arg("b2"), py::arg("k"), py::arg("step"), py::arg("mode"), py::arg("direction") = py::none(),
-      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01, py::arg("min_gap") = 2.0);
+      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01, py::arg("min_gap") = 2.0,
+      py::arg("progress") = py::none());
   m.def(
       "guidance_curves",
       [](const BSplineCurve& b1, const BSplineCurve& b2, double step, double kMedian, double k,
@@ -145,7 +156,8 @@ void bindCurvenet(py::module_& m) {
         settings.kMedian = kMedian;
         settings.k = k;
         settings.minStep = minStep;
-        const auto result = curvenet::guidanceCurves({b1.curve, b2.curve}, settings);
+        const auto result =
+            guarded("4-step method", [&] { return curvenet::guidanceCurves({b1.curve, b2.curve}, settings); });
         return py::make_tuple(result.net, result.report);
       },
       py::arg("b1"), py::arg("b2"), py::arg("step") = 5.0, py::arg("k_median") = 0.5, py::arg("k") = 0.75,

@@ -37,7 +37,7 @@ void bindDirection(py::module_& m) {
         const DirectionSettings s{gridU, gridV, angleStep, reportAlpha};
         const TopoDS_Face face = geometry::singleFace(geometry::readBrep(faceBrep));
         py::gil_scoped_release release;
-        return optimalDirection(face, c, s);
+        return guarded("machining direction", [&] { return optimalDirection(face, c, s); });
       },
       py::arg("face_brep"), py::arg("tool_radius"), py::arg("scallop"), py::arg("feed"), py::arg("spindle_speed"),
       py::arg("teeth"), py::arg("acceleration"), py::arg("jerk") = 0.0, py::arg("stop_jerk") = 0.0, py::arg("grid_u") = 50,

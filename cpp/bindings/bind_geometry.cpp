@@ -37,7 +37,8 @@ void bindGeometry(py::module_& module) {
           "(xmin, ymin, zmin, xmax, ymax, zmax) in mm, None for an empty shape");
 
   module.def(
-      "summarize_brep", [](const std::string& brep) { return geometry::summarize(geometry::readBrep(brep)); },
+      "summarize_brep",
+      [](const std::string& brep) { return guarded("shape summary", [&] { return geometry::summarize(geometry::readBrep(brep)); }); },
       py::arg("brep"), "Topology counts, volume, area, length, bounds and validity of a BREP shape");
   module.def(
       "sample_curve_brep",

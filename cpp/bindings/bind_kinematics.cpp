@@ -81,7 +81,7 @@ SimulationResult run(std::istream& stream, const MachineModel& machine, bool kee
   options.keepBlocks = keepBlocks;
   options.tracePeriod = tracePeriod;
   py::gil_scoped_release release;  // long programs: let other Python threads (the GUI) run
-  return simulate(stream, machine, reading, options);
+  return guarded("feed-rate simulation", [&] { return simulate(stream, machine, reading, options); });
 }
 }  // namespace
 

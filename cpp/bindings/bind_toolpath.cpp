@@ -59,34 +59,38 @@ py::tuple output(const Toolpath& path) {
 void bindToolpath(py::module_& m) {
   m.def(
       "parallel_finishing",
-      [](const std::string& part, int bottomFace, double angle, const py::dict& settings) {
-        const FinishingSettings s = settingsFrom(settings);
+      [](const std::string& part, int bottomFace, double angle, const py::dict& settings, const py::object& progress) {
+        FinishingSettings s = settingsFrom(settings);
+        s.progress = progressCallback(progress);
         const TopoDS_Shape shape = geometry::readBrep(part);
         Toolpath path;
         {
           py::gil_scoped_release release;
-          path = parallelPlaneFinishing(shape, bottomFace, angle, s);
+          path = guarded("parallel-plane finishing", [&] { return parallelPlaneFinishing(shape, bottomFace, angle, s); });
         }
         return output(path);
       },
       py::arg("part_brep"), py::arg("bottom_face"), py::arg("angle_deg"), py::arg("settings"),
+      py::arg("progress") = py::none(),
       "Parallel-plane ball-end finishing: (moves (N,4) x, y, z, rapid flag; stats dict)");
   m.def(
       "guide_finishing",
       [](const std::string& part, int bottomFace, const std::vector<std::pair<BSplineCurve, BSplineCurve>>& areas,
-         const Eigen::Vector3d& direction, const py::dict& settings) {
-        const FinishingSettings s = settingsFrom(settings);
+         const Eigen::Vector3d& direction, const py::dict& settings, const py::object& progress) {
+        FinishingSettings s = settingsFrom(settings);
+        s.progress = progressCallback(progress);
         const TopoDS_Shape shape = geometry::readBrep(part);
         std::vector<GuideArea> guides;
         for (const auto& [a, b] : areas) guides.push_back({a.curve, b.curve});
         Toolpath path;
         {
           py::gil_scoped_release release;
-          path = guideCurveFinishing(shape, bottomFace, guides, direction, s);
+          path = guarded("guide-curve finishing", [&] { return guideCurveFinishing(shape, bottomFace, guides, direction, s); });
         }
         return output(path);
       },
       py::arg("part_brep"), py::arg("bottom_face"), py::arg("areas"), py::arg("direction"), py::arg("settings"),
+      py::arg("progress") = py::none(),
       "Guide-curve finishing, areas as (first, second) curve pairs: (moves (N,4), stats dict)");
 }
 

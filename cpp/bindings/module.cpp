@@ -3,10 +3,38 @@
 #include "bindings/bindings.hpp"
 
 #include "common/error.hpp"
+#include "common/progress.hpp"
+
+#include <memory>
 
 #include <Standard_Failure.hxx>
 
 namespace py = pybind11;
+
+namespace hsm::bindings {
+namespace {
+struct HeldCallable {
+  py::object callable;
+  ~HeldCallable() {
+    py::gil_scoped_acquire gil;
+    callable = py::object();
+  }
+};
+}  // namespace
+
+ProgressCallback progressCallback(const py::object& callable) {
+  if (callable.is_none()) return {};
+  if (!PyCallable_Check(callable.ptr()))
+    throw InputError("progress must be a callable progress(done) returning False to cancel, or None");
+  auto held = std::make_shared<HeldCallable>();
+  held->callable = callable;
+  return [held](double done) {
+    py::gil_scoped_acquire gil;
+    const py::object answer = held->callable(done);
+    return answer.is_none() || answer.cast<bool>();
+  };
+}
+}  // namespace hsm::bindings
 
 PYBIND11_MODULE(_core, module) {
   module.doc() = "HSM Planner C++ core (OCCT + Eigen)";
@@ -25,6 +53,9 @@ PYBIND11_MODULE(_core, module) {
                       (std::string("OCCT error in the HSM Planner core: ") + failure.GetMessageString()).c_str());
     }
   });
+
+  // The user stopped a computation (FreeCAD's Esc, or a progress callback returning False).
+  py::register_exception<hsm::Cancelled>(module, "Cancelled", PyExc_Exception);
 
   hsm::bindings::bindGeometry(module);
   hsm::bindings::bindCurvenet(module);

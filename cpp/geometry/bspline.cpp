@@ -86,7 +86,8 @@ Handle(Geom_BSplineCurve) interpolatePoints(const PointArray& points) {
 }
 
 PointArray sampleByArcLength(const Handle(Geom_Curve)& curve, int count) {
-  if (count < 2) throw InputError("sample count is " + std::to_string(count) + ": ask for at least 2 points");
+  if (count < 2 || count > 1000000)
+    throw InputError("sample count is " + std::to_string(count) + ": ask for 2 to 1,000,000 points");
   GeomAdaptor_Curve adaptor(curve);
   GCPnts_UniformAbscissa uniform(adaptor, count);
   if (!uniform.IsDone() || uniform.NbPoints() != count)

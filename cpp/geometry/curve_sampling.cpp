@@ -43,7 +43,6 @@ TopoDS_Wire toWire(const TopoDS_Shape& curve) {
 }
 
 PointArray sampleByArcLength(const TopoDS_Shape& curve, int count) {
-  if (count < 2) throw InputError("sample count is " + std::to_string(count) + ": ask for at least 2 points");
   return sampleByArcLength(Handle(Geom_Curve)(toBSpline(curve)), count);
 }
 

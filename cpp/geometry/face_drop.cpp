@@ -113,8 +113,10 @@ bool UVLocator::guess(double x, double y, double& u, double& v) const {
 }
 
 FaceDropper::FaceDropper(const TopoDS_Face& face, const Eigen::Vector3d& axis)
-    : face_(face), surface_(BRep_Tool::Surface(face)), axis_(axis.normalized()) {
+    : face_(face), surface_(face.IsNull() ? Handle(Geom_Surface)() : BRep_Tool::Surface(face)), axis_(axis.normalized()) {
   if (surface_.IsNull()) throw InputError("the face has no surface: pass a face of the model");
+  if (!axis.allFinite() || axis.norm() < 1e-12)
+    throw InputError("the axis to drop points along is zero or not finite: pass a unit vector, e.g. (0, 0, 1)");
   analysis_ = new ShapeAnalysis_Surface(surface_);
   surface_->Bounds(u0_, u1_, v0_, v1_);
   if (std::abs(axis_.z()) > 0.999) {

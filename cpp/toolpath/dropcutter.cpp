@@ -1,6 +1,7 @@
 #include "toolpath/dropcutter.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -160,19 +161,13 @@ Contact BallDropCutter::drop(double x, double y) const {
 void BallDropCutter::dropAll(geometry::PointArray& points, std::vector<int>* faces, int threads) const {
   const Eigen::Index n = points.rows();
   if (faces) faces->assign(static_cast<size_t>(n), 0);
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = static_cast<int>(std::min<Eigen::Index>(threads, std::max<Eigen::Index>(1, n / 2000)));
-  auto work = [&](Eigen::Index from, Eigen::Index to) {
+  parallelSlices(static_cast<long>(n), threads, 2000, [&](long from, long to) {
     for (Eigen::Index i = from; i < to; ++i) {
       const Contact c = drop(points(i, 0), points(i, 1));
       points(i, 2) = c.z;
       if (faces) (*faces)[static_cast<size_t>(i)] = c.face;
     }
-  };
-  if (threads == 1) return work(0, n);
-  std::vector<std::thread> pool;
-  for (int k = 0; k < threads; ++k) pool.emplace_back(work, n * k / threads, n * (k + 1) / threads);
-  for (auto& t : pool) t.join();
+  });
 }
 
 }  // namespace hsm::toolpath

@@ -1,6 +1,7 @@
 #include "toolpath/finishing.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/text.hpp"
 #include "curvenet/plane_cuts.hpp"
 #include "geometry/face_drop.hpp"
@@ -145,11 +146,8 @@ public:
 
   // Tips along plan points, on the threads asked for (each slice of the pass starts its own Newton).
   void dropAll(geometry::PointArray& points, std::vector<char>& onBottom) const {
-    const Eigen::Index n = points.rows();
-    onBottom.assign(static_cast<size_t>(n), 0);
-    int threads = settings_.threads > 0 ? settings_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    threads = int(std::min<Eigen::Index>(threads, std::max<Eigen::Index>(1, n / 500)));
-    auto work = [&](Eigen::Index from, Eigen::Index to) {
+    onBottom.assign(static_cast<size_t>(points.rows()), 0);
+    parallelSlices(static_cast<long>(points.rows()), settings_.threads, 500, [&](long from, long to) {
       SurfaceBallDrop::Result state;
       bool haveGuess = false;
       for (Eigen::Index i = from; i < to; ++i) {
@@ -157,11 +155,7 @@ public:
         points(i, 2) = dropTip(points(i, 0), points(i, 1), state, haveGuess, &bottom);
         onBottom[static_cast<size_t>(i)] = bottom;
       }
-    };
-    if (threads == 1) return work(0, n);
-    std::vector<std::thread> pool;
-    for (int k = 0; k < threads; ++k) pool.emplace_back(work, n * k / threads, n * (k + 1) / threads);
-    for (auto& t : pool) t.join();
+    });
   }
   // The stepover on a flat face.
   double flatStep() const {
@@ -425,6 +419,13 @@ std::vector<Vector3> surfaceLink(const Context& context, const Vector3& from, co
   return link;
 }
 
+// A feed move to `p`, unless the tool is there already (a pass that starts where the previous one ended:
+// a zero-length G1 is noise that posts round away).
+void addFeed(Toolpath& path, const Vector3& p) {
+  if (!path.moves.empty() && (path.moves.back().point - p).norm() < 1e-4) return;
+  path.moves.push_back({p, false});
+}
+
 // Links passes into moves: zigzag neighbours by a surface-following G1 when close, else retract.
 Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) {
   const FinishingSettings& s = context.settings();
@@ -452,13 +453,13 @@ Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) 
     if (inside && s.zigzag && (start - path.moves.back().point).norm() <= linkLimit)
       link = surfaceLink(context, path.moves.back().point, start);
     if (!link.empty()) {
-      for (const Vector3& p : link) path.moves.push_back({p, false});
+      for (const Vector3& p : link) addFeed(path, p);
     } else {
       if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});
       path.moves.push_back({Vector3(start.x(), start.y(), path.safeHeight), true});
       path.moves.push_back({Vector3(start.x(), start.y(), start.z() + 1.0), true});
     }
-    for (const Vector3& p : pass) path.moves.push_back({p, false});
+    for (const Vector3& p : pass) addFeed(path, p);
     inside = true;
   }
   if (inside) path.moves.push_back({Vector3(path.moves.back().point.x(), path.moves.back().point.y(), path.safeHeight), true});

@@ -54,16 +54,18 @@ def intermediate_curve(a, b, k, step, direction=None, face=None, fit_tolerance=0
                                     _face(face), float(fit_tolerance))
 
 
-def curve_net(b1, b2, k, step, direction=None, mode="b1_to_b2", face=None, min_gap=2.0, fit_tolerance=0.01):
+def curve_net(b1, b2, k, step, direction=None, mode="b1_to_b2", face=None, min_gap=2.0, fit_tolerance=0.01,
+              progress=None):
     """A net of curves between boundaries b1 and b2; mode is one of MODES. Returns a CurveNet.
 
     The net grows from its starting curve until a new curve would come closer than min_gap (mm) to its target.
     net.curves runs across the feature from B1 to B2; net.composed_areas() gives MA_1, MA_2… of the paper.
+    progress: a callable progress(done) (share done, 0..1) that cancels by returning False.
     """
     if mode not in MODES:
         raise ValueError("mode %r is unknown: use one of %s" % (mode, ", ".join(MODES)))
     return _core.curve_net(as_curve(b1, "b1"), as_curve(b2, "b2"), float(k), float(step), mode, _direction(direction),
-                           _face(face), float(fit_tolerance), float(min_gap))
+                           _face(face), float(fit_tolerance), float(min_gap), progress)
 
 
 def guidance_curves(b1, b2, direction=None, face=None, step=5.0, k_median=0.5, k=0.75, min_gap=2.0,

@@ -41,11 +41,14 @@ def _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance, t
 
 
 def parallel_finishing(part, bottom_face, angle_deg=0.0, tool_diameter=4.0, cusp_height=0.01, tolerance=0.01,
-                       sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None):
-    """Planes containing the tool axis at angle_deg from X, spaced for the cusp height."""
+                       sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None, progress=None):
+    """Planes containing the tool axis at angle_deg from X, spaced for the cusp height.
+
+    progress: a callable progress(done) called with the share done (0..1); returning False cancels the
+    computation (hsmplanner.Cancelled is raised)."""
     return _core.parallel_finishing(as_brep(part), face_number(bottom_face), float(angle_deg),
                                     _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
-                                              threads, extension))
+                                              threads, extension), progress)
 
 
 def guide_areas(areas):
@@ -60,14 +63,16 @@ def guide_areas(areas):
 
 
 def guide_finishing(part, bottom_face, areas, direction=(1.0, 0.0, 0.0), tool_diameter=4.0, cusp_height=0.01,
-                    tolerance=0.01, sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None):
-    """Passes morphed between the guides of each area, areas in the order given (a CurveNet: B1 to B2)."""
+                    tolerance=0.01, sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None,
+                    progress=None):
+    """Passes morphed between the guides of each area, areas in the order given (a CurveNet: B1 to B2).
+    progress: as for parallel_finishing."""
     direction = np.asarray(tuple(direction), dtype=float)
     if isinstance(areas, _core.CurveNet):
         direction = np.asarray(areas.direction, dtype=float)
     return _core.guide_finishing(as_brep(part), face_number(bottom_face), guide_areas(areas), direction,
                                  _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
-                                           threads, extension))
+                                           threads, extension), progress)
 
 
 def path_length(moves, rapid=False):

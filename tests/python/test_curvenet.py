@@ -79,7 +79,7 @@ class BadInput(unittest.TestCase):
         cases = [
             (dict(k=1.0), ValueError, r"K = 1 is outside \]0,1\["),
             (dict(k=0.0), ValueError, r"K = 0 is outside"),
-            (dict(step=0.0), ValueError, "step P = 0 mm must be positive"),
+            (dict(step=0.0), ValueError, "step P = 0 mm must be at least 0.01 mm"),
             (dict(step=500.0), ValueError, "longer than the common extent"),
             (dict(direction=(0, 0, 1)), ValueError, "along the tool axis"),
             (dict(direction=(1, 0)), ValueError, "3 components"),
@@ -154,12 +154,25 @@ class GuideCurveNetObject(unittest.TestCase):
         self.document.recompute()
         self.assertAlmostEqual(net.Shape.Edges[-1].BoundBox.XMax, 120.0, delta=0.05)
 
-    def test_bad_k_marks_the_object_and_keeps_the_document(self):
+    def test_values_outside_the_panel_ranges_are_clamped_at_the_door(self):
         net = self.make(Mode="Boundary 1 to boundary 2")
-        net.K = 1.5
+        for prop, bad, clamped in (("K", 1.5, 0.99), ("K", -2.0, 0.01), ("Step", 0.003, 0.5), ("MinGap", 0.0, 0.01),
+                                   ("KMedian", float("nan"), 0.01), ("FitTolerance", 1e-9, 0.0001)):
+            with self.subTest(prop=prop, value=bad):
+                setattr(net, prop, bad)
+                value = getattr(net, prop)
+                self.assertAlmostEqual(getattr(value, "Value", value), clamped)
+        net.K, net.Step = 0.5, 5.0
+        self.document.recompute()
+        self.assertTrue(net.isValid())
+
+    def test_an_error_in_the_core_marks_the_object_and_keeps_the_document(self):
+        net = self.make(Mode="Boundary 1 to boundary 2")
+        net.Step = 40.0
+        net.Direction = FreeCAD.Vector(0, 0, 1)  # along the tool axis: the core refuses it
         self.document.recompute()
         self.assertIn("Invalid", net.State)
-        net.K = 0.5
+        net.Direction = FreeCAD.Vector(0, 0, 0)
         self.document.recompute()
         self.assertTrue(net.isValid())
 

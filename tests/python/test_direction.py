@@ -12,6 +12,7 @@ import Part
 import hsmplanner
 from hsmplanner import direction
 from hsmplanner.app import direction_object, finishing, finishing_ops, master_feature_object, surfaces
+from hsmplanner.app.direction_object import FEED_FROM
 from hsmplanner.app.compat import create_job
 from hsmplanner.app.master_feature import make_master_bottom_feature
 from helpers import temporary_directory
@@ -160,9 +161,13 @@ class DocumentObject(unittest.TestCase):
     def test_bad_inputs_leave_it_invalid_with_a_message(self):
         a = direction_object.create(document=self.document, ToolDiameter=4.0)
         self.addCleanup(self.document.removeObject, a.Name)
-        cases = [({}, "no face"), (dict(Face=(self.part, self.part.BottomFace), Teeth=0), "Teeth"),
-                 (dict(Teeth=2, Feed=0.0), "Feed"),
-                 (dict(Feed=4000.0, Machine=direction_object.ACCELERATION_ONLY, Choice="Fastest simulated"),
+        a.Teeth, a.Feed, a.Grid = 0, 0.0, 100000  # outside the panel's ranges: clamped at the door
+        self.assertEqual((a.Teeth, a.Feed, a.Grid), (1, 1.0, 500))
+        a.Teeth, a.Feed, a.Grid = 2, 4000.0, 50
+        cases = [({}, "no face"),
+                 (dict(Face=(self.part, self.part.BottomFace), FeedFrom=FEED_FROM[1], FeedPerTooth=5.0),
+                  "too small for fz"),
+                 (dict(FeedFrom=FEED_FROM[0], Machine=direction_object.ACCELERATION_ONLY, Choice="Fastest simulated"),
                   "choose a Machine"),
                  (dict(Machine="mikron-ucp710-840d", Choice="Directional beams", ScanFrom=5000.0, ScanTo=1000.0),
                   "ScanFrom < ScanTo")]

@@ -46,7 +46,7 @@ class ToolpathApi(unittest.TestCase):
                 hsmplanner.parallel_finishing(FEATURE.shape, FEATURE.bottom_face, **kwargs)
         with self.assertRaisesRegex(ValueError, "not a face name"):
             hsmplanner.parallel_finishing(FEATURE.shape, "Edge3")
-        with self.assertRaisesRegex(ValueError, "face 99 does not exist"):
+        with self.assertRaisesRegex(ValueError, "bottom face Face99 does not exist: the part has 10 faces"):
             hsmplanner.parallel_finishing(FEATURE.shape, 99)
         with self.assertRaisesRegex(ValueError, "no area"):
             hsmplanner.guide_finishing(FEATURE.shape, FEATURE.bottom_face, [])

@@ -7,6 +7,7 @@ import FreeCAD
 
 from hsmplanner import direction, feedsim
 
+from .property_limits import PropertyLimits
 from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
@@ -77,7 +78,17 @@ def face_shape(link):
         raise ValueError("%s has no %s: pick the face again" % (obj.Label, faces[0])) from None
 
 
-class MachiningDirection(InMemoryResult):
+# The task panel's ranges (mm, mm/min, rpm, m/s², degrees); also the work bounds of the core's sampling.
+LIMITS = {"ToolDiameter": (0.1, 100.0), "Teeth": (1, 20), "Scallop": (0.0001, 1.0), "Feed": (1.0, 100000.0),
+          "FeedPerTooth": (0.001, 5.0), "SpindleSpeed": (1.0, 100000.0), "Acceleration": (0.01, 100.0),
+          "ScanFrom": (0.0, 100000.0), "ScanTo": (0.0, 100000.0), "ScanSteps": (2, 100),
+          "ValidationStep": (1.0, 90.0), "Grid": (2, 500), "AngleStep": (0.01, 1.0), "Alpha": (0.01, 1.0),
+          "Tolerance": (0.001, 1.0), "Arrows": (0, 20000)}
+
+
+class MachiningDirection(PropertyLimits, InMemoryResult):
+    LIMITS = LIMITS
+
     """The per-point result, the feed scan and the simulated planes are computed again after reopening."""
 
     def __init__(self, obj):
@@ -112,7 +123,7 @@ class MachiningDirection(InMemoryResult):
                     teeth=obj.Teeth, use_jerk=obj.UseJerk, grid=obj.Grid, angle_step=obj.AngleStep,
                     alpha=obj.Alpha, feed_mm_min=self.feed_mm_min(obj), **machine)
 
-    def execute(self, obj):
+    def compute(self, obj):
         face, options = face_shape(obj.Face), self.options(obj)
         self.result = direction.optimal_direction(face, **options)
         self.scan = self.feed_scan(obj, face, options)
@@ -181,7 +192,8 @@ def apply_to_operation(analysis, operation):
     if not is_parallel_plane_finishing(operation):
         raise ValueError("%s is not a Parallel plane finishing operation" % getattr(operation, "Label", operation))
     if analysis.Proxy.ensure_result(analysis) is None:
-        raise ValueError("%s has no result: set its Face and recompute" % analysis.Label)
+        raise ValueError("%s has no result: %s" % (analysis.Label, getattr(analysis.Proxy, "error", None)
+                                                    or "set its Face and recompute"))
     operation.Angle = analysis.ChosenAngle.Value
     if not operation.Face:
         operation.Face = analysis.Face

@@ -32,8 +32,29 @@ def program_commands(obj):
     raise ValueError("%s has no toolpath: pick a Path/CAM Job or operation" % getattr(obj, "Label", obj))
 
 
+def operations(obj):
+    """The active operations of a Job, or the object itself."""
+    if is_job(obj):
+        return [op for op in obj.Operations.Group if getattr(op, "Active", True) and hasattr(op, "Path")]
+    return [obj]
+
+
+def check_feeds(obj):
+    """Refuses operations whose tool controller has no cutting feed (FreeCAD's default controller has feeds
+    of 0 and operations then write F0): the message names the operation, the controller and the fix."""
+    for op in operations(obj):
+        controller = getattr(op, "ToolController", None)
+        if controller is None or not hasattr(controller, "HorizFeed"):
+            continue
+        if not controller.HorizFeed.Value > 0:
+            raise ValueError("%s: its tool controller '%s' has a horizontal feed of 0 mm/min, so its path cuts at "
+                             "F0, which no machine runs: set the controller's HorizFeed (and VertFeed)"
+                             % (op.Label, controller.Label))
+
+
 def simulate_object(obj, machine="mikron-ucp710-840d", blocks=True, trace_period=None):
     """Simulate a Job or an operation; FreeCAD's feeds (mm/s) are read as they are stored."""
+    check_feeds(obj)
     commands = program_commands(obj)
     if not commands:
         raise ValueError("%s has an empty toolpath: recompute it first" % obj.Label)

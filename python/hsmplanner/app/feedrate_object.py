@@ -54,7 +54,7 @@ class FeedRateAnalysis(InMemoryResult):
             return obj.MachineFile
         return obj.Machine
 
-    def execute(self, obj):
+    def compute(self, obj):
         if not is_simulatable(obj.Source):
             raise ValueError("Source is not a Path/CAM Job or operation: link one")
         self.result = simulate_object(obj.Source, self.machine(obj), blocks=True)

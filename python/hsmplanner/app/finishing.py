@@ -38,6 +38,26 @@ def net_part(net):
     return part.Shape, face_number(subs[0] if not isinstance(subs, str) else subs)
 
 
+def is_ball_end(tool):
+    """True for a ball end mill: a ToolBit on FreeCAD's ballend shape, or a legacy tool of type BallEndMill."""
+    shape = str(getattr(tool, "ShapeName", "") or getattr(tool, "BitShape", "") or "")
+    return "ballend" in shape.lower().replace(" ", "") or getattr(tool, "ToolType", "") == "BallEndMill"
+
+
+def check_tool(controller, tool):
+    """Refuses a tool controller that ball-end finishing cannot use: not a ball end mill (the cusp and gouge
+    checks assume a ball), or a cutting feed of 0 (FreeCAD's default controller: the path would cut at F0)."""
+    label = getattr(controller, "Label", "the tool controller")
+    if not is_ball_end(tool):
+        kind = getattr(tool, "ShapeName", None) or getattr(tool, "ToolType", None) or type(tool).__name__
+        raise ValueError("%s holds a %s tool (%s, Ø%s): ball-end finishing needs a ball end mill; add one "
+                         "(Path ▸ ToolBit library, shape ballend) and choose its tool controller"
+                         % (label, kind, getattr(tool, "Label", "?"), getattr(tool, "Diameter", "?")))
+    if not controller.HorizFeed.Value > 0:
+        raise ValueError("%s has a horizontal feed of 0 mm/min: the path would cut at F0; set its HorizFeed "
+                         "(and VertFeed)" % label)
+
+
 def moves_to_commands(moves, feed, plunge_feed=None):
     """Path commands of core moves; feeds in mm/s (FreeCAD's unit). A G1 that goes down from a rapid is a
     plunge and runs at the plunge feed."""

@@ -9,6 +9,7 @@ import hsmplanner
 
 from . import finishing
 from .compat import cam_module
+from .property_limits import PropertyLimits
 
 PathOp = cam_module("op")
 
@@ -16,8 +17,14 @@ SWEEPS = ["Upward", "Downward"]
 PATTERNS = ["ZigZag", "OneWay"]
 
 
-class _FinishingOp(PathOp.ObjectOp):
+# The task page's ranges (mm).
+LIMITS = {"CuspHeight": (0.001, 10.0), "Tolerance": (0.001, 1.0)}
+
+
+class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
     """What both finishing operations share: cusp, tolerance, sweeping, pattern; a ball-end tool."""
+
+    LIMITS = LIMITS
 
     def opFeatures(self, obj):
         return PathOp.FeatureTool | PathOp.FeatureHeights | PathOp.FeatureCoolant
@@ -37,6 +44,7 @@ class _FinishingOp(PathOp.ObjectOp):
         obj.setEditorMode("PassLengths", 1)
 
     def options(self, obj, part_top):
+        finishing.check_tool(obj.ToolController, self.tool)
         clearance = max(1.0, obj.SafeHeight.Value - part_top) if hasattr(obj, "SafeHeight") else 5.0
         return dict(tool_diameter=2.0 * self.radius, cusp_height=obj.CuspHeight.Value,
                     tolerance=obj.Tolerance.Value, sweep=obj.Sweep.lower(), zigzag=obj.Pattern == "ZigZag",

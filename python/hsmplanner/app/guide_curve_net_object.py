@@ -7,6 +7,7 @@ import FreeCAD
 import Part
 
 from .guide_curve_net import DEFAULT_MODE, MODES, NetParameters, build_guide_curve_net
+from .property_limits import PropertyLimits
 from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
@@ -52,7 +53,14 @@ def linked_shape(link, name, faces=False):
     return shapes[0] if len(shapes) == 1 else Part.Compound(shapes)
 
 
-class GuideCurveNet(NoSavedState):
+# The task panel's ranges (mm); the core's own limits are wider (P down to 0.01 mm).
+LIMITS = {"K": (0.01, 0.99), "KMedian": (0.01, 0.99), "Step": (0.5, 40.0), "MinGap": (0.01, 50.0),
+          "FitTolerance": (0.0001, 1.0)}
+
+
+class GuideCurveNet(PropertyLimits, NoSavedState):
+    LIMITS = LIMITS
+
     def __init__(self, obj):
         for prop_type, name, tooltip, default in _INPUTS:
             obj.addProperty(prop_type, name, "Guide curve net", tooltip)

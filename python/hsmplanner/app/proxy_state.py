@@ -22,19 +22,40 @@ class NoSavedState:
 
 
 class InMemoryResult(NoSavedState):
-    """An analysis whose detailed result (`self.result`, set by execute) is not saved with the document:
-    forgotten when the document is reopened, computed again when first asked for."""
+    """An analysis whose detailed result (`self.result`, set by compute) is not saved with the document:
+    forgotten when the document is reopened, computed again when first asked for.
+
+    A computation that fails keeps its message in `self.error` (FreeCAD marks the object invalid and reports
+    it once); the view provider and the panel then show the message instead of computing again and raising
+    the same error from every redraw."""
 
     def forget(self):
         self.result = None
+        self.error = None
 
     def has_input(self, obj):
         return True
 
+    def compute(self, obj):
+        raise NotImplementedError
+
+    def execute(self, obj):
+        self.result, self.error = None, None
+        try:
+            self.compute(obj)
+        except Exception as error:
+            self.result, self.error = None, str(error) or type(error).__name__
+            raise
+
     def ensure_result(self, obj):
-        if getattr(self, "result", None) is None and self.has_input(obj):
-            self.execute(obj)
-        return self.result
+        """The result, computed if needed; None when there is no input or the computation failed (see
+        `self.error`)."""
+        if getattr(self, "result", None) is None and getattr(self, "error", None) is None and self.has_input(obj):
+            try:
+                self.execute(obj)
+            except Exception:
+                return None
+        return getattr(self, "result", None)
 
     def onDocumentRestored(self, obj):
         self.forget()

@@ -12,19 +12,22 @@ from hsmplanner.app.direction_object import CHOICES, FEED_FROM
 from .task_panel import AnalysisPanel, selected_faces
 
 # (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
-_NUMBERS = [
-    ("ToolDiameter", "Ball diameter", 0.1, 100.0, 3, " mm"),
-    ("Teeth", "Teeth Z", 1, 20, 0, ""),
-    ("Scallop", "Scallop Sz", 0.0001, 1.0, 4, " mm"),
-    ("Feed", "Programmed feed", 1.0, 100000.0, 0, " mm/min"),
-    ("FeedPerTooth", "Feed per tooth fz", 0.001, 5.0, 3, " mm"),
-    ("SpindleSpeed", "Spindle speed N", 1.0, 100000.0, 0, " rpm"),
-    ("Acceleration", "a_max (no machine)", 0.01, 100.0, 2, " m/s²"),
-    ("ScanFrom", "Feed scan from", 0.0, 100000.0, 0, " mm/min"),
-    ("ScanTo", "Feed scan to", 0.0, 100000.0, 0, " mm/min"),
-    ("ScanSteps", "Feeds in the scan", 2, 100, 0, ""),
-    ("ValidationStep", "Simulate planes every", 1.0, 90.0, 1, " °"),
+# (property, label, decimals, suffix); the ranges are the object's (direction_object.LIMITS).
+_ROWS = [
+    ("ToolDiameter", "Ball diameter", 3, " mm"),
+    ("Teeth", "Teeth Z", 0, ""),
+    ("Scallop", "Scallop Sz", 4, " mm"),
+    ("Feed", "Programmed feed", 0, " mm/min"),
+    ("FeedPerTooth", "Feed per tooth fz", 3, " mm"),
+    ("SpindleSpeed", "Spindle speed N", 0, " rpm"),
+    ("Acceleration", "a_max (no machine)", 2, " m/s²"),
+    ("ScanFrom", "Feed scan from", 0, " mm/min"),
+    ("ScanTo", "Feed scan to", 0, " mm/min"),
+    ("ScanSteps", "Feeds in the scan", 0, ""),
+    ("ValidationStep", "Simulate planes every", 1, " °"),
 ]
+_NUMBERS = [(name, label) + direction_object.LIMITS[name] + (decimals, suffix)
+            for name, label, decimals, suffix in _ROWS]
 
 
 def _value(obj, name):
@@ -34,6 +37,9 @@ def _value(obj, name):
 
 def summary_text(obj):
     """The result as people read it."""
+    error = getattr(obj.Proxy, "error", None)
+    if error:
+        return "Not computed: %s" % error
     if not obj.PointCount:
         return "Not computed yet."
     lines = ["<b>Chosen (%s): %.0f°</b> — predicted %.0f s of planes" % (obj.Choice.lower(), obj.ChosenAngle.Value,

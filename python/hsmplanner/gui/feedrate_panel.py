@@ -69,10 +69,16 @@ class FeedRatePanel(AnalysisPanel):
         self.obj.ViewObject.Proxy.redraw(self.obj)
 
     def refresh(self):
-        if not self.obj.Report:
-            self.message.setText("Not simulated: %s" % ", ".join(self.obj.State) if self.obj.State else "")
+        result = self.obj.Proxy.ensure_result(self.obj) if self.obj.Report else None
+        if result is None:
+            error = getattr(self.obj.Proxy, "error", None)
+            self.table.setRowCount(0)
+            self.figure.clear()
+            self.canvas.draw()
+            self.message.setText("Not simulated: %s" % (error or ", ".join(self.obj.State) or "no Job or operation"))
             return
-        summary = feedsim.summary_dict(self.obj.Proxy.ensure_result(self.obj).summary, self.obj.Source.Label)
+        self.message.setText("")
+        summary = feedsim.summary_dict(result.summary, self.obj.Source.Label)
         rows = summary_rows(summary)
         self.table.setRowCount(len(rows))
         for i, (label, value) in enumerate(rows):

@@ -11,10 +11,10 @@ from hsmplanner.resources import icon
 PathOpGui = cam_module("op_gui")
 
 
-def _spin(value, decimals=3, maximum=10.0, suffix=" mm"):
+def _spin(value, limits, decimals=3, suffix=" mm"):
     box = QtWidgets.QDoubleSpinBox()
     box.setDecimals(decimals)
-    box.setRange(10 ** -decimals, maximum)
+    box.setRange(*limits)
     box.setSingleStep(10 ** -decimals)
     box.setSuffix(suffix)
     box.setValue(value)
@@ -32,8 +32,8 @@ class _FinishingPage(PathOpGui.TaskPanelPage):
         layout.addRow("Tool controller", form.toolController)
         layout.addRow("Coolant", form.coolantController)
         self.addRows(form, layout)
-        form.cusp = _spin(0.01)
-        form.tolerance = _spin(0.01)
+        form.cusp = _spin(0.01, finishing_ops.LIMITS["CuspHeight"])
+        form.tolerance = _spin(0.01, finishing_ops.LIMITS["Tolerance"])
         form.sweep = QtWidgets.QComboBox()
         form.sweep.addItems(finishing_ops.SWEEPS)
         form.pattern = QtWidgets.QComboBox()
@@ -107,7 +107,7 @@ class ParallelPlaneFinishingPage(_FinishingPage):
         form.face = QtWidgets.QLineEdit()
         form.face.setReadOnly(True)
         form.useSelection = QtWidgets.QPushButton("Use the selected face")
-        form.angle = _spin(0.0, decimals=1, maximum=180.0, suffix=" °")
+        form.angle = _spin(0.0, (0.0, 180.0), decimals=1, suffix=" °")
         form.angle.setMinimum(0.0)
         layout.addRow("Bottom face", form.face)
         layout.addRow("", form.useSelection)

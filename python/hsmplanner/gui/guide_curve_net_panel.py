@@ -8,7 +8,7 @@ import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
 from hsmplanner.app.guide_curve_net import MODES, NetParameters, build_guide_curve_net
-from hsmplanner.app.guide_curve_net_object import linked_shape
+from hsmplanner.app.guide_curve_net_object import LIMITS, linked_shape
 
 from .preview import NetPreview
 from .task_panel import TaskPanel
@@ -88,11 +88,11 @@ class GuideCurveNetPanel(TaskPanel):
         self.mode.addItems(list(MODES))
         grid.addWidget(QtWidgets.QLabel("Mode"), 0, 0)
         grid.addWidget(self.mode, 0, 1, 1, 2)
-        self.k_slider, self.k_box = self._slider_row(grid, 1, "K", 1, 99, K_SLIDER_SCALE, 0.01, 0.99, 2, "")
-        self.step_slider, self.step_box = self._slider_row(grid, 2, "Step P", 1, 80, STEP_SLIDER_SCALE, 0.5, 40.0,
-                                                           1, " mm")
+        self.k_slider, self.k_box = self._slider_row(grid, 1, "K", 1, 99, K_SLIDER_SCALE, *LIMITS["K"], 2, "")
+        self.step_slider, self.step_box = self._slider_row(grid, 2, "Step P", 1, 80, STEP_SLIDER_SCALE,
+                                                           *LIMITS["Step"], 1, " mm")
         self.gap_box = QtWidgets.QDoubleSpinBox()
-        self.gap_box.setRange(0.0, 50.0)
+        self.gap_box.setRange(*LIMITS["MinGap"])
         self.gap_box.setDecimals(2)
         self.gap_box.setSuffix(" mm")
         grid.addWidget(QtWidgets.QLabel("Minimum gap"), 3, 0)

@@ -1,0 +1,35 @@
+// Work split over threads in contiguous slices. An exception in a worker (an OCCT failure, a Cancelled)
+// would end the process if it left the thread: it is kept and thrown again in the caller after the join.
+#pragma once
+
+#include <algorithm>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace hsm {
+
+// Calls work(from, to) over [0, n) on `threads` threads (0: all cores), at most one per `grain` items.
+template <class Work>
+void parallelSlices(long n, int threads, long grain, Work&& work) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = static_cast<int>(std::min<long>(threads, std::max<long>(1, n / std::max<long>(1, grain))));
+  if (threads == 1) return work(0L, n);
+  std::exception_ptr failure;
+  std::mutex mutex;
+  std::vector<std::thread> pool;
+  for (int k = 0; k < threads; ++k)
+    pool.emplace_back([&, k] {
+      try {
+        work(n * k / threads, n * (k + 1) / threads);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    });
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace hsm
