@@ -6,7 +6,10 @@ JOBS ?= $(shell nproc)
 FREECADCMD ?= freecadcmd
 PYTHON := /usr/bin/python3
 
-.PHONY: all deps configure build link test test-cpp test-python test-gui demo bench clean
+ASAN_DIR ?= build-asan
+FUZZ_SECONDS ?= 60
+
+.PHONY: all deps configure build link test test-cpp test-python test-gui test-asan fuzz demo bench clean
 
 all: build
 
@@ -35,6 +38,22 @@ test-python: build
 test-gui: build
 	scripts/run-tests.sh $(BUILD_DIR) gui
 
+# The core and its C++ tests under AddressSanitizer and UndefinedBehaviorSanitizer (clang, no Python module);
+# also builds the libFuzzer harnesses that `make fuzz` runs.
+$(ASAN_DIR)/CMakeCache.txt: | deps
+	cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DHSM_FUZZ=ON \
+	  -DHSM_BUILD_PYTHON=OFF -DHSM_BUILD_BENCHMARKS=OFF
+
+test-asan: $(ASAN_DIR)/CMakeCache.txt
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
+
+# Each harness for FUZZ_SECONDS (default 60) on its corpus; new inputs are added to tests/fuzz/corpus/.
+fuzz: $(ASAN_DIR)/CMakeCache.txt
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+	scripts/run-fuzzers.sh $(ASAN_DIR) $(FUZZ_SECONDS)
+
 demo: build
 	scripts/run-freecadcmd.sh examples/guidance_study.py $(OUT)
 	scripts/run-freecadcmd.sh examples/master_bottom_feature.py $(OUT)
@@ -51,4 +70,4 @@ bench: build
 	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
 
 clean:
-	rm -rf $(BUILD_DIR) python/hsmplanner/_core*.so
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so

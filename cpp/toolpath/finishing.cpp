@@ -208,11 +208,28 @@ public:
         const size_t to = extend(points, plan, runs[r].second, +1);
         for (size_t k = runs[r].second + 1; k <= to; ++k) indices.push_back(k);
       }
-      Pass pass = refine(points, plan, indices);
+      Pass pass = refine(points, indices);
       if (pass.size() >= 2) passes.push_back(simplify(pass));
       r = last + 1;
     }
     return passes;
+  }
+
+  // Points between a and b where the path bends more than a quarter of the tolerance off the chord, by
+  // bisection (at most 8 levels): the tip dropped at each midpoint, raised to `floor` there if given.
+  void bisect(const Vector3& a, const Vector3& b, int depth, Pass& out, SurfaceBallDrop::Result& state,
+              bool& haveGuess, const std::function<double(const Vector2&)>& floor = {}) {
+    const Vector2 mid = 0.5 * (a.head<2>() + b.head<2>());
+    double z = dropTip(mid.x(), mid.y(), state, haveGuess);
+    ++dropped;
+    if (floor) z = std::max(z, floor(mid));
+    if (!std::isfinite(z)) return;
+    const Vector3 m(mid.x(), mid.y(), z);
+    if (depth < 8 && std::abs(z - 0.5 * (a.z() + b.z())) > 0.25 * settings_.tolerance) {
+      bisect(a, m, depth + 1, out, state, haveGuess, floor);
+      out.push_back(m);
+      bisect(m, b, depth + 1, out, state, haveGuess, floor);
+    }
   }
 
 private:
@@ -244,32 +261,18 @@ private:
     return k;
   }
 
-  Pass refine(const geometry::PointArray& points, const std::vector<Vector2>& plan, const std::vector<size_t>& indices) {
+  Pass refine(const geometry::PointArray& points, const std::vector<size_t>& indices) {
     Pass pass;
-    const double limit = 0.25 * settings_.tolerance;
     SurfaceBallDrop::Result state;  // carried from one midpoint to the next: they are neighbours
     bool haveGuess = false;
-    std::function<void(const Vector3&, const Vector3&, int)> bisect = [&](const Vector3& a, const Vector3& b, int depth) {
-      const Vector2 mid = 0.5 * (a.head<2>() + b.head<2>());
-      const double z = dropTip(mid.x(), mid.y(), state, haveGuess);
-      ++dropped;
-      if (!std::isfinite(z)) return;
-      const Vector3 m(mid.x(), mid.y(), z);
-      if (depth < 8 && std::abs(z - 0.5 * (a.z() + b.z())) > limit) {
-        bisect(a, m, depth + 1);
-        pass.push_back(m);
-        bisect(m, b, depth + 1);
-      }
-    };
     for (size_t n = 0; n < indices.size(); ++n) {
       const Eigen::Index k = static_cast<Eigen::Index>(indices[n]);
       const Vector3 p(points(k, 0), points(k, 1), points(k, 2));
       if (!std::isfinite(p.z())) continue;
       const bool bridge = n > 0 && indices[n] > indices[n - 1] + 1;  // straight across a hole
-      if (!pass.empty() && !bridge) bisect(pass.back(), p, 0);
+      if (!pass.empty() && !bridge) bisect(pass.back(), p, 0, pass, state, haveGuess);
       pass.push_back(p);
     }
-    (void)plan;
     return pass;
   }
 
@@ -405,16 +408,29 @@ double meanHeight(const std::vector<std::vector<Pass>>& lines) {
 // A G1 link from the end of a pass to the start of the next that follows the surface (dropped, so it
 // cannot gouge), or none when it would climb a wall (lifted more than the tool radius above the straight
 // line): then the tool retracts instead.
-std::vector<Vector3> surfaceLink(const Context& context, const Vector3& from, const Vector3& to) {
+std::vector<Vector3> surfaceLink(Context& context, const Vector3& from, const Vector3& to) {
   const FinishingSettings& s = context.settings();
   const int steps = std::max(2, int(std::ceil((to - from).head<2>().norm() / s.sampling)));
-  std::vector<Vector3> link;
+  const double span = (to - from).head<2>().norm();
+  auto line = [&](const Vector2& p) {
+    return span > 0.0 ? from.z() + (to.z() - from.z()) * (p - from.head<2>()).norm() / span : from.z();
+  };
+  std::vector<Vector3> samples{from};
   for (int i = 1; i < steps; ++i) {
     Vector3 p = from + (to - from) * double(i) / steps;
-    const double line = p.z();
+    const double straight = p.z();
     p.z() = std::max(p.z(), context.tipAt(p.x(), p.y()));
-    if (p.z() - line > s.toolRadius) return {};
-    link.push_back(p);
+    if (p.z() - straight > s.toolRadius) return {};
+    samples.push_back(p);
+  }
+  samples.push_back(to);
+  // Refined between the samples as passes are: a link over an edge bends, and its chords must not cut.
+  std::vector<Vector3> link;
+  SurfaceBallDrop::Result state;
+  bool haveGuess = false;
+  for (size_t k = 1; k < samples.size(); ++k) {
+    context.bisect(samples[k - 1], samples[k], 0, link, state, haveGuess, line);
+    if (k + 1 < samples.size()) link.push_back(samples[k]);
   }
   return link;
 }
@@ -427,7 +443,7 @@ void addFeed(Toolpath& path, const Vector3& p) {
 }
 
 // Links passes into moves: zigzag neighbours by a surface-following G1 when close, else retract.
-Toolpath assemble(const Context& context, std::vector<std::vector<Pass>> lines) {
+Toolpath assemble(Context& context, std::vector<std::vector<Pass>> lines) {
   const FinishingSettings& s = context.settings();
   Toolpath path;
   path.safeHeight = context.safeHeight();

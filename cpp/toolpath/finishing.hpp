@@ -55,8 +55,8 @@ inline constexpr double kMinCuspHeight = 1e-4;     // 0.1 µm: below any machine
 inline constexpr double kMinTolerance = 1e-4, kMaxTolerance = 1.0;
 inline constexpr double kMinSampling = 0.01;       // and at most the tool radius
 inline constexpr double kMaxClearance = 1000.0;
-inline constexpr long kMaxPasses = 20000;           // estimated from the face's width and the flat stepover
-inline constexpr double kMaxPlanPoints = 4e7;       // cutter positions of all passes together
+inline constexpr long kMaxPasses = 10000;           // estimated from the face's width and the flat stepover
+inline constexpr double kMaxPlanPoints = 2e7;       // cutter positions of all passes together
 
 struct FinishingSettings {
   double toolRadius = 2.0;      // ball radius, mm

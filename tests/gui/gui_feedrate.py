@@ -82,4 +82,28 @@ def other_machine_colours_and_export(run):
     run.process_events(0.3)
 
 
+@run.step
+def an_operation_at_f0_gives_one_clear_message_in_the_panel(run):
+    """FreeCAD's default tool controller has feeds of 0: the analysis of such a path says so, once, in its
+    panel, instead of tracebacks and an empty panel."""
+    from hsmplanner.app.compat import cam_module
+
+    custom = cam_module("custom_op").Create("AtF0", parentJob=state["job"])
+    custom.Gcode = ["G0 X0 Y0 Z5", "G1 Z-1 F0", "G1 X10"]
+    FreeCAD.ActiveDocument.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(custom)
+    Gui.runCommand("HSM_FeedRateAnalysis")
+    run.process_events(1.0)
+    analysis = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is custom][0]
+    message = panel().message.text() if panel() is not None else ""
+    run.notes["F0 message"] = message
+    run.check("the analysis is marked invalid", not analysis.isValid(), str(analysis.State))
+    run.check("the panel names the operation and F0", "AtF0 cuts at F0" in message, message)
+    run.check("the panel's table stays empty", panel().table.rowCount() == 0)
+    run.screenshot("feedrate_panel_f0")
+    panel().reject()
+    run.process_events(0.3)
+
+
 run.start()

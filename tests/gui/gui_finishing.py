@@ -79,6 +79,41 @@ def parallel_plane_finishing_from_its_panel(run):
 
 
 @run.step
+def escape_cancels_a_long_finishing_and_keeps_the_document(run):
+    """A cusp of 0.001 mm takes seconds: its progress dialog shows, Esc stops it, the operation is marked
+    cancelled, the document and its objects stay, and the next recompute works again."""
+    from PySide2 import QtCore, QtGui, QtWidgets
+
+    op = state["planes"]
+    seen = {}
+
+    def press_escape():
+        dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
+                   if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
+        seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]
+        if dialogs:
+            image = os.path.join(OUT, "finishing_progress_dialog.png")
+            dialogs[0].grab().save(image)
+            run.screenshots.append(image)
+            for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+                QtWidgets.QApplication.sendEvent(dialogs[0], QtGui.QKeyEvent(kind, QtCore.Qt.Key_Escape,
+                                                                             QtCore.Qt.NoModifier))
+
+    op.CuspHeight = 0.001
+    QtCore.QTimer.singleShot(1500, press_escape)
+    FreeCAD.ActiveDocument.recompute()
+    run.process_events(1.0)
+    run.notes["escape"] = {"status": op.getStatusString(), "dialogs": seen.get("dialogs")}
+    run.check("a progress dialog shows", bool(seen.get("dialogs")), str(seen))
+    run.check("Esc cancels the finishing", "cancelled" in op.getStatusString(), op.getStatusString())
+    run.check("the document is kept", FreeCAD.ActiveDocument is not None and op.Document is FreeCAD.ActiveDocument)
+    op.CuspHeight = 0.01
+    FreeCAD.ActiveDocument.recompute()
+    run.process_events(1.0)
+    run.check("the next recompute works", op.isValid() and op.Passes > 100, "%s %d" % (op.State, op.Passes))
+
+
+@run.step
 def feed_rate_maps_of_both(run):
     for key, name in (("planes", "planes"), ("guide", "guide")):
         op = state[key]

@@ -40,16 +40,17 @@ def operations(obj):
 
 
 def check_feeds(obj):
-    """Refuses operations whose tool controller has no cutting feed (FreeCAD's default controller has feeds
-    of 0 and operations then write F0): the message names the operation, the controller and the fix."""
+    """Refuses a path that cuts at F0 (FreeCAD's default tool controller has feeds of 0 and operations then
+    write F0, which no machine runs): the message names the operation, its tool controller and the fix."""
     for op in operations(obj):
-        controller = getattr(op, "ToolController", None)
-        if controller is None or not hasattr(controller, "HorizFeed"):
-            continue
-        if not controller.HorizFeed.Value > 0:
-            raise ValueError("%s: its tool controller '%s' has a horizontal feed of 0 mm/min, so its path cuts at "
-                             "F0, which no machine runs: set the controller's HorizFeed (and VertFeed)"
-                             % (op.Label, controller.Label))
+        feed = None
+        for command in op.Path.Commands:
+            feed = command.Parameters.get("F", feed)
+            if command.Name in ("G1", "G01", "G2", "G02", "G3", "G03") and feed is not None and not feed > 0:
+                controller = getattr(op, "ToolController", None)
+                raise ValueError("%s cuts at F0 (%s): its tool controller%s has no feed; set the controller's "
+                                 "HorizFeed and VertFeed" % (op.Label, command.toGCode().strip(),
+                                 " '%s'" % controller.Label if controller is not None else ""))
 
 
 def simulate_object(obj, machine="mikron-ucp710-840d", blocks=True, trace_period=None):

@@ -9,6 +9,7 @@ import hsmplanner
 
 from . import finishing
 from .compat import cam_module
+from .progress import freecad_progress
 from .property_limits import PropertyLimits
 
 PathOp = cam_module("op")
@@ -75,8 +76,9 @@ class ObjectGuideCurveFinishing(_FinishingOp):
         shape, face = finishing.net_part(obj.Net)
         areas = finishing.net_areas(obj.Net, obj.Areas)
         direction = tuple(obj.Net.ChosenDirection)
-        moves, stats = hsmplanner.guide_finishing(shape, face, areas, direction,
-                                                  **self.options(obj, shape.BoundBox.ZMax))
+        with freecad_progress("%s: guide-curve finishing" % obj.Label) as progress:
+            moves, stats = hsmplanner.guide_finishing(shape, face, areas, direction, progress=progress,
+                                                      **self.options(obj, shape.BoundBox.ZMax))
         self.emit(obj, moves, stats)
 
 
@@ -91,8 +93,9 @@ class ObjectParallelPlaneFinishing(_FinishingOp):
             raise ValueError("no face to finish: set Face to the bottom face (e.g. the model's Face4)")
         part, subs = obj.Face
         face = subs[0] if not isinstance(subs, str) else subs
-        moves, stats = hsmplanner.parallel_finishing(part.Shape, face, obj.Angle.Value,
-                                                     **self.options(obj, part.Shape.BoundBox.ZMax))
+        with freecad_progress("%s: parallel-plane finishing" % obj.Label) as progress:
+            moves, stats = hsmplanner.parallel_finishing(part.Shape, face, obj.Angle.Value, progress=progress,
+                                                         **self.options(obj, part.Shape.BoundBox.ZMax))
         self.emit(obj, moves, stats)
 
 

@@ -61,11 +61,12 @@ def _edge(brep):
     return shape.Edges[0]
 
 
-def build_guide_curve_net(boundary_1, boundary_2, face=None, parameters=NetParameters(), with_regions=True):
+def build_guide_curve_net(boundary_1, boundary_2, face=None, parameters=NetParameters(), with_regions=True,
+                          progress=None):
     """The net between two boundary shapes (edges or wires), on `face` if given, as Part geometry.
 
     with_regions=False skips the split of the face into elementary areas (the slow part: ~0.2 s), for
-    live previews.
+    live previews. progress: a callable progress(done) that cancels by returning False (curve_net's).
     """
     mode = parameters.core_mode()
     report = None
@@ -77,7 +78,8 @@ def build_guide_curve_net(boundary_1, boundary_2, face=None, parameters=NetParam
     else:
         net = hsmplanner.curve_net(boundary_1, boundary_2, parameters.k, parameters.step,
                                    direction=parameters.direction, mode=mode, face=face,
-                                   min_gap=parameters.min_gap, fit_tolerance=parameters.fit_tolerance)
+                                   min_gap=parameters.min_gap, fit_tolerance=parameters.fit_tolerance,
+                                   progress=progress)
     result = GuideNetResult(net=net, report=report, edges=[_edge(c.to_brep()) for c in net.curves])
     if face is not None and with_regions:
         for lower, upper, brep, area in hsmplanner.area_regions(net, face):

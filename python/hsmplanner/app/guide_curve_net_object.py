@@ -7,6 +7,7 @@ import FreeCAD
 import Part
 
 from .guide_curve_net import DEFAULT_MODE, MODES, NetParameters, build_guide_curve_net
+from .progress import freecad_progress
 from .property_limits import PropertyLimits
 from .proxy_state import NoSavedState
 
@@ -88,7 +89,8 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
 
     def execute(self, obj):
         b1, b2, face = self.inputs(obj)
-        result = build_guide_curve_net(b1, b2, face, self.parameters(obj))
+        with freecad_progress("%s: curve net" % obj.Label) as progress:
+            result = build_guide_curve_net(b1, b2, face, self.parameters(obj), progress=progress)
         faces, face_areas = [], []
         for index, (lower, upper, shape, _) in enumerate(result.regions):
             faces += shape.Faces

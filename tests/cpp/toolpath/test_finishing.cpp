@@ -7,7 +7,18 @@
 #include "support/surfaces.hpp"
 #include "toolpath/finishing.hpp"
 
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <Bnd_Box.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
+#include <TopoDS.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <gtest/gtest.h>
 
@@ -213,4 +224,90 @@ TEST(Finishing, BadSettingsAreRefused) {
   EXPECT_THROW(guideCurveFinishing(feature().shape, bottomIndex(), {{feature().boundary1, feature().boundary2}},
                                    Eigen::Vector3d::UnitZ(), settings()),
                hsm::InputError);
+}
+
+namespace {
+// The top face (z = top) of a shape: the plane face whose normal is +Z at that height.
+int topFaceIndex(const TopoDS_Shape& shape, double top) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    Bnd_Box box;
+    BRepBndLib::Add(faces(i), box);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    if (std::abs(z0 - top) < 1e-6 && std::abs(z1 - top) < 1e-6 && x1 - x0 > 1.0 && y1 - y0 > 1.0) return i;
+  }
+  return 0;
+}
+
+// Points every `step` mm along the feed moves.
+std::vector<Eigen::Vector3d> feedSamples(const Toolpath& path, double step) {
+  std::vector<Eigen::Vector3d> samples;
+  for (size_t k = 1; k < path.moves.size(); ++k) {
+    if (path.moves[k].rapid || path.moves[k - 1].rapid) continue;
+    const Eigen::Vector3d a = path.moves[k - 1].point, b = path.moves[k].point;
+    const int n = std::max(1, int(std::ceil((b - a).norm() / step)));
+    for (int s = 0; s <= n; ++s) samples.push_back(a + (b - a) * double(s) / n);
+  }
+  return samples;
+}
+}  // namespace
+
+TEST(Finishing, AHoleInTheFaceIsBridgedAtItsLevelWithoutADip) {
+  // A 30 × 20 × 5 mm plate with a 6 mm through hole: the ball (Ø4) must cross the hole at the face's level.
+  const TopoDS_Shape plate = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(30, 20, 5).Shape(),
+                                             BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(15, 10, 0), gp::DZ()), 3, 5).Shape())
+                                 .Shape();
+  const int top = topFaceIndex(plate, 5.0);
+  ASSERT_GT(top, 0);
+  FinishingSettings s = settings();
+  s.tolerance = 0.001;
+  const Toolpath path = parallelPlaneFinishing(plate, top, 0.0, s);
+  double lowestOverHole = 1e300;
+  long overHole = 0;
+  for (const Eigen::Vector3d& p : feedSamples(path, 0.05))
+    if (std::hypot(p.x() - 15.0, p.y() - 10.0) < 2.95) {
+      lowestOverHole = std::min(lowestOverHole, p.z());
+      ++overHole;
+    }
+  EXPECT_GT(overHole, 100) << "the passes should cross the hole";
+  EXPECT_GE(lowestOverHole, 5.0 - 0.011) << "the ball dips into the hole";
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(plate, TopAbs_FACE, faces);
+  const Residual residual = sweep(path, TopoDS::Face(faces(top)), 2.0, 4, 26, 3, 17, 0.025);
+  EXPECT_GT(residual.samples, 100000);
+  EXPECT_LE(residual.worstCusp, 0.011);
+  EXPECT_LE(residual.worstGouge, 0.001);
+}
+
+TEST(Finishing, AFloorUnderAnOverhangIsNotReachedThroughThePart) {
+  // A floor (z = 10) with a shelf over part of it (y 25..40 at z 20..25, on a wall at y 35..40): the ball
+  // must stop where the shelf holds it up. With only the floor's neighbours meshed it fell through the shelf.
+  const TopoDS_Shape base = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(60, 40, 10)).Shape();
+  const TopoDS_Shape wall = BRepPrimAPI_MakeBox(gp_Pnt(0, 35, 10), gp_Pnt(60, 40, 20)).Shape();
+  const TopoDS_Shape shelf = BRepPrimAPI_MakeBox(gp_Pnt(0, 25, 20), gp_Pnt(60, 40, 25)).Shape();
+  BRepAlgoAPI_Fuse fused(BRepAlgoAPI_Fuse(base, wall).Shape(), shelf);
+  ShapeUpgrade_UnifySameDomain unify(fused.Shape());
+  unify.Build();
+  const TopoDS_Shape part = unify.Shape();
+  const int floor = topFaceIndex(part, 10.0);
+  ASSERT_GT(floor, 0);
+  FinishingSettings s = settings();
+  s.cuspHeight = 0.05;
+  const Toolpath path = parallelPlaneFinishing(part, floor, 0.0, s);
+  ASSERT_GT(path.passes, 5);
+  // Independent of the generator: the ball's centre keeps a radius from the solid (OCCT's distance).
+  BRepClass3d_SolidClassifier inside(part);
+  double closest = 1e300;
+  for (const Eigen::Vector3d& tip : feedSamples(path, 0.5)) {
+    const gp_Pnt centre(tip.x(), tip.y(), tip.z() + 2.0);
+    inside.Perform(centre, 1e-7);
+    ASSERT_NE(inside.State(), TopAbs_IN) << "the ball's centre is inside the part at " << tip.transpose();
+    BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(centre).Vertex(), part);
+    closest = std::min(closest, distance.Value());
+  }
+  EXPECT_GE(closest, 2.0 - 0.011) << "the ball cuts into the part";
+  for (const Move& m : path.moves)
+    if (!m.rapid && m.point.z() < 10.5) EXPECT_LT(m.point.y(), 25.0 - 1.99) << "a pass on the floor under the shelf";
 }

@@ -1,0 +1,277 @@
+"""Bad inputs of every public function and document-object property (issue 10), run in child processes.
+
+Each case is code run in a namespace that holds the master bottom feature (`part`, boundaries `b1`, `b2`,
+bottom `face`) and helpers; it must raise the exception named with the words given (the input and the fix),
+or leave `result` for which `check` holds. A child runs the cases one after another and reports each as a
+JSON line; a crash, a hang (past TIMEOUT_S) or runaway memory (past MEMORY_LIMIT_BYTES) of a case fails
+that case only, and the remaining cases go on in a new child.
+"""
+import json
+import os
+import select
+import subprocess
+import time
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+CHILD = os.path.join(REPO, "tests", "python", "bad_inputs_child.py")
+TIMEOUT_S = 90
+MEMORY_LIMIT_BYTES = 8 << 30
+
+GCODE_OK = "G1 X1 F100\n"
+
+
+def raises(name, code, error, words):
+    return dict(name=name, code=code, error=error, words=words)
+
+
+def holds(name, code, check):
+    return dict(name=name, code=code, check=check)
+
+
+CASES = [
+    # --- the issue's crashes -------------------------------------------------------------------------------
+    raises("curve_net P 0.003 (crashed OCCT)", "h.curve_net(b1, b2, 0.5, 0.003, face=face)", "ValueError",
+           "step P = 0.003 mm must be at least"),
+    raises("parallel_finishing on the wall Face1", "h.parallel_finishing(part, 'Face1')", "ValueError",
+           "Face1 is vertical"),
+    raises("parallel_finishing on the wall Face7", "h.parallel_finishing(part, 'Face7')", "ValueError",
+           "Face7 is vertical"),
+    raises("parallel_finishing on the wall Face9", "h.parallel_finishing(part, 'Face9')", "ValueError",
+           "Face9 is vertical"),
+    raises("parallel_finishing on the wall Face10", "h.parallel_finishing(part, 'Face10')", "ValueError",
+           "Face10 is vertical"),
+    raises("parallel_finishing on a plane at 89.5°", "h.parallel_finishing(tilted(89.5), 'Face1')", "ValueError",
+           "is vertical"),
+    holds("parallel_finishing on a plane at 60° works", "result = h.parallel_finishing(tilted(60), 'Face1')",
+          "result[1]['passes'] > 5"),
+    raises("parallel_finishing with a 60 mm ball", "h.parallel_finishing(part, 'Face4', tool_diameter=60)",
+           "ValueError", "no pass of the 60 mm ball rests on Face4"),
+    # --- the issue's hangs ------------------------------------------------------------------------------------
+    raises("curve_net P 1e-6", "h.curve_net(b1, b2, 0.5, 1e-6, face=face)", "ValueError", "step P = 1e-06 mm"),
+    raises("curve_net P 0.05 needs 2800 planes", "h.curve_net(b1, b2, 0.5, 0.05, face=face)", "ValueError",
+           "the limit is 2000 planes: use P of at least"),
+    raises("parallel_finishing with a 1e6 mm tool", "h.parallel_finishing(part, 'Face4', tool_diameter=1e6)",
+           "ValueError", "tool diameter 1e+06 mm is outside"),
+    raises("guide_finishing with a 1e6 mm tool", "h.guide_finishing(part, 'Face4', [(b1, b2)], tool_diameter=1e6)",
+           "ValueError", "tool diameter 1e+06 mm is outside"),
+    raises("parallel_finishing with cusp 1e-9", "h.parallel_finishing(part, 'Face4', cusp_height=1e-9)",
+           "ValueError", "cusp height 1e-09 mm must be at least"),
+    raises("guide_finishing with cusp 1e-9", "h.guide_finishing(part, 'Face4', [(b1, b2)], cusp_height=1e-9)",
+           "ValueError", "cusp height 1e-09 mm must be at least"),
+    raises("a 2 m plate with a 1 mm ball at cusp 0.001: 31,600 passes",
+           "h.parallel_finishing(plate(2000), 'Face1', tool_diameter=1, cusp_height=0.001)", "ValueError",
+           "passes over the 2000 mm of Face1 (the limit is 10000): use a cusp height of at least"),
+    raises("a 2 m plate at the paper's cusp: 4e7 cutter positions",
+           "h.parallel_finishing(plate(2000), 'Face1', tool_diameter=4, cusp_height=0.01)", "ValueError",
+           "cutter positions"),
+    raises("optimal_direction grid 100000", "h.optimal_direction(face, feed_mm_min=4000, grid=100000)", "ValueError",
+           "sample grid 100000"),
+    raises("simulate trace_period 1e-9", "h.simulate(SEVEN_LINES, 'linuxcnc-2.9', trace_period=1e-9)", "ValueError",
+           "trace period 1e-09 s"),
+    # --- toolpaths that would gouge ---------------------------------------------------------------------------
+    raises("parallel_finishing of the underside Face8", "h.parallel_finishing(part, 'Face8')", "ValueError",
+           "Face8 faces down"),
+    raises("guide_finishing of the underside Face8", "h.guide_finishing(part, 'Face8', [(b1, b2)])", "ValueError",
+           "Face8 faces down"),
+    raises("optimal_direction of a face that looks down", "h.optimal_direction(part.Face8, feed_mm_min=4000)",
+           "ValueError", "the face looks down"),
+    holds("the ball does not dip into a hole of the face",
+          "plate = holed_plate(); result = h.parallel_finishing(plate, top_face(plate), tool_diameter=4)",
+          "lowest_feed_z(result[0]) > 5.0 - 0.011"),
+    holds("a net across a hole says so",
+          "plate = holed_plate(); top = plate.Faces[top_face(plate) - 1]; "
+          "result = h.curve_net(np.array([[0, 0.0, 5], [30, 0, 5]]), np.array([[0, 20.0, 5], [30, 20, 5]]), 0.5, 1, "
+          "face=top, mode='median')",
+          "any('over a hole' in w for w in result.warnings)"),
+    # --- silent nonsense --------------------------------------------------------------------------------------
+    holds("boundaries 500 mm above the face build a real net",
+          "up = FreeCAD.Vector(0, 0, 500); result = h.curve_net(b1.translated(up), b2.translated(up), 0.5, 5, face=face)",
+          "len(result.curves) < 20 and any('off the bottom face' in w for w in result.warnings)"),
+    raises("min_gap 1e9", "h.curve_net(b1, b2, 0.5, 5, face=face, min_gap=1e9)", "ValueError",
+           "minimum gap 1e+09 mm is as wide as the area"),
+    raises("K 0.01 would need 331 curves", "h.curve_net(b1, b2, 0.01, 5, face=face)", "ValueError",
+           "use K of at least"),
+    raises("area_regions on a face the net is not on", "h.area_regions(h.curve_net(b1, b2, 0.5, 5, face=face), part.Face3)",
+           "ValueError", "the net does not lie on this face"),
+    raises("a face passed as a boundary", "h.curve_net(part.Face4, b2, 0.5, 5)", "ValueError",
+           "the curve is a face"),
+    raises("identical guides", "h.guide_finishing(part, 'Face4', [(b1, b1)])", "ValueError",
+           "the guides of area 1 coincide"),
+    raises("ball-end finishing with FreeCAD's default tool controller", "default_controller_finishing()", "ValueError",
+           "ball-end finishing needs a ball end mill"),
+    raises("feed-rate analysis of an operation with feeds of 0", "feedrate_of_zero_feed()", "ValueError",
+           "cuts at F0"),
+    raises("G4 P-5", "h.simulate('G4 P-5\\n', 'linuxcnc-2.9')", "ValueError", "G4 P-5: a dwell lasts 0 s or more"),
+    # --- numbers in G-code that are not numbers ---------------------------------------------------------------
+    raises("X1e400", "h.simulate('G1 X1e400 F100\\n', 'linuxcnc-2.9')", "ValueError", "line 1: 'X1E400': G-code numbers have no exponent"),
+    raises("Y nan", "h.simulate('G1 X1 F100\\nG1 Y nan\\nG1 X5\\n', 'linuxcnc-2.9')", "ValueError", "line 2: 'Y NAN' is not"),
+    raises("X inf", "h.simulate('G1 X inf F100\\n', 'linuxcnc-2.9')", "ValueError", "line 1: 'X INF' is not"),
+    raises("G2 with no words", "h.simulate('G1 X1 F100\\nG2\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 2: G2 without an end point or a centre"),
+    raises("a 200 MB file without a line end", "h.simulate(endless_file(200 << 20), 'linuxcnc-2.9')", "ValueError",
+           "line 1: the line is longer than 65536 characters"),
+    raises("binary garbage", "h.simulate(bytes(range(1, 256)).decode('latin-1') + '\\n', 'linuxcnc-2.9')",
+           "ValueError", "line 1: unexpected character '\\x01' (byte 1)"),
+    raises("a coordinate beyond 1e9 mm", "h.simulate('G1 X12345678901 F100\\n', 'linuxcnc-2.9')", "ValueError",
+           "is out of range"),
+    holds("far but finite coordinates give a finite time",
+          "result = h.simulate('G1 X999999999 F1\\n', 'mikron-ucp710-840d').summary.total_time",
+          "math.isfinite(result) and result > 1e9"),
+    # --- more of the same spirit: curve nets ------------------------------------------------------------------
+    raises("K nan", "h.curve_net(b1, b2, float('nan'), 5)", "ValueError", "K = nan is outside ]0,1["),
+    raises("K inf", "h.curve_net(b1, b2, float('inf'), 5)", "ValueError", "K = inf is outside"),
+    raises("K as text", "h.curve_net(b1, b2, 'half', 5)", "ValueError", "could not convert string to float"),
+    raises("P nan", "h.curve_net(b1, b2, 0.5, float('nan'))", "ValueError", "step P = nan mm"),
+    raises("P inf", "h.curve_net(b1, b2, 0.5, float('inf'))", "ValueError", "step P = inf mm"),
+    raises("fit tolerance 0", "h.curve_net(b1, b2, 0.5, 5, fit_tolerance=0)", "ValueError", "fit tolerance 0 mm must be in"),
+    raises("fit tolerance 5", "h.curve_net(b1, b2, 0.5, 5, fit_tolerance=5)", "ValueError", "fit tolerance 5 mm must be in"),
+    raises("min_gap -1", "h.curve_net(b1, b2, 0.5, 5, min_gap=-1)", "ValueError", "minimum gap -1 mm must be positive"),
+    raises("min_gap 0", "h.curve_net(b1, b2, 0.5, 5, min_gap=0)", "ValueError", "minimum gap 0 mm must be positive"),
+    raises("direction zero", "h.curve_net(b1, b2, 0.5, 5, direction=(0, 0, 0))", "ValueError", "machining direction is zero"),
+    raises("direction nan", "h.curve_net(b1, b2, 0.5, 5, direction=(float('nan'), 0, 0))", "ValueError",
+           "machining direction is zero"),
+    raises("unknown mode", "h.curve_net(b1, b2, 0.5, 5, mode='zigzag')", "ValueError", "mode 'zigzag' is unknown"),
+    raises("the same edge twice", "h.curve_net(b1, b1, 0.5, 5)", "ValueError", "the boundaries coincide"),
+    raises("empty BREP text", "h.curve_net('', b2, 0.5, 5)", "ValueError", "BREP text is empty"),
+    raises("BREP text that is not BREP", "h.curve_net('hello', b2, 0.5, 5)", "ValueError", "BREP text"),
+    raises("a curve of one point", "h.curve_net(np.array([[1.0, 2, 3]]), b2, 0.5, 5)", "ValueError", "distinct point"),
+    raises("a curve with nan", "h.curve_net(np.array([[0.0, 0, 0], [float('nan'), 1, 0]]), b2, 0.5, 5)", "ValueError",
+           "is not finite"),
+    raises("intermediate_curve K 1.5", "h.intermediate_curve(b1, b2, 1.5, 5)", "ValueError", "K = 1.5 is outside"),
+    raises("4-step min_step 0.001", "h.guidance_curves(b1, b2, face=face, min_step=0.001)", "ValueError",
+           "smallest step 0.001 mm must be at least"),
+    raises("4-step K median 1.2", "h.guidance_curves(b1, b2, k_median=1.2)", "ValueError", "K of the median = 1.2"),
+    holds("progress that returns False cancels a net",
+          "try:\n    h.curve_net(b1, b2, 0.5, 5, face=face, progress=lambda done: False)\n    result = 'ran'\n"
+          "except h.Cancelled as error:\n    result = str(error)", "result == 'curve net cancelled'"),
+    raises("progress that is not callable", "h.curve_net(b1, b2, 0.5, 5, progress=3)", "ValueError",
+           "progress must be a callable"),
+    # --- finishing --------------------------------------------------------------------------------------------
+    raises("bottom face Face0", "h.parallel_finishing(part, 'Face0')", "ValueError", "is not a face name"),
+    raises("bottom face Face99", "h.parallel_finishing(part, 'Face99')", "ValueError",
+           "bottom face Face99 does not exist: the part has 10 faces"),
+    raises("bottom face 'Top'", "h.parallel_finishing(part, 'Top')", "ValueError", "is not a face name"),
+    raises("angle nan", "h.parallel_finishing(part, 'Face4', angle_deg=float('nan'))", "ValueError",
+           "the angle of the planes must be a number"),
+    raises("tolerance 0", "h.parallel_finishing(part, 'Face4', tolerance=0)", "ValueError", "machining tolerance 0 mm"),
+    raises("tolerance 5", "h.parallel_finishing(part, 'Face4', tolerance=5)", "ValueError", "machining tolerance 5 mm"),
+    raises("clearance -1", "h.parallel_finishing(part, 'Face4', clearance=-1)", "ValueError", "clearance -1 mm"),
+    raises("clearance 1e9", "h.parallel_finishing(part, 'Face4', clearance=1e9)", "ValueError", "clearance 1e+09 mm"),
+    raises("threads -1", "h.parallel_finishing(part, 'Face4', threads=-1)", "ValueError", "threads -1 must be"),
+    raises("threads 1e6", "h.parallel_finishing(part, 'Face4', threads=1000000)", "ValueError", "threads 1000000"),
+    raises("sweep sideways", "h.parallel_finishing(part, 'Face4', sweep='sideways')", "ValueError", "sweep 'sideways'"),
+    raises("extension 1e6", "h.parallel_finishing(part, 'Face4', extension=1e6)", "ValueError", "extension 1e+06 mm"),
+    raises("cusp height as large as the radius", "h.parallel_finishing(part, 'Face4', cusp_height=2)", "ValueError",
+           "below the tool radius"),
+    raises("tool diameter nan", "h.parallel_finishing(part, 'Face4', tool_diameter=float('nan'))", "ValueError",
+           "tool diameter"),
+    raises("tool diameter 0.01", "h.parallel_finishing(part, 'Face4', tool_diameter=0.01)", "ValueError",
+           "tool diameter 0.01 mm is outside"),
+    raises("guide_finishing without areas", "h.guide_finishing(part, 'Face4', [])", "ValueError", "no area to machine"),
+    raises("guide_finishing along the tool axis", "h.guide_finishing(part, 'Face4', [(b1, b2)], direction=(0, 0, 1))",
+           "ValueError", "must be a horizontal vector"),
+    raises("guide_finishing with guides that do not overlap",
+           "h.guide_finishing(part, 'Face4', [(np.array([[0, 0.0, -20], [10, 0, -20]]), np.array([[50, 10.0, -20], [60, 10, -20]]))])",
+           "ValueError", "do not overlap"),
+    holds("progress that returns False cancels finishing",
+          "try:\n    h.parallel_finishing(part, 'Face4', progress=lambda done: done < 0.2)\n    result = 'ran'\n"
+          "except h.Cancelled as error:\n    result = str(error)", "result == 'finishing cancelled'"),
+    # --- feed-rate simulation ---------------------------------------------------------------------------------
+    raises("an unknown machine", "h.simulate(GCODE_OK, 'no-such-machine')", "ValueError", "no-such-machine"),
+    raises("a machine dict without axes", "h.simulate(GCODE_OK, dict(name='m', controller='linuxcnc'))", "ValueError",
+           "missing \"axes\""),
+    raises("a machine with a negative velocity", "h.simulate(GCODE_OK, machine_with(max_velocity_mm_min=-5))",
+           "ValueError", "must be positive"),
+    raises("a machine field set to 0 from Python", "m = h.load_machine('linuxcnc-2.9'); m.max_acceleration = (0, 1000, 1000); "
+           "h.simulate(GCODE_OK, m)", "ValueError", "max acceleration of axis X"),
+    raises("a program file that does not exist", "h.simulate('no_such_program.ngc', 'linuxcnc-2.9')", "ValueError",
+           "neither an existing file nor G-code text"),
+    raises("G1 before any feed", "h.simulate('G1 X10\\n', 'linuxcnc-2.9')", "ValueError", "line 1: no feed rate"),
+    raises("an arc whose end is off its circle", "h.simulate('G1 X10 F100\\nG2 X0 Y0 I-3\\n', 'linuxcnc-2.9')",
+           "ValueError", "line 2: arc end point is not on the circle"),
+    raises("an unclosed comment", "h.simulate('G1 X1 F100 (oops\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 1: comment '(' is not closed"),
+    raises("65 words on a line", "h.simulate('G1 F100 ' + 'X1 ' * 65 + '\\n', 'linuxcnc-2.9')", "ValueError",
+           "more than 64 words on one line"),
+    raises("an unknown word refused", "h.simulate('G1 X1 F100 A5\\n', 'linuxcnc-2.9', refuse_unknown_words=True)",
+           "ValueError", "'A5' is not understood"),
+    raises("a trace period below 0", "h.simulate(GCODE_OK, 'linuxcnc-2.9', trace_period=-1)", "ValueError",
+           "trace_period -1 s must be positive"),
+    # --- machining direction, geometry ------------------------------------------------------------------------
+    raises("direction with no tooth", "h.optimal_direction(face, feed_mm_min=4000, teeth=0)", "ValueError", "teeth Z = 0"),
+    raises("direction with no spindle", "h.optimal_direction(face, feed_mm_min=4000, spindle_rpm=0)", "ValueError",
+           "spindle speed"),
+    raises("direction with no feed", "h.optimal_direction(face)", "ValueError", "give the programmed feed"),
+    raises("direction with angle step 5°", "h.optimal_direction(face, feed_mm_min=4000, angle_step=5)", "ValueError",
+           "the angle step 5°"),
+    raises("direction with a grid of 1", "h.optimal_direction(face, feed_mm_min=4000, grid=1)", "ValueError",
+           "the sample grid 1 × 1"),
+    raises("drop along a zero axis", "h.drop_on_face(face, [[10, 10, 0]], axis=(0, 0, 0))", "ValueError",
+           "the axis to drop points along is zero"),
+    raises("a billion samples of a curve", "h.sample_curve(b1, 10**9)", "ValueError", "sample count is 1000000000"),
+    raises("a summary of something that is not a shape", "h.shape_summary(42)", "TypeError",
+           "expected a FreeCAD Part shape"),
+    # --- document-object properties: clamped at the door ------------------------------------------------------
+    holds("Guide curve net Step 0.003 is clamped and recomputes",
+          "net = new_net(); net.Step = 0.003; net.recompute(); result = (net.Step.Value, net.isValid())",
+          "result == (0.5, True)"),
+    holds("Guide curve net K 5 is clamped", "net = new_net(); net.K = 5; result = net.K", "result == 0.99"),
+    holds("Guide curve net MinGap 1e9 is clamped", "net = new_net(); net.MinGap = 1e9; result = net.MinGap.Value",
+          "result == 50.0"),
+    holds("Machining direction Grid 100000 is clamped",
+          "a = new_direction(); a.Grid = 100000; a.ToolDiameter = 1e6; a.AngleStep = 1e-9; "
+          "result = (a.Grid, a.ToolDiameter.Value, a.AngleStep)", "result == (500, 100.0, 0.01)"),
+    holds("Finishing CuspHeight 1e-9 is clamped",
+          "op = new_planes(); op.CuspHeight = 1e-9; op.Tolerance = 50; result = (op.CuspHeight.Value, op.Tolerance.Value)",
+          "result == (0.001, 1.0)"),
+    holds("a master feature of zero length is invalid, with a message, and the document lives",
+          "m = new_master(); m.Length = 0; m.recompute(); result = m.isValid()", "result is False"),
+]
+
+
+def run_cases(names=None, timeout_s=TIMEOUT_S):
+    """Runs the cases (all by default) in child processes; returns {name: report dict}."""
+    cases = {c["name"]: c for c in CASES}
+    pending = [c["name"] for c in CASES if names is None or c["name"] in names]
+    reports = {}
+    while pending:
+        env = dict(os.environ, HSM_BAD_INPUT_CASES=json.dumps([cases[name] for name in pending]))
+        child = subprocess.Popen(["freecadcmd", CHILD], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
+                                 text=True, bufsize=1)
+        running, started = None, time.time()
+        try:
+            while True:
+                ready, _, _ = select.select([child.stdout], [], [], 1.0)
+                if ready:
+                    line = child.stdout.readline()
+                    if not line:
+                        break  # the child ended
+                    if line.startswith("HSM-CASE-START "):
+                        running, started = json.loads(line[len("HSM-CASE-START "):]), time.time()
+                    elif line.startswith("HSM-CASE-RESULT "):
+                        report = json.loads(line[len("HSM-CASE-RESULT "):])
+                        reports[report["name"]] = report
+                        pending.remove(report["name"])
+                        running = None
+                if running is not None and time.time() - started > timeout_s:
+                    child.kill()
+                    break
+                if not ready and child.poll() is not None:
+                    break
+        finally:
+            if child.poll() is None:
+                child.kill()
+            child.wait()
+        if running is not None:
+            elapsed = time.time() - started
+            reports[running] = dict(name=running, outcome="hang" if elapsed > timeout_s else "crash",
+                                    detail="the child %s after %.0f s (exit %s)" % (
+                                        "was killed" if elapsed > timeout_s else "died", elapsed, child.returncode))
+            pending.remove(running)
+        elif pending and child.returncode not in (0, None):
+            raise RuntimeError("the bad-input child failed before any case (exit %s)" % child.returncode)
+        elif pending:
+            for name in pending:
+                reports[name] = dict(name=name, outcome="missing", detail="the child ended without running it")
+            break
+    return reports
