@@ -47,6 +47,7 @@ $(ASAN_DIR)/CMakeCache.txt: | deps
 test-asan: $(ASAN_DIR)/CMakeCache.txt
 	cmake --build $(ASAN_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/cpp/lsan.supp \
 	  ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
 
 # Each harness for FUZZ_SECONDS (default 60) on its corpus; new inputs are added to tests/fuzz/corpus/.

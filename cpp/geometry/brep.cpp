@@ -22,6 +22,9 @@ TopoDS_Shape readBrep(std::string_view text) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw InputError("BREP text is empty: pass Shape.exportBrepToString() of a non-empty shape");
   std::istringstream stream{std::string(text)};
+  // OCCT's reader loops for ever on some malformed text, reading from a stream that has failed (found by
+  // fuzzing): a failed read throws here instead, and ends the reading.
+  stream.exceptions(std::ios::failbit | std::ios::badbit);
   TopoDS_Shape shape;
   BRep_Builder builder;
   try {
@@ -29,6 +32,9 @@ TopoDS_Shape readBrep(std::string_view text) {
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("BREP text could not be read (") + failure.GetMessageString() +
                      "): pass the unmodified output of Shape.exportBrepToString()");
+  } catch (const std::ios_base::failure&) {
+    throw InputError("BREP text is malformed near character " + std::to_string(long(stream.rdbuf()->pubseekoff(
+                         0, std::ios::cur, std::ios::in))) + ": pass the unmodified output of Shape.exportBrepToString()");
   }
   if (shape.IsNull())
     throw InputError("BREP text holds no shape: pass the unmodified output of Shape.exportBrepToString()");

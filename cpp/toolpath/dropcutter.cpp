@@ -27,6 +27,10 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
   if (!(radius > 0.0)) throw InputError("ball radius must be positive, got " + std::to_string(radius) + " mm");
   if (mesh.triangles.empty() && mesh.polylines.empty())
     throw InputError("the mesh has no triangle: nothing to drop the tool on");
+  if (mesh.triangles.size() > kMaxTriangles)
+    throw InputError("the part meshes into " + std::to_string(mesh.triangles.size()) + " triangles, more than the " +
+                     std::to_string(kMaxTriangles) + " the drop-cutter takes: use a larger mesh deflection, or "
+                     "finish the face of a part with fewer faces around it");
   Eigen::AlignedBox3d box = mesh.bounds();
   for (const auto& line : mesh.polylines)
     for (const auto& p : line) box.extend(p);

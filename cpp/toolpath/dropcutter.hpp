@@ -17,6 +17,8 @@ struct Contact {
   bool touches() const { return z > -std::numeric_limits<double>::infinity(); }
 };
 
+inline constexpr size_t kMaxTriangles = 20000000;  // about 2 GB of index: the memory bound of a drop-cutter
+
 class BallDropCutter {
 public:
   BallDropCutter(const TriangleMesh& mesh, double radius);

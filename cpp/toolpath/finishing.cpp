@@ -77,11 +77,21 @@ public:
     const Reach reach = reachability(bottom_);
     const std::string partly = checkReach(reach, faceName(bottomFace));
     if (!partly.empty()) warnings.push_back(partly);
-    // Every face of the part holds the tool up (a pass must not cut through the part to reach the bottom
-    // face); the bottom face itself is dropped on exactly, and meshed too where part of it looks down.
+    // Every face of the part that the ball can meet above the bottom face holds the tool up (a pass must
+    // not cut through the part to reach it); faces beyond the tool's reach in plan are left out. The bottom
+    // face itself is dropped on exactly, and meshed too where part of it looks down.
+    Bnd_Box reachBox;
+    BRepBndLib::AddOptimal(bottom_, reachBox, false, false);
+    reachBox.Enlarge(settings.toolRadius + std::max(settings.extension, settings.toolRadius) + 1.0);
+    reachBox.OpenZmin();  // in plan only: a face far above (a shelf) or below still holds the tool
+    reachBox.OpenZmax();
     std::vector<int> others;
-    for (int i = 1; i <= faces.Extent(); ++i)
-      if (i != bottomFace || reach.up < 1.0) others.push_back(i);
+    for (int i = 1; i <= faces.Extent(); ++i) {
+      Bnd_Box faceBox;
+      BRepBndLib::Add(faces(i), faceBox);
+      const bool nearInPlan = !faceBox.IsVoid() && !reachBox.IsOut(faceBox);
+      if ((i != bottomFace || reach.up < 1.0) && nearInPlan) others.push_back(i);
+    }
     TriangleMesh mesh = others.empty() ? TriangleMesh{} : meshFaces(part, settings.meshDeflection, others);
     addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);

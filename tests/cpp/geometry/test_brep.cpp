@@ -56,3 +56,11 @@ TEST(Brep, NullShapeSummaryIsEmpty) {
   EXPECT_TRUE(s.bounds.isEmpty());
   EXPECT_FALSE(s.valid);
 }
+
+TEST(Brep, MalformedTextThatMadeOcctLoopForEverIsRefused) {
+  // Found by fuzz_brep_curvenet: OCCT's reader kept reading from a failed stream, for ever (and growing).
+  const std::string text =
+      "\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\nCurve2ds 0\nCurves 2\n1 0 0 0 1 0 0 \n"
+      "1 0 20 0 0.99920095872178938 0.n039968038348871575 0 \nPolygon3D 0\n";
+  EXPECT_THROW(hsm::geometry::readBrep(text), hsm::InputError);
+}

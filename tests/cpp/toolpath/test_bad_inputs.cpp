@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 using namespace hsm;
 using namespace hsm::toolpath;
@@ -53,4 +54,19 @@ TEST(FinishingBadInputs, LargeBallsAreComputedOrRefused) {
       EXPECT_NE(std::string(error.what()).find("tool"), std::string::npos) << error.what();
     }
   }
+}
+
+TEST(FinishingBadInputs, TheUnderside8IsRefusedAndProgressCanCancel) {
+  const std::string message = inputError([&] { parallelPlaneFinishing(feature().shape, 8, 0.0, ball()); });
+  EXPECT_NE(message.find("Face8 faces down"), std::string::npos) << message;
+  FinishingSettings s = ball();
+  std::vector<double> seen;
+  s.progress = [&](double done) {
+    seen.push_back(done);
+    return done < 0.25;
+  };
+  EXPECT_THROW(parallelPlaneFinishing(feature().shape, 4, 0.0, s), hsm::Cancelled);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_GE(seen.back(), 0.25);
+  for (size_t k = 1; k < seen.size(); ++k) EXPECT_GE(seen[k], seen[k - 1]) << "progress goes back";
 }
