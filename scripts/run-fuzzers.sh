@@ -13,7 +13,7 @@ for harness in gcode brep_curvenet brep_finishing; do
   corpus=$repo/tests/fuzz/corpus/$harness
   log=$build_dir/fuzz_$harness.log
   echo "=== fuzz_$harness: $seconds s on $(ls "$corpus" | wc -l) corpus inputs"
-  ASAN_OPTIONS=detect_leaks=1 "$build_dir/bin/fuzz_$harness" "$corpus" -max_total_time="$seconds" \
+  ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$repo/tests/cpp/lsan.supp "$build_dir/bin/fuzz_$harness" "$corpus" -max_total_time="$seconds" \
     -timeout=30 -rss_limit_mb=4096 -max_len=262144 -print_final_stats=1 \
     -artifact_prefix="$findings/$harness-" > "$log" 2>&1
   code=$?

@@ -1,6 +1,7 @@
 #include "geometry/brep.hpp"
 
 #include "common/error.hpp"
+#include "common/occt_guard.hpp"
 
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -28,7 +29,14 @@ TopoDS_Shape readBrep(std::string_view text) {
   TopoDS_Shape shape;
   BRep_Builder builder;
   try {
-    BRepTools::Read(shape, stream, builder);
+    // OCCT's reader also dereferences null geometry on some malformed text (a trimmed curve whose basis
+    // is missing, found by fuzzing): it runs guarded, so that the signal becomes an error.
+    guarded("reading of the BREP text", [&] {
+      BRepTools::Read(shape, stream, builder);
+      return 0;
+    });
+  } catch (const ComputationError& error) {
+    throw InputError(std::string("BREP text could not be read: ") + error.what());
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("BREP text could not be read (") + failure.GetMessageString() +
                      "): pass the unmodified output of Shape.exportBrepToString()");

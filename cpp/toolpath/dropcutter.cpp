@@ -13,12 +13,22 @@ namespace hsm::toolpath {
 
 namespace {
 constexpr double kVertical = 1e-9;  // facets this close to vertical are reached through their edges only
+
+// A cell index in [-1, count]: computed in doubles and clamped before the cast (a coordinate far out, or
+// not a number, must not overflow an int).
+int cellIndex(double offset, double cell, int count) {
+  const double index = std::floor(offset / cell);
+  if (!(index >= 0.0)) return -1;
+  return index >= count ? count : static_cast<int>(index);
+}
 }
 
 template <class Add>
 void BallDropCutter::registerBox(double x0, double y0, double x1, double y1, Add&& add) {
-  const int i0 = std::max(0, int((x0 - radius_ - x0_) / cell_)), i1 = std::min(nx_ - 1, int((x1 + radius_ - x0_) / cell_));
-  const int j0 = std::max(0, int((y0 - radius_ - y0_) / cell_)), j1 = std::min(ny_ - 1, int((y1 + radius_ - y0_) / cell_));
+  const int i0 = std::max(0, cellIndex(x0 - radius_ - x0_, cell_, nx_));
+  const int i1 = std::min(nx_ - 1, cellIndex(x1 + radius_ - x0_, cell_, nx_));
+  const int j0 = std::max(0, cellIndex(y0 - radius_ - y0_, cell_, ny_));
+  const int j1 = std::min(ny_ - 1, cellIndex(y1 + radius_ - y0_, cell_, ny_));
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) add(cells_[static_cast<size_t>(j) * nx_ + i]);
 }
@@ -34,12 +44,19 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
   Eigen::AlignedBox3d box = mesh.bounds();
   for (const auto& line : mesh.polylines)
     for (const auto& p : line) box.extend(p);
+  if (!box.min().allFinite() || !box.max().allFinite())
+    throw InputError("the mesh has points that are not finite: check the part's geometry");
   cell_ = std::max(radius, 1e-3);
   x0_ = box.min().x() - radius;
   y0_ = box.min().y() - radius;
-  nx_ = std::max(1, int(std::ceil((box.max().x() + radius - x0_) / cell_)) + 1);
-  ny_ = std::max(1, int(std::ceil((box.max().y() + radius - y0_) / cell_)) + 1);
-  if (double(nx_) * ny_ > 5e7) throw InputError("the mesh is too large for a tool this small: split the area");
+  const double cellsX = std::ceil((box.max().x() + radius - x0_) / cell_) + 1.0;
+  const double cellsY = std::ceil((box.max().y() + radius - y0_) / cell_) + 1.0;
+  if (!(cellsX * cellsY <= 5e7))
+    throw InputError("the part is " + std::to_string(box.sizes().x()) + " × " + std::to_string(box.sizes().y()) +
+                     " mm in plan, too large for a " + std::to_string(2.0 * radius) + " mm tool (5e7 cells): "
+                     "split the area or check the part's units");
+  nx_ = std::max(1, static_cast<int>(cellsX));
+  ny_ = std::max(1, static_cast<int>(cellsY));
   cells_.resize(static_cast<size_t>(nx_) * ny_);
 
   // Polylines: their points are vertices, their chords edges.
@@ -105,7 +122,7 @@ void BallDropCutter::addEdge(const Eigen::Vector3d& A, const Eigen::Vector3d& B,
 }
 
 const BallDropCutter::Cell* BallDropCutter::cellAt(double x, double y) const {
-  const int i = int((x - x0_) / cell_), j = int((y - y0_) / cell_);
+  const int i = cellIndex(x - x0_, cell_, nx_), j = cellIndex(y - y0_, cell_, ny_);
   if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return nullptr;
   return &cells_[static_cast<size_t>(j) * nx_ + i];
 }

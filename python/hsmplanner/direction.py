@@ -62,15 +62,17 @@ def directions_over_feeds(face, feeds_mm_min, **kwargs):
 
 
 def simulated_directions(part, face, angles_deg=range(0, 181, 10), tool_diameter=10.0, scallop=0.01,
-                         feed_mm_min=6000.0, machine="mikron-ucp710-840d", tolerance=0.01):
+                         feed_mm_min=6000.0, machine="mikron-ucp710-840d", tolerance=0.01, progress=None):
     """Parallel planes at each angle over `face` of `part` (a face on its own: part=face, face='Face1'),
     finished for the scallop and simulated on `machine`: one dict per angle (angle_deg, passes, length_mm,
     simulated_s, length_over_feed_s). The check of the paper's Fig. 12, and the surest choice: it sees the
-    pass count, the links and the part's outline, which no criterion at points sees."""
-    rows = []
-    for angle in angles_deg:
+    pass count, the links and the part's outline, which no criterion at points sees. progress: a callable
+    progress(done) over all the angles; returning False cancels (hsmplanner.Cancelled)."""
+    rows, angles = [], list(angles_deg)
+    for index, angle in enumerate(angles):
+        share = None if progress is None else (lambda done, i=index: progress((i + done) / len(angles)))
         moves, stats = parallel_finishing(part, face, angle_deg=float(angle), tool_diameter=tool_diameter,
-                                          cusp_height=scallop, tolerance=tolerance)
+                                          cusp_height=scallop, tolerance=tolerance, progress=share)
         summary = simulate(moves_to_gcode(moves, feed_mm_min), machine).summary
         rows.append(dict(angle_deg=float(angle), passes=int(stats["passes"]), length_mm=summary.cutting_length,
                          simulated_s=summary.total_time, length_over_feed_s=summary.naive_time))

@@ -7,6 +7,7 @@ import FreeCAD
 
 from hsmplanner import direction, feedsim
 
+from .progress import freecad_progress
 from .property_limits import PropertyLimits
 from .proxy_state import InMemoryResult
 
@@ -156,10 +157,12 @@ class MachiningDirection(PropertyLimits, InMemoryResult):
         count = int(round(180.0 / obj.ValidationStep))
         part, subs = obj.Face
         name = subs if isinstance(subs, str) else subs[0]
-        return direction.simulated_directions(part.Shape, name, [180.0 * i / count for i in range(count + 1)],
-                                              tool_diameter=obj.ToolDiameter.Value, scallop=obj.Scallop.Value,
-                                              feed_mm_min=self.feed_mm_min(obj), machine=obj.Machine,
-                                              tolerance=obj.Tolerance.Value)
+        with freecad_progress("%s: planes finished and simulated every %g°" % (obj.Label, obj.ValidationStep)) \
+                as progress:
+            return direction.simulated_directions(part.Shape, name, [180.0 * i / count for i in range(count + 1)],
+                                                  tool_diameter=obj.ToolDiameter.Value, scallop=obj.Scallop.Value,
+                                                  feed_mm_min=self.feed_mm_min(obj), machine=obj.Machine,
+                                                  tolerance=obj.Tolerance.Value, progress=progress)
 
     @staticmethod
     def feed_scan(obj, face, options):
