@@ -194,9 +194,12 @@ void Layout::putBoundariesOnFace(std::vector<std::string>& warnings) {
     const PointArray drawn = *points;
     dropper_->drop(*points);
     const double off = (*points - drawn).rowwise().norm().maxCoeff();
-    if (off > 0.01)
-      warnings.push_back(std::string(name) + " lies up to " + mm(off) + " off the bottom face along the tool axis: "
-                         "its points were put on the face (pick the face's own edges to avoid this)");
+    if (off <= 0.01) {
+      *points = drawn;  // on the face already: its own points, not their drops (which differ by 1e-10)
+      continue;
+    }
+    warnings.push_back(std::string(name) + " lies up to " + mm(off) + " off the bottom face along the tool axis: "
+                       "its points were put on the face (pick the face's own edges to avoid this)");
   }
 }
 
