@@ -147,10 +147,12 @@ def block_polylines(blocks, arc_points=16):
     return lines
 
 
-def draw_feed_histograms(figure, summary):
-    """Feed classes (share of blocks, length, time) and block-length classes of a summary dict (JSON keys)."""
+def draw_feed_histograms(figure, summary, stacked=False):
+    """Feed classes (share of blocks, length, time) and block-length classes of a summary dict (JSON keys),
+    side by side, or one above the other (`stacked`, for a narrow task panel)."""
     figure.clear()
-    left, right = figure.add_subplot(1, 2, 1), figure.add_subplot(1, 2, 2)
+    rows, columns = (2, 1) if stacked else (1, 2)
+    left, right = figure.add_subplot(rows, columns, 1), figure.add_subplot(rows, columns, 2)
     classes = summary["feed_classes"]
     x = np.arange(5)
     for offset, (key, label, colour) in zip((-0.27, 0, 0.27), (
@@ -158,7 +160,7 @@ def draw_feed_histograms(figure, summary):
             ("share_of_time", "time", "#fc8d62"))):
         left.bar(x + offset, 100 * np.asarray(classes[key]), width=0.26, label=label, color=colour)
     left.set_xticks(x)
-    left.set_xticklabels(FEED_CLASS_LABELS)
+    left.set_xticklabels(FEED_CLASS_LABELS, rotation=30, fontsize=8)  # upright they run into each other
     left.set_xlabel("reached / programmed feed")
     left.set_ylabel("% of cutting")
     left.legend(fontsize=8)
@@ -171,9 +173,10 @@ def draw_feed_histograms(figure, summary):
     right.set_xlabel("block length (mm)")
     right.set_ylabel("cutting blocks")
     right.set_title("block lengths", fontsize=10)
-    figure.suptitle("%s: %.1f s simulated, %.1f s by length/feed (x%.2f)" % (
-        summary["machine"], summary["total_time_s"], summary["naive_time_s"], summary["time_over_naive"]),
-        fontsize=10)
+    if not stacked:  # the panel says it in its table
+        figure.suptitle("%s: %.1f s simulated, %.1f s by length/feed (x%.2f)" % (
+            summary["machine"], summary["total_time_s"], summary["naive_time_s"], summary["time_over_naive"]),
+            fontsize=10)
     figure.tight_layout()
 
 
@@ -314,8 +317,10 @@ def draw_direction_report(figure, result, title, scan=None, validation=None, sta
         right.set_title("directions against the programmed feed", fontsize=9)
     else:
         quiver = draw_direction_map(right, result.points, result.best_angle_deg, result.fitness_max, result.angle_deg)
-        figure.colorbar(quiver, ax=right, label="G_pmax (mm²)")
-        right.set_title("best local direction; red: the optimum", fontsize=9)
+        # Plain ticks: matplotlib's offset notation read "1e-6+1.1999e-1" for a face of uniform G_pmax.
+        bar = figure.colorbar(quiver, ax=right, label="G_pmax (mm²)", format="%.4g")
+        bar.ax.tick_params(labelsize=7)
+        right.set_title("best local direction\n(red arrow: the optimum)", fontsize=9)
     figure.suptitle(title, fontsize=10)
     figure.tight_layout()
 

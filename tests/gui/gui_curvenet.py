@@ -37,6 +37,7 @@ def build_part_and_select_its_boundaries(run):
     Gui.runCommand("HSM_GuideCurveNet")
     run.process_events(0.8)
     run.check("panel open", panel() is not None)
+    run.check_fits_combo_view("Guide curve net panel", panel().form)
     run.check("boundary 1 taken from the selection", panel().boundary_1.link == (part, [part.Boundary1]),
               str(panel().boundary_1.link))
     run.check("bottom face taken", panel().bottom.link == (part, [part.BottomFace]))
@@ -77,6 +78,14 @@ def pick_button_uses_a_selection_gate(run):
     run.check("boundary 1 restored", curve_count(run) > 2)
 
 
+def display_lift(root):
+    """The z of the net's display-only lift (0 when there is none)."""
+    for i in range(root.getNumChildren()):
+        if root.getChild(i).getName() == "HsmLift":
+            return root.getChild(i).translation.getValue()[2]
+    return 0.0
+
+
 @run.step
 def four_step_and_accept(run):
     p = panel()
@@ -90,6 +99,13 @@ def four_step_and_accept(run):
               "%s %s" % (net.AreaSurfaces, len(net.ViewObject.DiffuseColor)))
     run.notes["accepted net"] = {"curves": net.Curves, "areas_mm2": [round(a, 1) for a in net.AreaSurfaces],
                                  "spacing": net.PlaneSpacing}
+    from hsmplanner.gui.view_providers import display_deflection
+
+    lifts = {name: display_lift(obj.ViewObject.RootNode) for name, obj in (("net", net), ("part", state["part"]))}
+    deflection = max(display_deflection(net), display_deflection(state["part"]))
+    run.notes["display lift and tessellation deflection (mm)"] = [lifts, round(deflection, 3)]
+    run.check("the net's areas are drawn over the part's face by more than the tessellations' deflection",
+              deflection < lifts["net"] < 3.0 * deflection and lifts["part"] == 0.0, "%s %s" % (lifts, deflection))
     state["part"].ViewObject.Transparency = 60
     Gui.Selection.clearSelection()
     Gui.activeDocument().activeView().viewTop()

@@ -58,6 +58,7 @@ def command_on_the_selected_face(run):
     state["analysis"] = analysis
     run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
     run.check("panel open", panel() is not None)
+    run.check_fits_combo_view("Machining direction panel", panel().form)
     run.check("arrows drawn", analysis.ViewObject.Proxy.root.getNumChildren() > 0)
     run.check("face taken from the selection", analysis.Face[1] == ("Face1",) or analysis.Face[1] == ["Face1"],
               str(analysis.Face))

@@ -3,6 +3,7 @@ import os
 import sys
 
 import FreeCAD
+import numpy as np
 import FreeCADGui as Gui
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -48,7 +49,17 @@ def analysis_draws_the_map_and_fills_the_panel(run):
     run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
     run.check("panel open", panel() is not None)
     run.check("map drawn", analysis.ViewObject.Proxy.root.getNumChildren() > 0)
+    from pivy import coin
+
+    first = analysis.ViewObject.Proxy.root.getChild(0).getChild(0)
+    run.check("the map is an overlay the part cannot hide",
+              first.isOfType(coin.SoDepthBuffer.getClassTypeId()) and not first.test.getValue(), str(first))
     run.check("summary table filled", panel().table.rowCount() >= 8, str(panel().table.rowCount()))
+    run.check_fits_combo_view("Feed-rate analysis panel", panel().form)
+    table = panel().table
+    shown = table.viewport().height()
+    rows = sum(table.rowHeight(i) for i in range(table.rowCount()))
+    run.check("every summary row is shown without scrolling", shown >= rows, "%d px shown of %d" % (shown, rows))
     run.notes["simulated s, naive s"] = [round(analysis.TotalTime, 2), round(analysis.NaiveTime, 2)]
     for name in ("Job", "ProbeRaster"):
         FreeCAD.ActiveDocument.getObject(name).ViewObject.Visibility = False  # the map in its own colours
@@ -74,6 +85,17 @@ def other_machine_colours_and_export(run):
     run.check("another machine, another time", abs(after - before) > 1.0, "%s %s" % (before, after))
     p.color_by.setCurrentText("Feed (mm/min)")
     run.process_events(0.5)
+    from hsmplanner.gui import feedmap
+
+    blocks = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").Proxy.result.blocks
+    colors, (low, high, unit) = feedmap.block_colors(blocks, "Feed (mm/min)")
+    run.notes["mm/min scale"] = [low, high, unit]
+    run.check("the mm/min scale tops at the programmed feed, not the rapid speed", abs(high - 4000.0) < 1.0, str(high))
+    cutting = blocks["motion"] != 0
+    at_feed = cutting & (blocks["mean_feed"] > 0.95 * blocks["programmed_feed"])
+    greens = colors[at_feed]
+    run.check("cuts at the programmed feed are drawn green", len(greens) > 0 and bool(np.all(greens[:, 1] > greens[:, 0])),
+              str(greens[:3]))
     run.screenshot("feedrate_map_grbl_mm_min")
     folder = os.path.join(OUT, "report")
     paths = p.export(folder)

@@ -79,6 +79,21 @@ def parallel_plane_finishing_from_its_panel(run):
 
 
 @run.step
+def saved_documents_hold_no_absolute_icon_path(run):
+    import tempfile
+    import zipfile
+
+    path = os.path.join(tempfile.mkdtemp(prefix="hsm-gui-"), "ops.FCStd")
+    FreeCAD.ActiveDocument.saveCopy(path)
+    with zipfile.ZipFile(path) as archive:
+        gui = archive.read("GuiDocument.xml").decode("utf-8", "replace")
+    run.check("no absolute path in the saved view providers", ".svg" not in gui and os.path.expanduser("~") not in gui,
+              [line.strip()[:160] for line in gui.splitlines() if ".svg" in line][:3])
+    icon = state["guide"].ViewObject.Proxy.getIcon()
+    run.check("the icon resolves on this machine", os.path.isfile(icon), icon)
+
+
+@run.step
 def escape_cancels_a_long_finishing_and_keeps_the_document(run):
     """A cusp of 0.001 mm takes seconds: its progress dialog shows, Esc stops it, the operation is marked
     cancelled, the document and its objects stay, and the next recompute works again."""

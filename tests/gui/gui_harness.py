@@ -62,6 +62,16 @@ class GuiRun:
                 break
             widget = QtWidgets.QApplication.activeModalWidget()
 
+    def check_fits_combo_view(self, name, form):
+        """The panel fits FreeCAD's default Combo View (its minimum width), and its widgets do not overflow
+        the width it is given there."""
+        from hsmplanner.gui.task_panel import COMBO_VIEW_WIDTH
+
+        needed = form.minimumSizeHint().width()
+        self.notes.setdefault("minimum panel widths (px)", {})[name] = needed
+        self.check("%s fits the %d px Combo View" % (name, COMBO_VIEW_WIDTH), needed <= COMBO_VIEW_WIDTH,
+                   "needs %d px" % needed)
+
     def screenshot(self, name):
         """Grab the whole main window from the screen (grab() would leave the 3D view blank)."""
         self.process_events(0.5)

@@ -198,3 +198,20 @@ class DocumentObject(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class DefaultsFromTheJob(unittest.TestCase):
+    def test_the_analysis_takes_the_jobs_ball_end_tool_and_feeds(self):
+        from hsmplanner.app.compat import create_job
+
+        document = FreeCAD.newDocument("DirectionDefaults")
+        self.addCleanup(FreeCAD.closeDocument, document.Name)
+        part = master_feature_object.create(document)
+        job = create_job([part])
+        finishing.ball_end_controller(job, 4.0, 4000.0, spindle_rpm=18000)
+        analysis = direction_object.create(document=document)
+        self.assertAlmostEqual(analysis.ToolDiameter.Value, 4.0)
+        self.assertAlmostEqual(analysis.Feed, 4000.0)
+        self.assertAlmostEqual(analysis.SpindleSpeed, 18000.0)
+        given = direction_object.create(document=document, ToolDiameter=6.0)
+        self.assertAlmostEqual(given.ToolDiameter.Value, 6.0)  # what the user gives wins

@@ -7,6 +7,8 @@ import FreeCAD
 
 from hsmplanner import direction, feedsim
 
+from . import finishing
+
 from .progress import freecad_progress
 from .property_limits import PropertyLimits
 from .proxy_state import InMemoryResult
@@ -217,6 +219,13 @@ def create(face=None, document=None, name="MachiningDirection", **properties):
                                                                              ", ".join(sorted(known))))
     obj = document.addObject(TYPE_NAME, name)
     MachiningDirection(obj)
+    job_tool = finishing.job_ball_end(document)
+    if job_tool is not None:  # the Job's ball end mill and its feeds, unless given
+        diameter, feed, rpm = job_tool
+        defaults = dict(ToolDiameter=diameter, Feed=feed if feed > 0 else None, SpindleSpeed=rpm if rpm > 0 else None)
+        for key, value in defaults.items():
+            if value is not None:
+                properties.setdefault(key, value)
     for key, value in properties.items():
         setattr(obj, key, value)
     if face:

@@ -44,6 +44,18 @@ def is_ball_end(tool):
     return "ballend" in shape.lower().replace(" ", "") or getattr(tool, "ToolType", "") == "BallEndMill"
 
 
+def job_ball_end(document):
+    """(diameter mm, feed mm/min, spindle rpm) of the first ball-end tool controller of a Job of `document`,
+    or None: what an analysis of this document should assume by default."""
+    for job in (o for o in document.Objects if hasattr(o, "Operations") and hasattr(o, "Tools")):
+        for controller in job.Tools.Group:
+            tool = getattr(controller, "Tool", None)
+            if tool is not None and is_ball_end(tool):
+                feed = float(controller.HorizFeed.getValueAs("mm/min"))
+                return float(tool.Diameter), feed, float(controller.SpindleSpeed)
+    return None
+
+
 def check_tool(controller, tool):
     """Refuses a tool controller that ball-end finishing cannot use: not a ball end mill (the cusp and gouge
     checks assume a ball), or a cutting feed of 0 (FreeCAD's default controller: the path would cut at F0)."""

@@ -9,7 +9,7 @@ from hsmplanner import plots
 from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM
 
-from .task_panel import AnalysisPanel, selected_faces
+from .task_panel import AnalysisPanel, narrow_combo, selected_faces
 
 # (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
 # (property, label, decimals, suffix); the ranges are the object's (direction_object.LIMITS).
@@ -56,15 +56,16 @@ def summary_text(obj):
 
 class DirectionPanel(AnalysisPanel):
     def _build_form(self):
-        form, layout, settings = self.new_form("Machining direction", 440)
+        form, layout, settings = self.new_form("Machining direction")
         face_row = QtWidgets.QHBoxLayout()
         self.face_label = QtWidgets.QLabel()
-        self.face_button = QtWidgets.QPushButton("Use selected face")
+        self.face_label.setWordWrap(True)
+        self.face_button = QtWidgets.QPushButton("Use selection")
+        self.face_button.setToolTip("take the face selected in the 3D view")
         face_row.addWidget(self.face_label, 1)
         face_row.addWidget(self.face_button)
         settings.addRow("Face", face_row)
-        self.feed_from = QtWidgets.QComboBox()
-        self.feed_from.addItems(FEED_FROM)
+        self.feed_from = narrow_combo(FEED_FROM)
         settings.addRow("Feed from", self.feed_from)
         self.numbers = {}
         for name, label, low, high, decimals, suffix in _NUMBERS:
@@ -75,13 +76,12 @@ class DirectionPanel(AnalysisPanel):
             box.setSuffix(suffix)
             self.numbers[name] = box
             settings.addRow(label, box)
-        self.machine = QtWidgets.QComboBox()
-        self.machine.addItems(self.obj.getEnumerationsOfProperty("Machine"))
+        self.machine = narrow_combo(self.obj.getEnumerationsOfProperty("Machine"))
         settings.addRow("Machine", self.machine)
-        self.use_jerk = QtWidgets.QCheckBox("limit the real feed by the axes' jerk too")
+        self.use_jerk = QtWidgets.QCheckBox("jerk limit too")
+        self.use_jerk.setToolTip("limit the real feed by the axes' jerk too, not only by their acceleration")
         settings.addRow("", self.use_jerk)
-        self.choice = QtWidgets.QComboBox()
-        self.choice.addItems(CHOICES)
+        self.choice = narrow_combo(CHOICES)
         settings.addRow("Apply", self.choice)
         self.compute_button = QtWidgets.QPushButton("Compute")
         layout.addWidget(self.compute_button)
@@ -93,7 +93,7 @@ class DirectionPanel(AnalysisPanel):
         self.canvas.setMinimumHeight(520)
         layout.addWidget(self.canvas)
         apply_row = QtWidgets.QHBoxLayout()
-        self.operations = QtWidgets.QComboBox()
+        self.operations = narrow_combo()
         self.apply_button = QtWidgets.QPushButton("Set the angle of")
         apply_row.addWidget(self.apply_button)
         apply_row.addWidget(self.operations, 1)

@@ -52,8 +52,17 @@ def direction_node(result, chosen_deg, arrows):
         return root
     lines, chosen = strokes(result.points, result.best_angle_deg, arrows)
     values = np.asarray(result.fitness_max, dtype=float)
-    high = max(float(values.max()), 1e-12)  # shares of the best point's: a uniform face stays one colour
-    root.addChild(line_set(lines, plots.feed_colors(values[chosen] / high), width=2.0))
+    low, high = fitness_scale(values)
+    root.addChild(line_set(lines, plots.feed_colors((values[chosen] - low) / (high - low)), width=2.0))
     root.addChild(line_set(chosen_arrow(result.points, chosen_deg), np.tile([0.85, 0.1, 0.1], (7, 1)), width=5.0))
-    root.addChild(legend_node(0.0, high, "mm²", title="best local G_p", digits=3))
+    root.addChild(legend_node(low, high, "mm²", title="best local G_p", digits=4))
     return root
+
+
+def fitness_scale(values):
+    """The colour scale of G_pmax: from the face's lowest to its highest (from 0 the colours of a face whose
+    G_pmax varies by 1 % were all the same green); a uniform face gets a scale of ±1 % around its value."""
+    low, high = float(np.min(values)), float(np.max(values))
+    if high - low <= 1e-9 * max(abs(high), 1e-12):
+        low, high = 0.99 * high, 1.01 * high + 1e-12
+    return low, high

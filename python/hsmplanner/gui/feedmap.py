@@ -6,6 +6,7 @@ from pivy import coin
 from hsmplanner import plots
 
 LEGEND_STEPS = 20
+LEGEND_TICKS = 4
 
 
 def _packed(rgb):
@@ -40,16 +41,27 @@ def line_set(polylines, colors=None, width=2.0, pattern=None):
 
 
 def block_colors(blocks, color_by):
-    """RGB per block and the legend's (low, high, unit) for `color_by` ('Share…' or 'Feed (mm/min)')."""
+    """RGB per block and the legend's (low, high, unit) for `color_by` ('Share…' or 'Feed (mm/min)').
+
+    In mm/min the scale tops at the highest programmed cutting feed: rapids (drawn apart, dotted) would set
+    it at the machine's rapid speed and paint every cut at F red."""
     if color_by.startswith("Feed"):
-        top = max(float(np.max(blocks["programmed_feed"])) * 60.0, 1e-9)
+        cutting = blocks["motion"] != 0
+        programmed = blocks["programmed_feed"][cutting] if np.any(cutting) else blocks["programmed_feed"]
+        top = max(float(np.max(programmed)) * 60.0, 1e-9) if len(programmed) else 1.0
         return plots.feed_colors(blocks["mean_feed"] * 60.0 / top), (0.0, top, "mm/min")
     ratios = blocks["mean_feed"] / np.maximum(blocks["programmed_feed"], 1e-12)
     return plots.feed_colors(ratios), (0.0, 100.0, "% of F")
 
 
 def map_node(blocks, color_by):
+    """The map is an overlay: drawn over the part without the depth test. The tool-tip path runs below the
+    face wherever the ball touches it off its tip (on every slope), so with the depth test the part hid the
+    map in grey blotches."""
     root = coin.SoSeparator()
+    overlay = coin.SoDepthBuffer()
+    overlay.test = False
+    root.addChild(overlay)
     lines = plots.block_polylines(blocks)
     cutting = blocks["motion"] != 0
     colors, scale = block_colors(blocks, color_by)
@@ -94,8 +106,9 @@ def legend_node(low, high, unit, title="mean reached feed", digits=0):
     text_colour = coin.SoBaseColor()
     text_colour.rgb = (1, 1, 1)
     root.addChild(text_colour)
-    for value, y in ((low, y0), (0.5 * (low + high), 0.5 * (y0 + y1)), (high, y1)):
-        root.addChild(_label("%g %s" % (round(value, digits), unit), x0 - 0.02, y - 0.02))
+    for k in range(LEGEND_TICKS + 1):  # the scale's numbers, every quarter
+        f = k / LEGEND_TICKS
+        root.addChild(_label("%g %s" % (round(low + f * (high - low), digits), unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02))
     root.addChild(_label(title, x1, y1 + 0.06))
     return root
 

@@ -1,12 +1,12 @@
 """Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
 from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
 from matplotlib.figure import Figure
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
 from hsmplanner import feedsim, plots
 from hsmplanner.app.feedrate_object import COLOR_MODES
 
-from .task_panel import AnalysisPanel
+from .task_panel import AnalysisPanel, narrow_combo
 
 
 def summary_rows(summary):
@@ -29,15 +29,11 @@ def summary_rows(summary):
 
 class FeedRatePanel(AnalysisPanel):
     def _build_form(self):
-        form, layout, settings = self.new_form("Feed-rate analysis", 420)
-        self.machine = QtWidgets.QComboBox()
-        self.machine.addItems(self.obj.getEnumerationsOfProperty("Machine"))
-        self.machine.setCurrentText(self.obj.Machine)
+        form, layout, settings = self.new_form("Feed-rate analysis")
+        self.machine = narrow_combo(self.obj.getEnumerationsOfProperty("Machine"), self.obj.Machine)
         settings.addRow("Machine", self.machine)
-        self.color_by = QtWidgets.QComboBox()
-        self.color_by.addItems(COLOR_MODES)
-        self.color_by.setCurrentText(self.obj.ColorBy)
-        settings.addRow("Colours show", self.color_by)
+        self.color_by = narrow_combo(COLOR_MODES, self.obj.ColorBy)
+        settings.addRow("Colours", self.color_by)
         self.simulate_button = QtWidgets.QPushButton("Simulate")
         layout.addWidget(self.simulate_button)
         self.message = QtWidgets.QLabel()  # errors and export results, where the eye lands after Simulate
@@ -46,13 +42,17 @@ class FeedRatePanel(AnalysisPanel):
         self.table = QtWidgets.QTableWidget(0, 2)
         self.table.horizontalHeader().setVisible(False)
         self.table.verticalHeader().setVisible(False)
-        self.table.horizontalHeader().setStretchLastSection(True)
+        # Values whole, labels wrapped: at the Combo View's width both columns cannot be one line wide.
+        self.table.horizontalHeader().setSectionResizeMode(0, QtWidgets.QHeaderView.Stretch)
+        self.table.horizontalHeader().setSectionResizeMode(1, QtWidgets.QHeaderView.ResizeToContents)
+        self.table.setWordWrap(True)
         layout.addWidget(self.table)
-        self.figure = Figure(figsize=(5, 2.6), dpi=80)
+        self.figure = Figure(figsize=(3.4, 5.2), dpi=80)
         self.canvas = FigureCanvasQTAgg(self.figure)
-        self.canvas.setMinimumHeight(230)
+        self.canvas.setMinimumHeight(400)  # the two histograms stacked: they fit the Combo View's width
         layout.addWidget(self.canvas)
-        self.export_button = QtWidgets.QPushButton("Export report (JSON, CSV, PNG)…")
+        self.export_button = QtWidgets.QPushButton("Export report…")
+        self.export_button.setToolTip("JSON summary, per-block CSV, histogram and feed-map PNGs")
         layout.addWidget(self.export_button)
         self.simulate_button.clicked.connect(self.simulate)
         self.color_by.currentTextChanged.connect(self.recolor)
@@ -84,9 +84,17 @@ class FeedRatePanel(AnalysisPanel):
         for i, (label, value) in enumerate(rows):
             self.table.setItem(i, 0, QtWidgets.QTableWidgetItem(label))
             self.table.setItem(i, 1, QtWidgets.QTableWidgetItem(value))
-        self.table.resizeColumnsToContents()
-        plots.draw_feed_histograms(self.figure, summary)
+        self.table.resizeRowsToContents()
+        self.fit_table_height()
+        plots.draw_feed_histograms(self.figure, summary, stacked=True)
         self.canvas.draw()
+
+    def fit_table_height(self):
+        """Every row shown, no scroll bar: the summary is what people came for."""
+        rows = sum(self.table.rowHeight(i) for i in range(self.table.rowCount()))
+        self.table.setVerticalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)
+        self.table.setHorizontalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)  # long values elide instead
+        self.table.setFixedHeight(rows + 2 * self.table.frameWidth() + 2)
 
     def choose_export_folder(self):
         folder = QtWidgets.QFileDialog.getExistingDirectory(self.form, "Folder for the feed-rate report")

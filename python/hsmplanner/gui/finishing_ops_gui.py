@@ -1,5 +1,7 @@
 """Task panels and commands of the finishing operations, on FreeCAD's own operation GUI (PathOpGui):
 the Job's tool controllers, heights and coolant pages come with them."""
+import os
+
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtWidgets
@@ -144,11 +146,34 @@ def _no_gate():
 
 
 class ViewProviderFinishing(PathOpGui.ViewProvider):
+    """FreeCAD's operation view provider, saving the icon by name: a saved document holds no path into the
+    saving user's files (another user, or a moved install, would see FreeCAD's generic icon)."""
+
     def getIcon(self):
         return self.OpIcon
 
+    def __getstate__(self):
+        state = super().__getstate__()
+        state["OpIcon"] = icon_name(state["OpIcon"])
+        return state
+
+    def __setstate__(self, state):
+        super().__setstate__(state)
+        self.OpIcon = icon(icon_name(self.OpIcon))  # also mends documents saved with a path
+
+    def dumps(self):  # FreeCAD 1.x spelling
+        return self.__getstate__()
+
+    def loads(self, state):
+        self.__setstate__(state)
+
     def getSelectionFactory(self):
         return _no_gate
+
+
+def icon_name(path_or_name):
+    """'GuideCurveFinishing' from a name or from any path to its .svg (documents saved before 0.1 hold paths)."""
+    return os.path.splitext(os.path.basename(str(path_or_name)))[0]
 
 
 class CommandFinishing:

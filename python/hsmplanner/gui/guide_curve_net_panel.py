@@ -11,7 +11,7 @@ from hsmplanner.app.guide_curve_net import MODES, NetParameters, build_guide_cur
 from hsmplanner.app.guide_curve_net_object import LIMITS, linked_shape
 
 from .preview import NetPreview
-from .task_panel import TaskPanel
+from .task_panel import TaskPanel, narrow_combo, narrow_form_layout
 
 K_SLIDER_SCALE = 100     # slider units per unit of K
 STEP_SLIDER_SCALE = 2    # slider units per mm of P (0.5 mm resolution)
@@ -37,6 +37,8 @@ class _LinkField:
         self.text.setPlaceholderText("pick a %s in the 3D view" % ("face" if prefix == "Face" else "edge"))
         self.button = QtWidgets.QPushButton("Pick")
         self.button.setCheckable(True)
+        self.button.setMaximumWidth(self.button.fontMetrics().horizontalAdvance("Pick") + 24)  # room for the name
+        self.button.setToolTip("then click the %s in the 3D view" % ("face" if prefix == "Face" else "edge(s)"))
         self.button.toggled.connect(self.toggled)
         row = QtWidgets.QHBoxLayout()
         row.addWidget(self.text)
@@ -49,6 +51,8 @@ class _LinkField:
     def set(self, obj, subs):
         self.link = (obj, list(subs)) if obj is not None else None
         self.text.setText("%s: %s" % (obj.Label, ", ".join(subs)) if obj is not None else "")
+        self.text.setToolTip(self.text.text())
+        self.text.setCursorPosition(len(self.text.text()))  # the element's name shows when the field is narrow
 
 
 class GuideCurveNetPanel(TaskPanel):
@@ -72,11 +76,11 @@ class GuideCurveNetPanel(TaskPanel):
     def _build_form(self):
         form = QtWidgets.QWidget()
         form.setWindowTitle("Guide curve net")
-        form.setMinimumWidth(380)
         outer = QtWidgets.QVBoxLayout(form)
 
         picks = QtWidgets.QGroupBox("Boundaries and bottom")
-        picks_layout = QtWidgets.QFormLayout(picks)
+        picks_layout = narrow_form_layout()
+        picks.setLayout(picks_layout)
         self.boundary_1 = _LinkField(self, "Boundary 1", "Edge", picks_layout)
         self.boundary_2 = _LinkField(self, "Boundary 2", "Edge", picks_layout)
         self.bottom = _LinkField(self, "Bottom face", "Face", picks_layout)
@@ -84,8 +88,7 @@ class GuideCurveNetPanel(TaskPanel):
 
         net = QtWidgets.QGroupBox("Net")
         grid = QtWidgets.QGridLayout(net)
-        self.mode = QtWidgets.QComboBox()
-        self.mode.addItems(list(MODES))
+        self.mode = narrow_combo(MODES)
         grid.addWidget(QtWidgets.QLabel("Mode"), 0, 0)
         grid.addWidget(self.mode, 0, 1, 1, 2)
         self.k_slider, self.k_box = self._slider_row(grid, 1, "K", 1, 99, K_SLIDER_SCALE, *LIMITS["K"], 2, "")
@@ -95,9 +98,13 @@ class GuideCurveNetPanel(TaskPanel):
         self.gap_box.setRange(*LIMITS["MinGap"])
         self.gap_box.setDecimals(2)
         self.gap_box.setSuffix(" mm")
-        grid.addWidget(QtWidgets.QLabel("Minimum gap"), 3, 0)
+        gap_label = QtWidgets.QLabel("Min. gap")
+        gap_label.setToolTip("a net stops before a curve comes closer than this to its target")
+        grid.addWidget(gap_label, 3, 0)
         grid.addWidget(self.gap_box, 3, 1, 1, 2)
-        self.four_step = QtWidgets.QPushButton("4-step method (median, then K 0.75 per half)")
+        self.four_step = QtWidgets.QPushButton("4-step method")
+        self.four_step.setToolTip("the paper's method: the median, then one curve at K 0.75 in each half, with planes "
+                                  "adapted to the guides' curvature")
         grid.addWidget(self.four_step, 4, 0, 1, 3)
         outer.addWidget(net)
 

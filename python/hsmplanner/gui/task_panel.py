@@ -40,12 +40,34 @@ class AnalysisPanel(TaskPanel):
         self.opened()
 
     @staticmethod
-    def new_form(title, minimum_width):
+    def new_form(title):
         """The panel's widget, its vertical layout and the form layout of its settings (added first)."""
         form = QtWidgets.QWidget()
         form.setWindowTitle(title)
-        form.setMinimumWidth(minimum_width)
         layout = QtWidgets.QVBoxLayout(form)
-        settings = QtWidgets.QFormLayout()
+        settings = narrow_form_layout()
         layout.addLayout(settings)
         return form, layout, settings
+
+
+# FreeCAD's Combo View is about 275 px wide by default: every panel must fit it, as FreeCAD's own do.
+COMBO_VIEW_WIDTH = 275
+
+
+def narrow_form_layout():
+    """A form layout whose rows put the field under its label when the panel is narrow."""
+    layout = QtWidgets.QFormLayout()
+    layout.setRowWrapPolicy(QtWidgets.QFormLayout.WrapLongRows)
+    layout.setFieldGrowthPolicy(QtWidgets.QFormLayout.AllNonFixedFieldsGrow)
+    return layout
+
+
+def narrow_combo(items=(), current=None):
+    """A combo box that does not widen the panel to its longest item (the full text is in the list)."""
+    combo = QtWidgets.QComboBox()
+    combo.addItems(list(items))
+    combo.setSizeAdjustPolicy(QtWidgets.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    combo.setMinimumContentsLength(8)
+    if current is not None:
+        combo.setCurrentText(current)
+    return combo

@@ -24,6 +24,36 @@ class ViewProviderMasterBottomFeature(_StatelessViewProvider):
     ICON = "MasterBottomFeature"
 
 
+def display_deflection(obj):
+    """How far FreeCAD's tessellation of `obj` may stray from its surface, mm (its formula: the sum of the
+    bounding box's extents / 300 × Deviation)."""
+    box, view = obj.Shape.BoundBox, obj.ViewObject
+    return (box.XLength + box.YLength + box.ZLength) / 300.0 * float(getattr(view, "Deviation", 0.5))
+
+
+def lift_over_the_part(net):
+    """The net's areas are pieces of the part's bottom face: drawn at the same place, the two tessellations
+    (each within its own deflection, ~0.5 mm) cross each other and the part showed through in blotches.
+    The net is drawn higher by more than both deflections (a display-only translation at the head of its
+    scene; its geometry, the picked edges and the saved shape are untouched). FreeCAD's polygon offset
+    cannot be used: it is reset on every update, and it would not bridge two tessellations. Returns the
+    lift, mm."""
+    from pivy import coin
+
+    root = net.ViewObject.RootNode
+    part = net.BottomFace[0] if net.BottomFace else None
+    lift = 1.5 * max(display_deflection(net), display_deflection(part) if part is not None else 0.0, 0.01)
+    for i in range(root.getNumChildren()):
+        if root.getChild(i).getName() == "HsmLift":
+            root.getChild(i).translation.setValue(0.0, 0.0, lift)
+            return lift
+    node = coin.SoTranslation()
+    node.setName("HsmLift")
+    node.translation.setValue(0.0, 0.0, lift)
+    root.insertChild(node, 0)
+    return lift
+
+
 class ViewProviderGuideCurveNet(_StatelessViewProvider):
     """Elementary areas in distinct colours, curves by role (boundary, median, intermediate)."""
 
@@ -44,6 +74,7 @@ class ViewProviderGuideCurveNet(_StatelessViewProvider):
         if view is None or len(faces) != len(obj.FaceAreas) or len(edges) < len(obj.CurveRoles):
             return  # mid-recompute: the properties do not match yet
         view.DiffuseColor = [area_color(index) + (0.0,) for index in obj.FaceAreas]
+        lift_over_the_part(obj)
         border_count = len(edges) - len(obj.CurveRoles)  # the curve edges come last in the compound
         view.LineColorArray = [REGION_BORDER + (0.0,)] * border_count + [
             CURVE_COLORS.get(role, (0, 0, 0)) + (0.0,) for role in obj.CurveRoles]
