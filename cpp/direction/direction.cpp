@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -140,39 +141,50 @@ DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingCondition
 namespace {
 
 // The time of parallel planes along `thetaDeg` over the points. A plane keeps one stepover from its
-// neighbour: the smallest p1 along it. The face is cut into strips along the planes, one point spacing
-// wide; in each, the path length per plan area is 1/min p1, stretched by the slope along d, at each point's
-// real feed fz·Z·N; each plane adds its run-outs and a reversal. Infinite where a strip gets no step.
-// `steps` and `feeds`: p1 and the real fz of each point along that direction.
+// neighbour: the smallest p1 along it. The plane through a point sees the points within half a point
+// spacing of it across the planes (a window that slides with the point: fixed strips aliased with the
+// sample grid, and directions along the grid's rows gave times 10 % off their neighbours'); the path
+// length per plan area there is 1/that p1, stretched by the slope along d, at the point's real feed
+// fz·Z·N. Each plane adds its run-outs and a reversal: their number is the integral of 1/p1 across the face.
+// Infinite where a point gets no step. `steps` and `feeds`: p1 and the real fz of each point along d.
 double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDeg,
                   Eigen::Ref<const Eigen::VectorXd> steps, Eigen::Ref<const Eigen::VectorXd> feeds,
                   const CuttingConditions& c) {
   const double theta = thetaDeg * M_PI / 180.0;
   const Eigen::Vector2d along(std::cos(theta), std::sin(theta)), across(-along.y(), along.x());
-  double area = 0.0, lo = kInfinity, hi = -kInfinity;
-  for (const SurfacePoint* m : points) {
-    area += m->planArea;
-    const double q = across.dot(m->point.head<2>());
-    lo = std::min(lo, q);
-    hi = std::max(hi, q);
+  const size_t n = points.size();
+  double area = 0.0;
+  std::vector<std::pair<double, size_t>> order(n);  // (position across the planes, point)
+  for (size_t i = 0; i < n; ++i) {
+    area += points[i]->planArea;
+    order[i] = {across.dot(points[i]->point.head<2>()), i};
   }
-  const double width = std::max(std::sqrt(area / points.size()), 1e-9);
-  const size_t strips = static_cast<size_t>((hi - lo) / width) + 1;
-  std::vector<double> minStep(strips, kInfinity), timeAtUnitStep(strips, 0.0);
-  for (size_t i = 0; i < points.size(); ++i) {
-    const SurfacePoint& m = *points[i];
-    const size_t s = std::min(strips - 1, static_cast<size_t>((across.dot(m.point.head<2>()) - lo) / width));
-    const double slope = along.dot(m.normal.head<2>()) / m.normal.z();
-    const Eigen::Index at = static_cast<Eigen::Index>(i);
-    minStep[s] = std::min(minStep[s], steps(at));
-    timeAtUnitStep[s] += m.planArea * std::sqrt(1.0 + slope * slope) / (feeds(at) * c.teeth * c.spindleSpeed);
+  std::sort(order.begin(), order.end());
+  const double width = std::max(std::sqrt(area / n), 1e-9);
+  // Sliding-window minimum of p1 over |q_j − q_i| ≤ width / 2 (two pointers and a monotone deque).
+  std::vector<double> planeStep(n, kInfinity);
+  std::deque<size_t> window;  // indices into `order`, increasing p1
+  size_t next = 0, first = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const double q = order[k].first;
+    while (next < n && order[next].first <= q + 0.5 * width) {
+      const double p = steps(static_cast<Eigen::Index>(order[next].second));
+      while (!window.empty() && steps(static_cast<Eigen::Index>(order[window.back()].second)) >= p) window.pop_back();
+      window.push_back(next++);
+    }
+    while (order[first].first < q - 0.5 * width) ++first;
+    while (window.front() < first) window.pop_front();
+    planeStep[order[k].second] = steps(static_cast<Eigen::Index>(order[window.front()].second));
   }
   double time = 0.0, planes = 0.0;
-  for (size_t s = 0; s < strips; ++s) {
-    if (timeAtUnitStep[s] <= 0.0) continue;
-    if (minStep[s] <= 0.0) return kInfinity;
-    time += timeAtUnitStep[s] / minStep[s];
-    planes += width / minStep[s];
+  const double span = order.back().first - order.front().first + width;
+  for (size_t i = 0; i < n; ++i) {
+    const SurfacePoint& m = *points[i];
+    if (!(planeStep[i] > 0.0)) return kInfinity;
+    const double slope = along.dot(m.normal.head<2>()) / m.normal.z();
+    const Eigen::Index at = static_cast<Eigen::Index>(i);
+    time += m.planArea * std::sqrt(1.0 + slope * slope) / (feeds(at) * c.teeth * c.spindleSpeed) / planeStep[i];
+    planes += span * (m.planArea / area) / planeStep[i];  // ∫ dq / p1, each point weighted by its area
   }
   const double perPlane = 2.0 * c.toolRadius / c.programmedFeed + stopAndGoLoss(c.programmedFeed, c.acceleration, c.stopJerk);
   return time + planes * perPlane;

@@ -295,6 +295,11 @@ def draw_direction_rate(axes, result):
         twin = axes.twinx()
         twin.plot(result.angles_deg, np.where(np.isfinite(times), times, np.nan), "--", color="#9467bd")
         twin.set_ylabel("predicted cutting time (s)", color="#9467bd")
+        # Why the curve has dips: each plane keeps the smallest step along it, so planes that run along a
+        # feature (valleys) keep their own step each, and a few degrees off they cross it and take its worst.
+        axes.annotate("a plane keeps the smallest step along it: dips where planes run along a feature",
+                      xy=(0.5, 1.01), xycoords="axes fraction", ha="center", va="bottom", fontsize=7,
+                      color="#9467bd")
         line = axes.axvline(result.fastest_angle_deg, color="#9467bd", linestyle="--")
         handles.append(line)
         labels.append("least predicted time: %.0f°" % result.fastest_angle_deg)

@@ -63,6 +63,19 @@ def command_on_the_selected_face(run):
     run.check("face taken from the selection", analysis.Face[1] == ("Face1",) or analysis.Face[1] == ["Face1"],
               str(analysis.Face))
     run.check("summary shows the beams", "Directional beams" in panel().summary.text(), panel().summary.text())
+    import numpy as np
+    from hsmplanner import plots
+    from hsmplanner.gui import direction_view
+
+    result = analysis.Proxy.result
+    values = np.asarray(result.fitness_max)
+    low, high = direction_view.fitness_scale(values)
+    colours = plots.feed_colors((values - low) / (high - low))
+    run.notes["G_pmax range (mm2)"] = [round(float(values.min()), 5), round(float(values.max()), 5)]
+    run.check("the strokes' colours span the scale (not one green)",
+              float(np.ptp(colours, axis=0).max()) > 0.3, str(np.ptp(colours, axis=0)))
+    arrow = direction_view.chosen_arrow(result.points, analysis.ChosenAngle.Value)
+    run.check("the chosen direction is a double arrow", len(arrow) == 5, str(len(arrow)))
     run.notes["beams deg, alpha"] = [analysis.OptimalAngle.Value, round(analysis.BeamAlpha, 3)]
     state["part"].ViewObject.Transparency = 40
     Gui.Selection.clearSelection()

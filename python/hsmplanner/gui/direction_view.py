@@ -39,7 +39,7 @@ def chosen_arrow(points, angle_deg):
     a = np.radians(angle_deg)
     along, across = np.array([np.cos(a), np.sin(a), 0.0]), np.array([-np.sin(a), np.cos(a), 0.0])
     tip, tail = centre + half * along, centre - half * along
-    head = 0.08 * half
+    head = 0.15 * half  # large enough to read as arrow heads from the whole face's view
     lines = [np.vstack([tail, tip])]
     for end, sense in ((tip, -1.0), (tail, 1.0)):
         lines += [np.vstack([end, end + head * (sense * along + 0.6 * side)]) for side in (across, -across)]
@@ -54,7 +54,8 @@ def direction_node(result, chosen_deg, arrows):
     values = np.asarray(result.fitness_max, dtype=float)
     low, high = fitness_scale(values)
     root.addChild(line_set(lines, plots.feed_colors((values[chosen] - low) / (high - low)), width=2.0))
-    root.addChild(line_set(chosen_arrow(result.points, chosen_deg), np.tile([0.85, 0.1, 0.1], (7, 1)), width=5.0))
+    arrow = chosen_arrow(result.points, chosen_deg)
+    root.addChild(line_set(arrow, np.tile([0.85, 0.1, 0.1], (len(arrow), 1)), width=5.0))
     root.addChild(legend_node(low, high, "mm²", title="best local G_p", digits=4))
     return root
 
