@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui as Gui
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import OUT, GuiRun  # noqa: E402
+from gui_harness import GuiRun  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -17,13 +17,6 @@ def panel():
     from hsmplanner.gui import direction_panel
 
     return direction_panel.DirectionPanel.active
-
-
-def save_panel_plots(run, name):
-    """The panel's plots as the user sees them (the panel scrolls them out of the window's screenshot)."""
-    image = os.path.join(OUT, name + ".png")
-    panel().figure.savefig(image)
-    run.screenshots.append(image)
 
 
 @run.step
@@ -82,7 +75,7 @@ def command_on_the_selected_face(run):
     Gui.activeDocument().activeView().viewTop()
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("direction_beams_top")
-    save_panel_plots(run, "direction_panel_beams")
+    run.panel_plots("direction_panel_beams", panel().figure)
     Gui.activeDocument().activeView().viewIsometric()
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("direction_beams_iso")
@@ -100,7 +93,7 @@ def feed_scan_in_the_panel(run):
     run.check("scan of 6 feeds", len(analysis.ScanFeeds) == 6, str(list(analysis.ScanFeeds)))
     run.notes["scan optimum deg"] = list(analysis.ScanOptimalAngles)
     run.screenshot("direction_feed_scan")
-    save_panel_plots(run, "direction_panel_scan")
+    run.panel_plots("direction_panel_scan", panel().figure)
 
 
 @run.step
@@ -130,10 +123,13 @@ def fastest_simulated_applied_to_the_operation(run):
     run.check("angle applied", angle is not None and abs(planes.Angle.Value - analysis.ChosenAngle.Value) < 1e-9,
               "%s %s" % (planes.Angle, analysis.ChosenAngle))
     run.check("operation recomputed", planes.isValid() and planes.Passes > 100, str(planes.State))
+    window = p.plots.open_window()
+    run.check("the plots open in a window", window.isVisible())
+    run.widget_screenshot("direction_plots_window", window)
     run.notes["fastest simulated deg, times s"] = [analysis.ChosenAngle.Value,
                                                    [round(t, 1) for t in analysis.ValidationTimes]]
     run.screenshot("direction_validation_applied")
-    save_panel_plots(run, "direction_panel_validation")
+    run.panel_plots("direction_panel_validation", panel().figure)
     p.reject()
     run.process_events(0.3)
 

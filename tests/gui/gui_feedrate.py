@@ -60,6 +60,21 @@ def analysis_draws_the_map_and_fills_the_panel(run):
     shown = table.viewport().height()
     rows = sum(table.rowHeight(i) for i in range(table.rowCount()))
     run.check("every summary row is shown without scrolling", shown >= rows, "%d px shown of %d" % (shown, rows))
+    from PySide2 import QtCore
+
+    metrics, cut = table.fontMetrics(), []
+    for r in range(table.rowCount()):
+        for c in range(2):
+            text, width = table.item(r, c).text(), table.columnWidth(c) - 6  # the cell's margins
+            need = metrics.boundingRect(QtCore.QRect(0, 0, width, 10000), QtCore.Qt.TextWordWrap, text)
+            if need.width() > width or need.height() > table.rowHeight(r):
+                cut.append(text)
+    run.check("no label or value of the table is cut short", not cut, str(cut))
+    run.panel_plots("feedrate_panel_histograms", panel().figure)
+    window = panel().plots.open_window()
+    run.check("the plots open in a window", window.isVisible())
+    run.widget_screenshot("feedrate_plots_window", window)
+    window.close()
     run.notes["simulated s, naive s"] = [round(analysis.TotalTime, 2), round(analysis.NaiveTime, 2)]
     for name in ("Job", "ProbeRaster"):
         FreeCAD.ActiveDocument.getObject(name).ViewObject.Visibility = False  # the map in its own colours
@@ -120,8 +135,12 @@ def an_operation_at_f0_gives_one_clear_message_in_the_panel(run):
     analysis = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is custom][0]
     message = panel().message.text() if panel() is not None else ""
     run.notes["F0 message"] = message
-    run.check("the analysis is marked invalid", not analysis.isValid(), str(analysis.State))
+    run.check("the analysis stays valid with an empty result (as FreeCAD's CAM operations do)",
+              analysis.isValid() and analysis.TotalTime == 0.0, str(analysis.State))
     run.check("the panel names the operation and F0", "AtF0 cuts at F0" in message, message)
+    report = run.report_view_text()
+    run.check("the Report view has the message on one line", "AtF0 cuts at F0" in report, report[-300:])
+    run.check("and no traceback", "Traceback" not in report, report[-600:])
     run.check("the panel's table stays empty", panel().table.rowCount() == 0)
     run.screenshot("feedrate_panel_f0")
     panel().reject()

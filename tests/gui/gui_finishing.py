@@ -34,8 +34,9 @@ def part_net_and_job(run):
     state["part"] = part
     state["net"] = guide_curve_net_object.create(document, (part, part.Boundary1), (part, part.Boundary2),
                                                  (part, part.BottomFace))
-    job = create_job([part])
-    finishing.ball_end_controller(job, 4.0, 4000.0)
+    job = create_job([part])  # as a new user has it: FreeCAD's Ø5 flat end mill with feeds of 0
+    state["default tool"] = list(job.Tools.Group)
+    run.check("the new Job's tool cannot finish", not any(finishing.is_usable(c) for c in job.Tools.Group))
     document.recompute()
     run.process_events(1.0)
     run.check("command active with a Job", Gui.Command.get("HSM_GuideCurveFinishing").isActive())
@@ -55,7 +56,12 @@ def guide_curve_finishing_from_its_panel(run):
     run.process_events(2.0)
     run.check("guide curve path", op.isValid() and len(op.Path.Commands) > 5000 and op.Passes > 100,
               "%s %d %d" % (op.State, len(op.Path.Commands), op.Passes))
-    run.notes["guide curve finishing"] = {"passes": op.Passes, "commands": len(op.Path.Commands)}
+    controller = op.ToolController
+    run.check("the operation took a Ø4 ball end at F4000 added to the Job",
+              controller not in state["default tool"] and controller.Tool.Diameter.Value == 4.0
+              and abs(controller.HorizFeed.getValueAs("mm/min").Value - 4000.0) < 1e-6, controller.Label)
+    run.notes["guide curve finishing"] = {"passes": op.Passes, "commands": len(op.Path.Commands),
+                                          "tool controller": controller.Label}
     state["guide"] = op
 
 

@@ -72,6 +72,58 @@ class GuiRun:
         self.check("%s fits the %d px Combo View" % (name, COMBO_VIEW_WIDTH), needed <= COMBO_VIEW_WIDTH,
                    "needs %d px" % needed)
 
+    def panel_plots(self, name, figure):
+        """The panel's plots as the user sees them (the panel scrolls them out of the window's screenshot),
+        saved and checked for readability."""
+        image = os.path.join(OUT, name + ".png")
+        figure.savefig(image)
+        self.screenshots.append(image)
+        self.check_plots_readable(name, figure)
+
+    def check_plots_readable(self, name, figure):
+        """Every text of the panel's plots lies inside the figure as the panel sizes it, and the tick labels of
+        an axis do not run into each other (what a screenshot shows as "0306090120150180")."""
+        figure.canvas.draw()
+        renderer = figure.canvas.get_renderer()
+        frame = figure.bbox.padded(1.0)
+        outside, crowded = [], []
+        def drawn_tick_labels(axis):  # matplotlib keeps labels for ticks outside the view: they are not drawn
+            low, high = sorted(axis.get_view_interval())
+            slack = 1e-9 * max(1.0, abs(high - low))
+            return [label for tick in axis.get_major_ticks() if low - slack <= tick.get_loc() <= high + slack
+                    for label in (tick.label1, tick.label2) if label.get_visible() and label.get_text()]
+
+        for axes in figure.axes:
+            ticks = [drawn_tick_labels(axes.xaxis), drawn_tick_labels(axes.yaxis)]
+            texts = [axes.title, axes.xaxis.label, axes.yaxis.label] + ticks[0] + ticks[1]
+            legend = axes.get_legend()
+            if legend is not None:
+                texts += [legend]
+            for text in texts:
+                if text.get_visible() and (not hasattr(text, "get_text") or text.get_text()):
+                    box = text.get_window_extent(renderer)
+                    if not (frame.contains(box.x0, box.y0) and frame.contains(box.x1, box.y1)):
+                        outside.append(text.get_text() if hasattr(text, "get_text") else "legend")
+            for labels in ticks:
+                boxes = [t.get_window_extent(renderer) for t in labels]
+                crowded += ["%s|%s" % (a, b) for a, b in zip(boxes, boxes[1:]) if a.overlaps(b)]
+        size = "%dx%d px" % (figure.bbox.width, figure.bbox.height)
+        self.check("%s: every text inside the plots (%s)" % (name, size), not outside, str(outside[:5]))
+        self.check("%s: tick labels apart (%s)" % (name, size), not crowded, str(crowded[:3]))
+
+    @staticmethod
+    def report_view_text():
+        """What FreeCAD's Report view shows (errors of recomputes land there, not on sys.stderr)."""
+        return "\n".join(edit.toPlainText() for edit in Gui.getMainWindow().findChildren(QtWidgets.QTextEdit))
+
+    def widget_screenshot(self, name, widget):
+        """A window other than the main one (a plot window: no 3D view in it, so grab() draws it whole)."""
+        self.process_events(0.5)
+        path = os.path.join(OUT, name + ".png")
+        widget.grab().save(path)
+        self.screenshots.append(path)
+        return path
+
     def screenshot(self, name):
         """Grab the whole main window from the screen (grab() would leave the 3D view blank)."""
         self.process_events(0.5)

@@ -9,9 +9,11 @@ cp "$here/user.cfg" "$HOME/.config/FreeCAD/user.cfg"
 
 export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
 failed=0
+# HSM_GUI_TESTS="feedrate direction" runs only those macros (gui_feedrate.py, gui_direction.py).
 for macro in "$here"/gui_*.py; do
   name=$(basename "$macro" .py)
   [ "$name" = gui_harness ] && continue
+  if [ -n "${HSM_GUI_TESTS:-}" ] && [[ " $HSM_GUI_TESTS " != *" ${name#gui_} "* ]]; then continue; fi
   out="$HSM_GUI_TEST_OUT/$name"
   mkdir -p "$out"
   # The macro ends FreeCAD itself; `timeout` is the last resort if something blocks the event loop.

@@ -125,7 +125,10 @@ def status_error(obj):
 
 
 def default_controller_finishing():
-    return status_error(new_planes())
+    """The user switches a finishing operation to FreeCAD's default controller (a flat end mill at F0)."""
+    op = new_planes()
+    op.ToolController = [o for o in op.Document.Objects if o.Label == "TC: Default Tool"][0]
+    return status_error(op)
 
 
 def feedrate_of_zero_feed():

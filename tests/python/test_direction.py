@@ -175,9 +175,10 @@ class DocumentObject(unittest.TestCase):
             for key, value in properties.items():
                 setattr(a, key, value)
             with self.assertRaisesRegex(ValueError, message):
-                a.Proxy.execute(a)
-            self.document.recompute()
-            self.assertIn("Invalid", a.State, message)
+                a.Proxy.run(a)
+            self.document.recompute()  # reported on one line, as FreeCAD's CAM operations do: no traceback
+            self.assertRegex(a.Proxy.error, message)
+            self.assertEqual((a.PointCount, a.Proxy.ensure_result(a)), (0, None), message)
         with self.assertRaisesRegex(ValueError, "no property"):
             direction_object.create(document=self.document, Diameter=4.0)
 

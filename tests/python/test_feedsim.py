@@ -187,8 +187,9 @@ class FreeCadJob(unittest.TestCase):
             feedrate_object.create(self.part)
         analysis = feedrate_object.create(self.op)
         analysis.Machine = feedrate_object.CUSTOM_MACHINE
-        self.document.recompute()
-        self.assertIn("Invalid", analysis.State)
+        self.document.recompute()  # reported on one line, as FreeCAD's CAM operations do: no traceback
+        self.assertIn("MachineFile is empty", analysis.Proxy.error)
+        self.assertEqual((analysis.TotalTime, analysis.Report, analysis.Proxy.ensure_result(analysis)), (0.0, "", None))
         self.document.removeObject(analysis.Name)
 
 

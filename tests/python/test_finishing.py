@@ -92,6 +92,35 @@ class Operations(unittest.TestCase):
             self.assertEqual(posted.cutting_blocks, direct.cutting_blocks, program)
             self.assertAlmostEqual(posted.cutting_length, direct.cutting_length, delta=0.01 * direct.cutting_length)
 
+    def test_a_job_with_freecads_default_tool_gets_a_ball_end(self):
+        """FreeCAD's new Job holds a Ø5 flat end mill at feeds of 0: the operation takes a Ø4 ball end at
+        F4000 added to the Job instead of failing; one that is switched to the flat tool says what to set."""
+        self.addCleanup(FreeCAD.setActiveDocument, self.document.Name)  # runs last: the other tests' document
+        document = FreeCAD.newDocument("DefaultTool")
+        self.addCleanup(FreeCAD.closeDocument, document.Name)
+        part = master_feature_object.create(document)
+        job = create_job([part])
+        default = list(job.Tools.Group)
+        self.assertFalse(finishing.is_usable(default[0]))
+        op = finishing_ops.CreateParallelPlaneFinishing("Planes", parentJob=job)
+        op.Face = (part, part.BottomFace)
+        document.recompute()
+        controller = op.ToolController
+        self.assertNotIn(controller, default)
+        self.assertIn(controller, job.Tools.Group)
+        self.assertTrue(finishing.is_ball_end(controller.Tool))
+        self.assertAlmostEqual(controller.Tool.Diameter.Value, 4.0)
+        self.assertAlmostEqual(controller.HorizFeed.getValueAs("mm/min").Value, 4000.0, places=6)
+        self.assertTrue(op.isValid(), op.State)
+        self.assertGreater(op.Passes, 10)
+        second = finishing_ops.CreateGuideCurveFinishing("Guide", parentJob=job)
+        self.assertIs(second.ToolController, controller)  # the Job's usable controller, not another one
+        self.assertEqual(len(job.Tools.Group), 2)
+        op.ToolController = default[0]
+        document.recompute()
+        self.assertFalse(op.isValid())
+        self.assertIn("ball-end finishing needs a ball end mill", op.getStatusString())
+
     def test_missing_net_is_reported(self):
         op = finishing_ops.CreateGuideCurveFinishing("NoNet", parentJob=self.job)
         self.document.recompute()

@@ -182,6 +182,10 @@ class MachiningDirection(PropertyLimits, InMemoryResult):
     def has_input(self, obj):
         return bool(obj.Face)
 
+    def failed(self, obj):
+        obj.PointCount = 0
+        obj.ChosenAngle = 0.0  # last: the view provider redraws on it (nothing drawn)
+
     def forget(self):
         self.result, self.scan, self.validation = None, [], []
 

@@ -73,6 +73,10 @@ class FeedRateAnalysis(InMemoryResult):
     def has_input(self, obj):
         return is_simulatable(obj.Source)
 
+    def failed(self, obj):
+        obj.Report = ""
+        obj.TotalTime = 0.0  # last: the view provider redraws on it (an empty map)
+
 
 def create(source, machine=DEFAULT_MACHINE, document=None, name="FeedRateAnalysis"):
     """Add a feed-rate analysis of `source` (a Job or an operation) on `machine`, recomputed."""

@@ -70,6 +70,39 @@ def check_tool(controller, tool):
                          "(and VertFeed)" % label)
 
 
+def is_usable(controller):
+    """True for a tool controller that ball-end finishing can use (see check_tool)."""
+    try:
+        check_tool(controller, getattr(controller, "Tool", None))
+    except ValueError:
+        return False
+    return True
+
+
+# What a new finishing operation gets when its Job has no usable tool controller: the guidance-curve paper's
+# Ø4 mm ball end mill, at the middle of its feeds (2, 4, 6 m/min).
+DEFAULT_BALL_END = dict(diameter=4.0, feed_mm_min=4000.0, spindle_rpm=18000)
+
+
+def finishing_controller(job, chosen=None):
+    """The tool controller a new finishing operation takes: `chosen` (FreeCAD's pick) if it is a ball end mill
+    with a feed, else the Job's first such controller, else a new Ø4 mm ball end at F4000 added to the Job
+    (and said in the report view). FreeCAD's default controller, a Ø5 mm flat end mill with feeds of 0, would
+    only make the operation fail."""
+    if chosen is not None and is_usable(chosen):
+        return chosen
+    usable = [controller for controller in job.Tools.Group if is_usable(controller)]
+    if usable:
+        return usable[0]
+    number = 1 + max([getattr(c, "ToolNumber", 0) for c in job.Tools.Group], default=0)
+    controller = ball_end_controller(job, number=number, replace=False, **DEFAULT_BALL_END)
+    FreeCAD.Console.PrintMessage(
+        "%s had no ball end mill with a feed: added '%s' (Ø%g mm, F%g mm/min, S%g); change it in the Job's "
+        "tool controllers\n" % (job.Label, controller.Label, DEFAULT_BALL_END["diameter"],
+                                DEFAULT_BALL_END["feed_mm_min"], DEFAULT_BALL_END["spindle_rpm"]))
+    return controller
+
+
 def moves_to_commands(moves, feed, plunge_feed=None):
     """Path commands of core moves; feeds in mm/s (FreeCAD's unit). A G1 that goes down from a rapid is a
     plunge and runs at the plunge feed."""

@@ -61,6 +61,8 @@ class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
     def opSetDefaultValues(self, obj, job):
         obj.Sweep = "Upward"
         obj.Pattern = "ZigZag"
+        obj.ToolController = finishing.finishing_controller(job, obj.ToolController)
+        obj.OpToolDiameter = obj.ToolController.Tool.Diameter
 
 
 class ObjectGuideCurveFinishing(_FinishingOp):

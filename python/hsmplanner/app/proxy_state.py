@@ -25,9 +25,13 @@ class InMemoryResult(NoSavedState):
     """An analysis whose detailed result (`self.result`, set by compute) is not saved with the document:
     forgotten when the document is reopened, computed again when first asked for.
 
-    A computation that fails keeps its message in `self.error` (FreeCAD marks the object invalid and reports
-    it once); the view provider and the panel then show the message instead of computing again and raising
-    the same error from every redraw."""
+    A computation that fails keeps its message in `self.error`; the view provider and the panel then show the
+    message instead of computing again and raising the same error from every redraw.
+
+    A bad input (ValueError) is reported as FreeCAD's own CAM operations report theirs: one line in the report
+    view, no traceback, and the object stays valid with empty results (`failed`). An analysis is a leaf of the
+    document: nothing downstream needs to see it fail, and a traceback only hides the one line a user must read.
+    Any other exception is a bug and propagates with its traceback (FreeCAD marks the object invalid)."""
 
     def forget(self):
         self.result = None
@@ -39,7 +43,20 @@ class InMemoryResult(NoSavedState):
     def compute(self, obj):
         raise NotImplementedError
 
+    def failed(self, obj):
+        """Empties the object's result properties after an error (and so redraws its view)."""
+
     def execute(self, obj):
+        try:
+            self.run(obj)
+        except ValueError:
+            import FreeCAD
+
+            FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, self.error))
+            self.failed(obj)
+
+    def run(self, obj):
+        """Computes the result, keeping the error in `self.error`; raises it (for panels and scripts)."""
         self.result, self.error = None, None
         try:
             self.compute(obj)
@@ -52,7 +69,7 @@ class InMemoryResult(NoSavedState):
         `self.error`)."""
         if getattr(self, "result", None) is None and getattr(self, "error", None) is None and self.has_input(obj):
             try:
-                self.execute(obj)
+                self.run(obj)
             except Exception:
                 return None
         return getattr(self, "result", None)

@@ -1,15 +1,13 @@
 """Task panel of a machining direction analysis: the face, tool, scallop, feed (or feed range), machine; the
 three choices (beams, least predicted time, fastest simulated) with their plots; and a button that sets the
 angle of a Parallel plane finishing operation."""
-from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
-from matplotlib.figure import Figure
 from PySide2 import QtWidgets
 
 from hsmplanner import plots
 from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM
 
-from .task_panel import AnalysisPanel, narrow_combo, selected_faces
+from .task_panel import AnalysisPanel, PanelPlots, narrow_combo, selected_faces
 
 # (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
 # (property, label, decimals, suffix); the ranges are the object's (direction_object.LIMITS).
@@ -88,10 +86,10 @@ class DirectionPanel(AnalysisPanel):
         self.summary = QtWidgets.QLabel()
         self.summary.setWordWrap(True)
         layout.addWidget(self.summary)
-        self.figure = Figure(figsize=(5.5, 6.5), dpi=80)
-        self.canvas = FigureCanvasQTAgg(self.figure)
-        self.canvas.setMinimumHeight(520)
-        layout.addWidget(self.canvas)
+        # Two plots stacked, each with its legend below it.
+        self.plots = PanelPlots(layout, 760, self.draw_plots, "Machining direction: %s" % self.obj.Label,
+                                tooltip=plots.PREDICTED_TIME_NOTE)
+        self.figure = self.plots.figure
         apply_row = QtWidgets.QHBoxLayout()
         self.operations = narrow_combo()
         self.apply_button = QtWidgets.QPushButton("Set the angle of")
@@ -153,7 +151,7 @@ class DirectionPanel(AnalysisPanel):
             self.message.setText("Finishing and simulating planes every %g°…" % self.obj.ValidationStep)
             QtWidgets.QApplication.processEvents()
         try:
-            self.obj.Proxy.execute(self.obj)
+            self.obj.Proxy.run(self.obj)
         except (ValueError, RuntimeError) as error:
             self.message.setText("Not computed: %s" % error)
             return False
@@ -164,12 +162,16 @@ class DirectionPanel(AnalysisPanel):
 
     def refresh(self):
         self.summary.setText(summary_text(self.obj))
+        self.plots.redraw()
+
+    def draw_plots(self, figure, wide):
         proxy = self.obj.Proxy
         if getattr(proxy, "result", None) is None:
-            return
-        plots.draw_direction_report(self.figure, proxy.result, "", scan=proxy.scan, validation=proxy.validation,
-                                    stacked=True)
-        self.canvas.draw()
+            return False
+        title = "%s: %s" % (self.obj.Label, self.face_text()) if wide else ""
+        plots.draw_direction_report(figure, proxy.result, title, scan=proxy.scan, validation=proxy.validation,
+                                    stacked=not wide)
+        return True
 
     def apply(self):
         operation = self.operation_objects[self.operations.currentIndex()]

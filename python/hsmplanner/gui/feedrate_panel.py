@@ -1,28 +1,30 @@
 """Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
-from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
-from matplotlib.figure import Figure
 from PySide2 import QtCore, QtWidgets
 
 from hsmplanner import feedsim, plots
 from hsmplanner.app.feedrate_object import COLOR_MODES
 
-from .task_panel import AnalysisPanel, narrow_combo
+from .task_panel import AnalysisPanel, PanelPlots, narrow_combo
 
 
 def summary_rows(summary):
-    """(label, value) rows of the summary table; feeds and times as people read them."""
+    """(label, value, tool tip) rows of the summary table; feeds and times as people read them. Labels are
+    short (the Combo View is about 275 px wide); the tool tip says what each one is. The machine is in the
+    combo box above the table."""
     classes = summary["feed_classes"]["share_of_time"]
     rows = [
-        ("Machine", summary["machine"]),
-        ("Simulated time", "%.1f s" % summary["total_time_s"]),
-        ("  cutting / rapid", "%.1f s / %.1f s" % (summary["cutting_time_s"], summary["rapid_time_s"])),
-        ("Length / feed estimate", "%.1f s" % summary["naive_time_s"]),
-        ("Simulated / estimate", "× %.2f" % summary["time_over_naive"]),
-        ("Blocks (cutting / rapid)", "%d (%d / %d)" % (summary["block_count"], summary["cutting_blocks"],
-                                                       summary["rapid_blocks"])),
-        ("Cutting length", "%.1f mm" % summary["cutting_length_mm"]),
+        ("Simulated", "%.1f s" % summary["total_time_s"], "simulated machining time (jerk, acceleration, look-ahead)"),
+        ("cut / rapid", "%.1f / %.1f s" % (summary["cutting_time_s"], summary["rapid_time_s"]),
+         "simulated time in G1/G2/G3 and in G0"),
+        ("Length / F", "%.1f s" % summary["naive_time_s"],
+         "length / programmed feed: what CAM systems and FreeCAD's cycle time estimate"),
+        ("Ratio", "× %.2f" % summary["time_over_naive"], "simulated time / length-over-feed estimate"),
+        ("Blocks", "%d (%d G0)" % (summary["block_count"], summary["rapid_blocks"]),
+         "motion blocks of the program (%d cutting, %d rapid)" % (summary["cutting_blocks"], summary["rapid_blocks"])),
+        ("Cut length", "%.1f mm" % summary["cutting_length_mm"], "length of the cutting moves"),
     ]
-    rows += [("Time at %s of F" % label, "%.1f %%" % (100 * share))
+    rows += [("%s F" % label, "%.1f %%" % (100 * share),
+              "share of the cutting time spent at %s of the programmed feed F" % label)
              for label, share in zip(plots.FEED_CLASS_LABELS, classes)]
     return rows
 
@@ -42,15 +44,12 @@ class FeedRatePanel(AnalysisPanel):
         self.table = QtWidgets.QTableWidget(0, 2)
         self.table.horizontalHeader().setVisible(False)
         self.table.verticalHeader().setVisible(False)
-        # Values whole, labels wrapped: at the Combo View's width both columns cannot be one line wide.
-        self.table.horizontalHeader().setSectionResizeMode(0, QtWidgets.QHeaderView.Stretch)
-        self.table.horizontalHeader().setSectionResizeMode(1, QtWidgets.QHeaderView.ResizeToContents)
-        self.table.setWordWrap(True)
+        # Short labels whole, values in the rest (they are shorter than the Combo View's width less the labels).
+        self.table.horizontalHeader().setSectionResizeMode(0, QtWidgets.QHeaderView.ResizeToContents)
+        self.table.horizontalHeader().setSectionResizeMode(1, QtWidgets.QHeaderView.Stretch)
         layout.addWidget(self.table)
-        self.figure = Figure(figsize=(3.4, 5.2), dpi=80)
-        self.canvas = FigureCanvasQTAgg(self.figure)
-        self.canvas.setMinimumHeight(400)  # the two histograms stacked: they fit the Combo View's width
-        layout.addWidget(self.canvas)
+        self.plots = PanelPlots(layout, 440, self.draw_plots, "Feed-rate analysis: %s" % self.obj.Label)
+        self.figure = self.plots.figure
         self.export_button = QtWidgets.QPushButton("Export report…")
         self.export_button.setToolTip("JSON summary, per-block CSV, histogram and feed-map PNGs")
         layout.addWidget(self.export_button)
@@ -68,26 +67,39 @@ class FeedRatePanel(AnalysisPanel):
         self.obj.ColorBy = mode
         self.obj.ViewObject.Proxy.redraw(self.obj)
 
+    def result(self):
+        return self.obj.Proxy.ensure_result(self.obj) if self.obj.Report else None
+
     def refresh(self):
-        result = self.obj.Proxy.ensure_result(self.obj) if self.obj.Report else None
+        result = self.result()
         if result is None:
             error = getattr(self.obj.Proxy, "error", None)
             self.table.setRowCount(0)
-            self.figure.clear()
-            self.canvas.draw()
+            self.table.hide()  # an empty frame says nothing
             self.message.setText("Not simulated: %s" % (error or ", ".join(self.obj.State) or "no Job or operation"))
-            return
-        self.message.setText("")
-        summary = feedsim.summary_dict(result.summary, self.obj.Source.Label)
-        rows = summary_rows(summary)
+        else:
+            self.message.setText("")
+            self.fill_table(summary_rows(feedsim.summary_dict(result.summary, self.obj.Source.Label)))
+        self.plots.redraw()
+
+    def fill_table(self, rows):
+        self.table.show()
         self.table.setRowCount(len(rows))
-        for i, (label, value) in enumerate(rows):
-            self.table.setItem(i, 0, QtWidgets.QTableWidgetItem(label))
-            self.table.setItem(i, 1, QtWidgets.QTableWidgetItem(value))
+        for i, (label, value, tip) in enumerate(rows):
+            for column, text in enumerate((label, value)):
+                item = QtWidgets.QTableWidgetItem(text)
+                item.setToolTip(tip)
+                self.table.setItem(i, column, item)
         self.table.resizeRowsToContents()
         self.fit_table_height()
-        plots.draw_feed_histograms(self.figure, summary, stacked=True)
-        self.canvas.draw()
+
+    def draw_plots(self, figure, wide):
+        result = self.result()
+        if result is None:
+            return False
+        plots.draw_feed_histograms(figure, feedsim.summary_dict(result.summary, self.obj.Source.Label),
+                                   stacked=not wide)
+        return True
 
     def fit_table_height(self):
         """Every row shown, no scroll bar: the summary is what people came for."""

@@ -1,6 +1,8 @@
 """What the task panels of the workbench share: the open panel for tests and macros (`Class.active`),
 closing that ends the edit, and the frame of an analysis panel."""
 import FreeCADGui
+from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
+from matplotlib.figure import Figure
 from PySide2 import QtWidgets
 
 
@@ -33,11 +35,18 @@ class TaskPanel:
 class AnalysisPanel(TaskPanel):
     """A panel over one analysis object: its form (`_build_form`) filled from the result (`refresh`)."""
 
+    plots = None  # the panel's PanelPlots, if it has plots
+
     def __init__(self, obj):
         self.obj = obj
         self.form = self._build_form()
         self.refresh()
         self.opened()
+
+    def close_edit(self):
+        if self.plots is not None:
+            self.plots.close()
+        super().close_edit()
 
     @staticmethod
     def new_form(title):
@@ -71,3 +80,56 @@ def narrow_combo(items=(), current=None):
     if current is not None:
         combo.setCurrentText(current)
     return combo
+
+
+class PanelPlots:
+    """Plots drawn for the panel's width (stacked, small type), under a button that shows the same plots side by
+    side in a window of their own: the Combo View is too narrow to read a plot in detail."""
+
+    def __init__(self, layout, height, draw, title, tooltip=""):
+        """draw(figure, wide) draws the plots and says whether there were any; wide is False in the panel, True
+        in the window (titled `title`)."""
+        self.draw_plots, self.title, self.window = draw, title, None
+        self.figure = Figure(dpi=80)
+        self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.setMinimumHeight(height)
+        self.canvas.setToolTip(tooltip)
+        self.window_button = QtWidgets.QPushButton("Plots in a window")
+        self.window_button.setToolTip("the same plots, side by side, in a window you can resize and save")
+        self.window_button.clicked.connect(self.open_window)
+        layout.addWidget(self.window_button)
+        layout.addWidget(self.canvas)
+
+    def redraw(self):
+        """Draws the panel's plots (and the window's, when it is open); clears them when there is nothing."""
+        shown = bool(self.draw_plots(self.figure, False))
+        if not shown:
+            self.figure.clear()
+        self.canvas.draw()
+        self.window_button.setEnabled(shown)
+        if self.window is not None and self.window.isVisible():
+            self._draw_window()
+
+    def open_window(self):
+        from matplotlib.backends.backend_qtagg import NavigationToolbar2QT
+
+        if self.window is None:
+            self.window = QtWidgets.QDialog(FreeCADGui.getMainWindow())
+            self.window.setWindowTitle(self.title)
+            self.window_figure = Figure(figsize=(13, 5), dpi=90)
+            canvas = FigureCanvasQTAgg(self.window_figure)
+            layout = QtWidgets.QVBoxLayout(self.window)
+            layout.addWidget(NavigationToolbar2QT(canvas, self.window))  # zoom, pan, save as PNG/SVG/PDF
+            layout.addWidget(canvas)
+            self.window.resize(1170, 520)
+        self._draw_window()
+        self.window.show()
+        return self.window
+
+    def _draw_window(self):
+        self.draw_plots(self.window_figure, True)
+        self.window_figure.canvas.draw()
+
+    def close(self):
+        if self.window is not None:
+            self.window.close()
