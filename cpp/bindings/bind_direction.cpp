@@ -28,21 +28,31 @@ void bindDirection(py::module_& m) {
       .def_readonly("fastest_angle_deg", &DirectionResult::fastestAngleDeg, "the direction of least predicted time")
       .def_readonly("all_tie", &DirectionResult::allTie)
       .def_readonly("warnings", &DirectionResult::warnings);
+  py::class_<CuttingConditions>(m, "CuttingConditions", "Tool and feed of parallel-plane finishing (mm, s)")
+      .def(py::init<>())
+      .def_readwrite("tool_radius", &CuttingConditions::toolRadius, "Ro, mm (ball end)")
+      .def_readwrite("scallop", &CuttingConditions::scallop, "Sz, mm")
+      .def_readwrite("programmed_feed", &CuttingConditions::programmedFeed, "Vf, mm/s")
+      .def_readwrite("spindle_speed", &CuttingConditions::spindleSpeed, "N, rev/s")
+      .def_readwrite("teeth", &CuttingConditions::teeth, "Z")
+      .def_readwrite("jerk_limits_feed", &CuttingConditions::jerkLimitsFeed,
+                     "the real feed also ≤ ∛(J·Rc²) of the plan axes (beyond the paper)");
+  py::class_<DirectionSettings>(m, "DirectionSettings", "Sampling of the face and of the directions")
+      .def(py::init<>())
+      .def_readwrite("grid_u", &DirectionSettings::gridU)
+      .def_readwrite("grid_v", &DirectionSettings::gridV)
+      .def_readwrite("angle_step", &DirectionSettings::angleStepDeg, "degrees")
+      .def_readwrite("report_alpha", &DirectionSettings::reportAlpha);
   m.def(
       "optimal_direction",
-      [](const std::string& faceBrep, double toolRadius, double scallop, double feed, double spindle, int teeth,
-         double acceleration, double jerk, double stopJerk, int gridU, int gridV, double angleStep,
-         double reportAlpha) {
-        CuttingConditions c{toolRadius, scallop, feed, spindle, teeth, acceleration, jerk, stopJerk};
-        const DirectionSettings s{gridU, gridV, angleStep, reportAlpha};
+      [](const std::string& faceBrep, const CuttingConditions& c, const kinematics::MachineModel& machine,
+         const DirectionSettings& s) {
         const TopoDS_Face face = geometry::singleFace(geometry::readBrep(faceBrep));
         py::gil_scoped_release release;
-        return guarded("machining direction", [&] { return optimalDirection(face, c, s); });
+        return guarded("machining direction", [&] { return optimalDirection(face, c, machine, s); });
       },
-      py::arg("face_brep"), py::arg("tool_radius"), py::arg("scallop"), py::arg("feed"), py::arg("spindle_speed"),
-      py::arg("teeth"), py::arg("acceleration"), py::arg("jerk") = 0.0, py::arg("stop_jerk") = 0.0, py::arg("grid_u") = 50,
-      py::arg("grid_v") = 50, py::arg("angle_step") = 1.0, py::arg("report_alpha") = 0.95,
-      "Directional beams (mm, s: feed in mm/s, spindle speed in rev/s, acceleration in mm/s²)");
+      py::arg("face_brep"), py::arg("conditions"), py::arg("machine"), py::arg("settings"),
+      "Directional beams on the machine's slowest plan axes");
   m.def("beam_algorithm_alpha", &beamAlgorithmAlpha, py::arg("rate"), py::arg("start") = 0.5, py::arg("step") = 0.1,
         py::arg("precision") = 1e-6, "The paper's Fig. 8 algorithm on a rate per direction");
 }

@@ -1,5 +1,6 @@
 #include "bindings/bindings.hpp"
 
+#include "kinematics/moves.hpp"
 #include "kinematics/report.hpp"
 #include "kinematics/simulation.hpp"
 
@@ -7,7 +8,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <fstream>
 #include <sstream>
 
 namespace py = pybind11;
@@ -72,20 +72,34 @@ py::array_t<double> traceArray(const std::vector<TraceSample>& trace) {
   return array;
 }
 
-SimulationResult run(std::istream& stream, const MachineModel& machine, bool keepBlocks, double tracePeriod,
-                     bool refuseUnknown, bool feedPerSecond) {
-  ReaderOptions reading;
-  reading.refuseUnknownWords = refuseUnknown;
-  reading.feedInMmPerSecond = feedPerSecond;
+SimulationOptions simulationOptions(bool keepBlocks, double tracePeriod) {
   SimulationOptions options;
   options.keepBlocks = keepBlocks;
   options.tracePeriod = tracePeriod;
-  py::gil_scoped_release release;  // long programs: let other Python threads (the GUI) run
-  return guarded("feed-rate simulation", [&] { return simulate(stream, machine, reading, options); });
+  return options;
+}
+
+ReaderOptions readerOptions(bool refuseUnknown, bool feedPerSecond) {
+  ReaderOptions reading;
+  reading.refuseUnknownWords = refuseUnknown;
+  reading.feedInMmPerSecond = feedPerSecond;
+  return reading;
+}
+
+// Long programs: let other Python threads (the GUI) run.
+template <class Simulation>
+SimulationResult released(Simulation&& simulation) {
+  py::gil_scoped_release release;
+  return guarded("feed-rate simulation", simulation);
 }
 }  // namespace
 
 void bindKinematics(py::module_& m) {
+  py::enum_<ControllerKind>(m, "ControllerKind", "How the controller plans the path between blocks")
+      .value("siemens840d", ControllerKind::Siemens840D)
+      .value("linuxcnc", ControllerKind::LinuxCNC)
+      .value("grbl", ControllerKind::Grbl);
+  m.attr("DEFAULT_MACHINE") = kDefaultMachine;
   py::class_<MachineModel>(m, "MachineModel", "Axis limits and controller behaviour (mm, s inside)")
       .def(py::init<>())
       .def_static("from_json", &machineFromJson, py::arg("text"), py::arg("origin") = "machine file")
@@ -93,7 +107,7 @@ void bindKinematics(py::module_& m) {
       .def("to_json", &machineToJson)
       .def_readwrite("name", &MachineModel::name)
       .def_readwrite("description", &MachineModel::description)
-      .def_property_readonly("controller", [](const MachineModel& x) { return controllerName(x.controller); })
+      .def_readwrite("controller", &MachineModel::controller)
       .def_readwrite("max_velocity", &MachineModel::maxVelocity, "mm/s per axis X, Y, Z")
       .def_readwrite("max_acceleration", &MachineModel::maxAcceleration, "mm/s² per axis")
       .def_readwrite("max_jerk", &MachineModel::maxJerk, "mm/s³ per axis")
@@ -113,6 +127,8 @@ void bindKinematics(py::module_& m) {
       .def_readonly("dwell_time", &SimulationSummary::dwellTime)
       .def_readonly("naive_time", &SimulationSummary::naiveTime)
       .def_readonly("naive_cutting_time", &SimulationSummary::naiveCuttingTime)
+      .def_property_readonly("time_over_naive", &SimulationSummary::timeOverNaive,
+                             "simulated time / length-over-feed estimate")
       .def_readonly("block_count", &SimulationSummary::blockCount)
       .def_readonly("cutting_blocks", &SimulationSummary::cuttingBlocks)
       .def_readonly("rapid_blocks", &SimulationSummary::rapidBlocks)
@@ -137,22 +153,17 @@ void bindKinematics(py::module_& m) {
                              "dict of numpy arrays, one entry per block (empty unless blocks were kept)")
       .def_property_readonly("trace", [](const SimulationResult& r) { return traceArray(r.trace); },
                              "(N, 5) array of t, x, y, z, speed (s, mm, mm/s)")
-      .def(
-          "blocks_csv",
-          [](const SimulationResult& r) {
-            std::ostringstream out;
-            out << blockCsvHeader();
-            for (const BlockResult& b : r.blocks) writeBlockCsv(out, b);
-            return out.str();
-          },
-          "the kept blocks as CSV text, feeds in mm/min");
+      .def("blocks_csv", [](const SimulationResult& r) { return blocksCsv(r.blocks); },
+           "the kept blocks as CSV text, feeds in mm/min");
 
   m.def(
       "simulate_text",
       [](const std::string& text, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
          bool perSecond) {
         std::istringstream stream(text);
-        return run(stream, machine, keepBlocks, tracePeriod, refuse, perSecond);
+        return released([&] {
+          return simulate(stream, machine, readerOptions(refuse, perSecond), simulationOptions(keepBlocks, tracePeriod));
+        });
       },
       py::arg("text"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
       py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
@@ -160,12 +171,22 @@ void bindKinematics(py::module_& m) {
       "simulate_file",
       [](const std::string& path, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
          bool perSecond) {
-        std::ifstream stream(path, std::ios::binary);
-        if (!stream) throw InputError("cannot read the program '" + path + "': check the path");
-        return run(stream, machine, keepBlocks, tracePeriod, refuse, perSecond);
+        return released([&] {
+          return simulateFile(path, machine, readerOptions(refuse, perSecond), simulationOptions(keepBlocks, tracePeriod));
+        });
       },
       py::arg("path"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
       py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
+  m.def(
+      "simulate_moves",
+      [](const MoveArray& moves, double feed, const MachineModel& machine, bool keepBlocks, double tracePeriod) {
+        return released([&] {
+          return simulateBlocks(movesToBlocks(moves, feed), machine, simulationOptions(keepBlocks, tracePeriod));
+        });
+      },
+      py::arg("moves"), py::arg("feed"), py::arg("machine"), py::arg("keep_blocks") = false,
+      py::arg("trace_period") = 0.0,
+      "A toolpath's (N, 4) moves (x, y, z, rapid flag) as G0/G1 blocks at `feed` mm/s, without G-code text");
 }
 
 }  // namespace hsm::bindings

@@ -38,9 +38,7 @@ void validate(const CuttingConditions& c) {
   positive(c.scallop, "scallop height Sz", "e.g. 0.01 mm");
   positive(c.programmedFeed, "programmed feed", "give it in mm/s (mm/min in Python)");
   positive(c.spindleSpeed, "spindle speed", "give N in rev/s (rpm in Python)");
-  positive(c.acceleration, "acceleration", "the slowest axis's, mm/s²");
   if (c.teeth < 1) throw InputError("teeth Z = " + std::to_string(c.teeth) + ": a tool has at least one tooth");
-  if (!(c.jerk >= 0.0)) throw InputError("jerk must be 0 (no jerk limit) or positive");
 }
 
 // The feed marks of the programmed fz alone, fz²/(8·Ro), against Sz: above it only the directions where
@@ -94,13 +92,8 @@ std::vector<SurfacePoint> sampleFace(const TopoDS_Face& face, int nu, int nv) {
   return points;
 }
 
-double stopAndGoLoss(double speed, double acceleration, double jerk) {
-  if (jerk <= 0.0) return speed / acceleration;
-  if (speed * jerk <= acceleration * acceleration) return 2.0 * std::sqrt(speed / jerk);  // a_max not reached
-  return speed / acceleration + acceleration / jerk;
-}
-
-Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c) {
+Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c,
+                        const kinematics::Dynamics& planAxes) {
   const double theta = thetaDeg * M_PI / 180.0;
   const Eigen::Vector3d d(std::cos(theta), std::sin(theta), 0.0), k = Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d& n = m.normal;
@@ -123,8 +116,8 @@ Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingCon
   }
   double reachable = c.programmedFeed;
   if (std::isfinite(radius)) {
-    reachable = std::min(reachable, std::sqrt(radius * c.acceleration));
-    if (c.jerk > 0.0) reachable = std::min(reachable, std::cbrt(c.jerk * radius * radius));
+    const kinematics::Dynamics feedLimit{planAxes.acceleration, planAxes.jerk, c.jerkLimitsFeed};
+    reachable = std::min(reachable, kinematics::curvatureSpeed(radius, feedLimit));
   }
   p.pathRadius = radius;
   p.feedPerTooth = reachable / (c.teeth * c.spindleSpeed);
@@ -134,8 +127,9 @@ Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingCon
   return p;
 }
 
-DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingConditions& c, const DirectionSettings& s) {
-  return optimalDirection(sampleFace(face, s.gridU, s.gridV), c, s);
+DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingConditions& c,
+                                 const kinematics::MachineModel& machine, const DirectionSettings& s) {
+  return optimalDirection(sampleFace(face, s.gridU, s.gridV), c, machine, s);
 }
 
 namespace {
@@ -149,7 +143,7 @@ namespace {
 // Infinite where a point gets no step. `steps` and `feeds`: p1 and the real fz of each point along d.
 double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDeg,
                   Eigen::Ref<const Eigen::VectorXd> steps, Eigen::Ref<const Eigen::VectorXd> feeds,
-                  const CuttingConditions& c) {
+                  const CuttingConditions& c, const kinematics::Dynamics& planAxes) {
   const double theta = thetaDeg * M_PI / 180.0;
   const Eigen::Vector2d along(std::cos(theta), std::sin(theta)), across(-along.y(), along.x());
   const size_t n = points.size();
@@ -186,7 +180,7 @@ double planesTime(const std::vector<const SurfacePoint*>& points, double thetaDe
     time += m.planArea * std::sqrt(1.0 + slope * slope) / (feeds(at) * c.teeth * c.spindleSpeed) / planeStep[i];
     planes += span * (m.planArea / area) / planeStep[i];  // ∫ dq / p1, each point weighted by its area
   }
-  const double perPlane = 2.0 * c.toolRadius / c.programmedFeed + stopAndGoLoss(c.programmedFeed, c.acceleration, c.stopJerk);
+  const double perPlane = 2.0 * c.toolRadius / c.programmedFeed + kinematics::stopAndGoLoss(c.programmedFeed, planAxes);
   return time + planes * perPlane;
 }
 
@@ -208,8 +202,10 @@ double tieBrokenOptimum(const std::vector<double>& anglesDeg, const std::vector<
 }  // namespace
 
 DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const CuttingConditions& c,
-                                 const DirectionSettings& s) {
+                                 const kinematics::MachineModel& machine, const DirectionSettings& s) {
   validate(c);
+  kinematics::checkMachine(machine);
+  const kinematics::Dynamics planAxes = kinematics::slowestPlanAxes(machine);
   if (!(s.angleStepDeg >= kMinAngleStepDeg && s.angleStepDeg <= 1.0))
     throw InputError("the angle step " + number(s.angleStepDeg) + "° must be in [" + number(kMinAngleStepDeg) +
                      "°, 1°]: directions at 1° or finer");
@@ -255,7 +251,7 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
     double best = 0.0;
     int at = 0;
     for (int j = 0; j < count; ++j) {
-      const Performance p = performance(*points[i], result.anglesDeg[j], c);
+      const Performance p = performance(*points[i], result.anglesDeg[j], c, planAxes);
       steps(i, j) = p.transverseStep;
       feeds(i, j) = p.feedPerTooth;
       fitness[j] = p.fitness;
@@ -281,7 +277,7 @@ DirectionResult optimalDirection(const std::vector<SurfacePoint>& all, const Cut
   result.alpha = *std::max_element(result.rate.begin(), result.rate.end());
   result.optimalAngleDeg = tieBrokenOptimum(result.anglesDeg, result.rate, result.alpha);
   for (int j = 0; j < count; ++j)
-    result.predictedTime.push_back(planesTime(points, result.anglesDeg[j], steps.col(j), feeds.col(j), c));
+    result.predictedTime.push_back(planesTime(points, result.anglesDeg[j], steps.col(j), feeds.col(j), c, planAxes));
   std::vector<double> speed(count);  // 1/T, so that the same tie rule picks the least time
   for (int j = 0; j < count; ++j) speed[j] = result.predictedTime[j] > 0.0 ? 1.0 / result.predictedTime[j] : 0.0;
   result.fastestAngleDeg = tieBrokenOptimum(result.anglesDeg, speed, *std::max_element(speed.begin(), speed.end()));

@@ -13,9 +13,13 @@
 //
 // Beyond the paper: the predicted cutting time of parallel planes per direction, T(θ) = Σ A·√(1 + s²)/(p1·Vf)
 // with A the plan area a point stands for, s the slope along d, Vf = fz·Z·N the real feed and p1 the
-// smallest step along the point's plane (strips one point spacing wide), plus per plane its run-out of a
-// tool radius past each end and the time a stop and a start cost there (S-curve with a_max and the stop
-// jerk); and the direction minimising it.
+// smallest step along the point's plane (the points within half a spacing across it), plus per plane its
+// run-out of a tool radius past each end and the time a stop and a start cost there; and the direction
+// minimising it.
+//
+// The machine: a_max (and J) are those of the slowest of its X and Y axes (kinematics::slowestPlanAxes,
+// the paper's a_max for a path in any plan direction); the stop and start at a plane's end take the
+// controller's profile (S-curve on an 840D in SOFT, trapezoid on LinuxCNC and grbl).
 //
 // Where the paper is silent: the tool is on the side of the face's normal as FreeCAD shows it (out of the
 // material for a face of a solid); curvatures are signed positive where the face bends towards the tool;
@@ -25,6 +29,8 @@
 #pragma once
 
 #include "geometry/curve_sampling.hpp"
+#include "kinematics/machine.hpp"
+#include "kinematics/physics.hpp"
 
 #include <TopoDS_Face.hxx>
 
@@ -39,9 +45,7 @@ struct CuttingConditions {
   double programmedFeed = 100.0; // Vf, mm/s
   double spindleSpeed = 250.0;   // N, rev/s
   int teeth = 2;                 // Z
-  double acceleration = 3000.0;  // a_max of the slowest axis, mm/s²
-  double jerk = 0.0;             // mm/s³; 0: the paper's model (no jerk limit)
-  double stopJerk = 0.0;         // mm/s³ of the slowest axis, for the time a plane's reversal costs (0: unknown)
+  bool jerkLimitsFeed = false;   // the real feed also ≤ ∛(J·Rc²) (beyond the paper, whose model has no jerk)
 
   double programmedFeedPerTooth() const { return programmedFeed / (teeth * spindleSpeed); }
 };
@@ -63,11 +67,10 @@ struct Performance {
   double fitness = 0.0;         // G_p = p1·fz, mm²
 };
 
-// The time lost by stopping from `speed` and starting again (S-curve: jerk-limited, then acceleration-limited).
-double stopAndGoLoss(double speed, double acceleration, double jerk);
-
-// Eq. 9–12 at one point for the direction at `thetaDeg` from X.
-Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c);
+// Eq. 9–12 at one point for the direction at `thetaDeg` from X; `planAxes`: a_max and J of the machine
+// (kinematics::slowestPlanAxes).
+Performance performance(const SurfacePoint& m, double thetaDeg, const CuttingConditions& c,
+                        const kinematics::Dynamics& planAxes);
 
 // Bounded work: at most kMaxGrid × kMaxGrid points, directions every kMinAngleStepDeg or more, and at
 // most kMaxEvaluations point-direction pairs.
@@ -100,9 +103,10 @@ struct DirectionResult {
   std::vector<std::string> warnings;
 };
 
-DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingConditions& c, const DirectionSettings& s);
+DirectionResult optimalDirection(const TopoDS_Face& face, const CuttingConditions& c,
+                                 const kinematics::MachineModel& machine, const DirectionSettings& s = {});
 DirectionResult optimalDirection(const std::vector<SurfacePoint>& points, const CuttingConditions& c,
-                                 const DirectionSettings& s);
+                                 const kinematics::MachineModel& machine, const DirectionSettings& s = {});
 
 // The paper's algorithm (Fig. 8) on the rate per direction: α from `start` in steps of `step`, halved each
 // time the beams' intersection empties, until the step is below `precision`. Returns the largest α whose

@@ -8,6 +8,9 @@
 
 namespace hsm::kinematics {
 
+// The machine assumed when none is named: the guidance-curve paper's Mikron UCP 710 with a Siemens 840D.
+inline constexpr const char* kDefaultMachine = "mikron-ucp710-840d";
+
 // How the controller plans the path between blocks.
 enum class ControllerKind {
   Siemens840D,  // jerk-limited (SOFT) or not (BRISK); G60/G9 exact stop, G64 velocity jumps, G641/G642 rounding

@@ -16,14 +16,6 @@ constexpr double kLinuxCncNormalShare = 0.866;
 constexpr double kLinuxCncTangentShare = 0.5;
 constexpr double kLinuxCncKinkShare = 0.2165;  // a kink φ in one cycle T is taken while v·φ/T ≤ 0.2165·a
 
-// min over the axes of limit_i / |u_i|: the per-axis limits projected on direction u.
-double projected(const Eigen::Vector3d& limits, const Eigen::Vector3d& u) {
-  double result = kInfinity;
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(u[i]) > 1e-12) result = std::min(result, limits[i] / std::abs(u[i]));
-  return result;
-}
-
 // Radius of the arc that rounds a corner of deflection φ within `tolerance` of the corner point, using at most
 // half of each block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
 double blendRadius(double phi, double tolerance, double shorter) {
@@ -31,12 +23,6 @@ double blendRadius(double phi, double tolerance, double shorter) {
   const double byTolerance = std::isfinite(tolerance) ? tolerance * c / std::max(1e-300, 1.0 - c) : kInfinity;
   const double byLength = 0.5 * shorter / std::tan(0.5 * phi);
   return std::min(byTolerance, byLength);
-}
-
-double curvatureSpeed(double radius, const Dynamics& d) {
-  double v = std::sqrt(d.acceleration * radius);
-  if (d.jerkLimited) v = std::min(v, std::cbrt(d.jerk * radius * radius));
-  return v;
 }
 }  // namespace
 
@@ -68,7 +54,7 @@ Segment Planner::prepare(const Block& block, long source) const {
       double w = kInfinity;
       for (int i = 0; i < 3; ++i)
         if (inPlane[i] > 0.5) w = std::min(w, limits[i]);
-      return along > 1e-12 ? std::min(w, projected(limits, block.normal.cwiseAbs() * along)) : w;
+      return along > 1e-12 ? std::min(w, projectedLimit(limits, block.normal.cwiseAbs() * along)) : w;
     };
     s.dynamics.acceleration = weakest(m.maxAcceleration);
     s.dynamics.jerk = weakest(m.maxJerk);
@@ -82,10 +68,10 @@ Segment Planner::prepare(const Block& block, long source) const {
     curvatureLimit = curvatureSpeed(block.radius, normal);
   } else {
     const Eigen::Vector3d u = s.startTangent;
-    s.dynamics.acceleration = projected(m.maxAcceleration, u);
-    s.dynamics.jerk = projected(m.maxJerk, u);
-    velocity = projected(m.maxVelocity, u);
-    rapidVelocity = projected(m.rapidVelocity, u);
+    s.dynamics.acceleration = projectedLimit(m.maxAcceleration, u);
+    s.dynamics.jerk = projectedLimit(m.maxJerk, u);
+    velocity = projectedLimit(m.maxVelocity, u);
+    rapidVelocity = projectedLimit(m.rapidVelocity, u);
     if (linuxcnc && block.pathMode != PathMode::ExactStop)
       s.dynamics.acceleration *= kLinuxCncTangentShare;  // blendable lines keep half for the blends
   }
@@ -120,7 +106,7 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
   double v = 0.0;
   switch (m.controller) {
     case ControllerKind::Siemens840D: {
-      const double jump = projected(m.velocityJump, after.startTangent - before.endTangent);
+      const double jump = projectedLimit(m.velocityJump, after.startTangent - before.endTangent);
       v = jump;
       if (before.block.pathMode == PathMode::Rounding)
         v = std::max(v, curvatureSpeed(blendRadius(phi, before.block.tolerance, shorter), d));
@@ -133,8 +119,8 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
     }
     case ControllerKind::LinuxCNC: {
       const double tolerance = before.block.pathMode == PathMode::Rounding ? before.block.tolerance : kInfinity;
-      const double full = std::min(projected(m.maxAcceleration, before.endTangent),
-                                   projected(m.maxAcceleration, after.startTangent));
+      const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
+                                   projectedLimit(m.maxAcceleration, after.startTangent));
       const double radius = blendRadius(phi, tolerance, shorter);
       const double blend = std::sqrt(kLinuxCncNormalShare * full * radius);
       // A blend that takes half of each block leaves no straight part: the blocks run at the blend's speed.
@@ -144,8 +130,8 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
       break;
     }
     case ControllerKind::Grbl: {
-      const double full = std::min(projected(m.maxAcceleration, before.endTangent),
-                                   projected(m.maxAcceleration, after.startTangent));
+      const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
+                                   projectedLimit(m.maxAcceleration, after.startTangent));
       v = std::sqrt(full * blendRadius(phi, m.cornerTolerance, kInfinity));
       break;
     }

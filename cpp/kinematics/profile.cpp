@@ -5,17 +5,7 @@
 
 namespace hsm::kinematics {
 
-namespace {
-// Time of a change by Δv ≥ 0.
-double deltaTime(double dv, const Dynamics& d) {
-  if (dv <= 0.0) return 0.0;
-  if (!d.jerkLimited) return dv / d.acceleration;
-  const double a = d.acceleration, j = d.jerk;
-  return dv <= a * a / j ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
-}
-}  // namespace
-
-double changeTime(double v0, double v1, const Dynamics& d) { return deltaTime(std::abs(v1 - v0), d); }
+double changeTime(double v0, double v1, const Dynamics& d) { return speedChangeTime(std::abs(v1 - v0), d); }
 
 double changeDistance(double v0, double v1, const Dynamics& d) {
   return 0.5 * (v0 + v1) * changeTime(v0, v1, d);

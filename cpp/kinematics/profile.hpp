@@ -1,17 +1,10 @@
-// Speed profiles along a path: how far and how long a change of speed takes, with or without a jerk limit.
-//
-// Every speed change starts and ends at zero acceleration. Jerk-limited (840D SOFT): the acceleration
-// ramps at J up to A (if reached) and back; acceleration-limited (840D BRISK, LinuxCNC, grbl): steps of A.
-// Δv ≤ A²/J is reached in 2·sqrt(Δv/J), larger changes in Δv/A + A/J; distance = mean speed × time.
+// Speed profiles along a path: how far and how long a change of speed takes, and the profile of a block.
+// The times of speed changes are the physics of kinematics/physics.hpp; distance = mean speed × time.
 #pragma once
 
-namespace hsm::kinematics {
+#include "kinematics/physics.hpp"
 
-struct Dynamics {
-  double acceleration = 0.0;  // A, mm/s², along the path
-  double jerk = 0.0;          // J, mm/s³, along the path; ignored when !jerkLimited
-  bool jerkLimited = true;
-};
+namespace hsm::kinematics {
 
 double changeTime(double v0, double v1, const Dynamics& d);
 double changeDistance(double v0, double v1, const Dynamics& d);

@@ -34,7 +34,7 @@ std::string summaryJson(const SimulationSummary& s, const std::string& program) 
       {"dwell_time_s", s.dwellTime},
       {"naive_time_s", s.naiveTime},
       {"naive_cutting_time_s", s.naiveCuttingTime},
-      {"time_over_naive", s.naiveTime > 0 ? s.totalTime / s.naiveTime : 0.0},
+      {"time_over_naive", s.timeOverNaive()},
       {"block_count", s.blockCount},
       {"cutting_blocks", s.cuttingBlocks},
       {"rapid_blocks", s.rapidBlocks},
@@ -54,6 +54,13 @@ std::string summaryJson(const SimulationSummary& s, const std::string& program) 
         {"unknown_word_counts", unknown},
         {"tool_changes", s.reader.toolChanges}}}};
   return report.dump(2);
+}
+
+std::string blocksCsv(const std::vector<BlockResult>& blocks) {
+  std::ostringstream out;
+  out << blockCsvHeader();
+  for (const BlockResult& b : blocks) writeBlockCsv(out, b);
+  return out.str();
 }
 
 std::string blockCsvHeader() {
@@ -93,7 +100,7 @@ std::string summaryText(const SimulationSummary& s) {
                 minutes(s.cuttingTime).c_str(), minutes(s.rapidTime).c_str(), minutes(s.dwellTime).c_str());
   text << line;
   std::snprintf(line, sizeof line, "length/feed estimate %s: the machine takes %.2f times as long\n",
-                minutes(s.naiveTime).c_str(), s.naiveTime > 0 ? s.totalTime / s.naiveTime : 0.0);
+                minutes(s.naiveTime).c_str(), s.timeOverNaive());
   text << line;
   text << "reached / programmed feed, share of cutting time:";
   const char* labels[] = {"<0.3", "0.3-0.5", "0.5-0.7", "0.7-0.9", ">=0.9"};

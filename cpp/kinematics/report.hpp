@@ -11,6 +11,8 @@ namespace hsm::kinematics {
 // JSON with total_time_s, cutting_time_s, rapid_time_s, naive_time_s, block_count, feed_classes, …
 std::string summaryJson(const SimulationSummary& summary, const std::string& program = "");
 std::string blockCsvHeader();
+// The header and one row per block.
+std::string blocksCsv(const std::vector<BlockResult>& blocks);
 void writeBlockCsv(std::ostream& out, const BlockResult& block);
 std::string traceCsvHeader();
 void writeTraceCsv(std::ostream& out, const TraceSample& sample);

@@ -6,6 +6,7 @@
 #include "kinematics/runs.hpp"
 
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 
 namespace hsm::kinematics {
@@ -184,6 +185,13 @@ SimulationResult simulate(std::istream& program, const MachineModel& machine, co
                           const SimulationOptions& options) {
   GcodeReader reader(program, reading);
   return run(machine, options, [&](Block& b) { return reader.next(b); }, [&] { return reader.stats(); });
+}
+
+SimulationResult simulateFile(const std::string& path, const MachineModel& machine, const ReaderOptions& reading,
+                              const SimulationOptions& options) {
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) throw InputError("cannot read the program '" + printable(path) + "': check the path");
+  return simulate(stream, machine, reading, options);
 }
 
 SimulationResult simulateBlocks(const std::vector<Block>& blocks, const MachineModel& machine,

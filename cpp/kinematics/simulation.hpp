@@ -51,6 +51,9 @@ struct SimulationSummary {
   FeedClasses feedClasses;
   std::array<long, kLengthClassEdges.size() + 1> lengthClasses{};  // cutting blocks per length class
   ReaderStats reader;
+
+  // Simulated time over the length/feed estimate of CAM systems (0 for an empty program).
+  double timeOverNaive() const { return naiveTime > 0.0 ? totalTime / naiveTime : 0.0; }
 };
 
 struct TraceSample {
@@ -78,6 +81,9 @@ struct SimulationOptions {
 
 SimulationResult simulate(std::istream& program, const MachineModel& machine, const ReaderOptions& reading = {},
                           const SimulationOptions& options = {});
+// The program in the file at `path`, streamed; InputError when it cannot be read.
+SimulationResult simulateFile(const std::string& path, const MachineModel& machine, const ReaderOptions& reading = {},
+                              const SimulationOptions& options = {});
 SimulationResult simulateBlocks(const std::vector<Block>& blocks, const MachineModel& machine,
                                 const SimulationOptions& options = {});
 

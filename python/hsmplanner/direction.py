@@ -16,40 +16,56 @@ and simulated on the machine model: the paper's Fig. 12 as a tool).
 import numpy as np
 
 from . import _core
-from .feedsim import load_machine, simulate
+from .core_settings import core_settings, default
+from .feedsim import DEFAULT_MACHINE, load_machine, simulate_moves
 from .geometry import as_brep
-from .toolpaths import moves_to_gcode, parallel_finishing
+from .toolpaths import parallel_finishing
 
 
-def cutting_conditions(tool_diameter, scallop, feed_mm_min=None, spindle_rpm=15000.0, teeth=2,
-                       feed_per_tooth=None, machine="mikron-ucp710-840d", acceleration_m_s2=None, use_jerk=False):
-    """Keyword arguments of the core in its units (mm, s), from the ones people type."""
+def cutting_conditions(tool_diameter=None, scallop=None, feed_mm_min=None, spindle_rpm=None, teeth=None,
+                       feed_per_tooth=None, use_jerk=False):
+    """The core's CuttingConditions (mm, s) from the units people type; what is not given keeps the core's
+    default (help(hsmplanner._core.CuttingConditions))."""
+    teeth = default(_core.CuttingConditions, "teeth") if teeth is None else int(teeth)
+    spindle_speed = None if spindle_rpm is None else float(spindle_rpm) / 60.0
     if feed_per_tooth is not None:
-        feed_mm_min = float(feed_per_tooth) * teeth * spindle_rpm
+        rev_s = spindle_speed or default(_core.CuttingConditions, "spindle_speed")
+        feed_mm_min = float(feed_per_tooth) * teeth * rev_s * 60.0
     if feed_mm_min is None:
         raise ValueError("give the programmed feed (feed_mm_min) or the feed per tooth (feed_per_tooth)")
-    model = load_machine(machine) if machine is not None else None
+    return core_settings(_core.CuttingConditions, tool_radius=None if tool_diameter is None else 0.5 * float(tool_diameter),
+                         scallop=None if scallop is None else float(scallop), programmed_feed=float(feed_mm_min) / 60.0,
+                         spindle_speed=spindle_speed, teeth=teeth, jerk_limits_feed=bool(use_jerk))
+
+
+def direction_machine(machine=DEFAULT_MACHINE, acceleration_m_s2=None):
+    """The machine whose slowest plan axes limit the feed: a preset/file/dict/MachineModel, or, with
+    acceleration_m_s2, an acceleration-limited machine with that a_max on every axis (the paper's model)."""
     if acceleration_m_s2 is not None:
-        acceleration = 1000.0 * float(acceleration_m_s2)
-    elif model is not None:
-        acceleration = float(min(model.max_acceleration[0], model.max_acceleration[1]))
-    else:
+        if not float(acceleration_m_s2) > 0:
+            raise ValueError("acceleration_m_s2 = %r must be positive (the slowest axis, m/s²)" % (acceleration_m_s2,))
+        model = _core.MachineModel()
+        model.name = "a_max %g m/s²" % acceleration_m_s2
+        model.controller = _core.ControllerKind.linuxcnc  # trapezoidal: acceleration only, no jerk
+        model.max_acceleration = [1000.0 * float(acceleration_m_s2)] * 3
+        return model
+    if machine is None:
         raise ValueError("give a machine or acceleration_m_s2 (the slowest axis)")
-    stop_jerk = float(min(model.max_jerk[0], model.max_jerk[1])) if model is not None else 0.0
-    return dict(tool_radius=0.5 * float(tool_diameter), scallop=float(scallop), feed=float(feed_mm_min) / 60.0,
-                spindle_speed=float(spindle_rpm) / 60.0, teeth=int(teeth), acceleration=acceleration,
-                jerk=stop_jerk if use_jerk else 0.0, stop_jerk=stop_jerk)
+    return load_machine(machine)
 
 
-def optimal_direction(face, tool_diameter=10.0, scallop=0.01, feed_mm_min=None, spindle_rpm=15000.0, teeth=2,
-                      feed_per_tooth=None, machine="mikron-ucp710-840d", acceleration_m_s2=None, use_jerk=False,
-                      grid=50, angle_step=1.0, alpha=0.95):
+def optimal_direction(face, tool_diameter=None, scallop=None, feed_mm_min=None, spindle_rpm=None, teeth=None,
+                      feed_per_tooth=None, machine=DEFAULT_MACHINE, acceleration_m_s2=None, use_jerk=False,
+                      grid=None, angle_step=None, alpha=None):
     """The optimal direction θ (degrees from X) of parallel planes over `face`, its α and the acceptable
-    directions (those within `alpha` of the local optimum at every point, or within α* when α* < alpha)."""
-    conditions = cutting_conditions(tool_diameter, scallop, feed_mm_min, spindle_rpm, teeth, feed_per_tooth, machine,
-                                    acceleration_m_s2, use_jerk)
-    return _core.optimal_direction(as_brep(face), grid_u=int(grid), grid_v=int(grid), angle_step=float(angle_step),
-                                   report_alpha=float(alpha), **conditions)
+    directions (those within `alpha` of the local optimum at every point, or within α* when α* < alpha).
+    Defaults (tool, scallop, spindle, teeth, grid, angle step, alpha) are the core's: help(optimal_direction)."""
+    conditions = cutting_conditions(tool_diameter, scallop, feed_mm_min, spindle_rpm, teeth, feed_per_tooth, use_jerk)
+    settings = core_settings(_core.DirectionSettings, grid_u=None if grid is None else int(grid),
+                             grid_v=None if grid is None else int(grid),
+                             angle_step=None if angle_step is None else float(angle_step),
+                             report_alpha=None if alpha is None else float(alpha))
+    return _core.optimal_direction(as_brep(face), conditions, direction_machine(machine, acceleration_m_s2), settings)
 
 
 def directions_over_feeds(face, feeds_mm_min, **kwargs):
@@ -62,7 +78,7 @@ def directions_over_feeds(face, feeds_mm_min, **kwargs):
 
 
 def simulated_directions(part, face, angles_deg=range(0, 181, 10), tool_diameter=10.0, scallop=0.01,
-                         feed_mm_min=6000.0, machine="mikron-ucp710-840d", tolerance=0.01, progress=None):
+                         feed_mm_min=6000.0, machine=DEFAULT_MACHINE, tolerance=0.01, progress=None):
     """Parallel planes at each angle over `face` of `part` (a face on its own: part=face, face='Face1'),
     finished for the scallop and simulated on `machine`: one dict per angle (angle_deg, passes, length_mm,
     simulated_s, length_over_feed_s). The check of the paper's Fig. 12, and the surest choice: it sees the
@@ -73,7 +89,7 @@ def simulated_directions(part, face, angles_deg=range(0, 181, 10), tool_diameter
         share = None if progress is None else (lambda done, i=index: progress((i + done) / len(angles)))
         moves, stats = parallel_finishing(part, face, angle_deg=float(angle), tool_diameter=tool_diameter,
                                           cusp_height=scallop, tolerance=tolerance, progress=share)
-        summary = simulate(moves_to_gcode(moves, feed_mm_min), machine).summary
+        summary = simulate_moves(moves, feed_mm_min, machine).summary
         rows.append(dict(angle_deg=float(angle), passes=int(stats["passes"]), length_mm=summary.cutting_length,
                          simulated_s=summary.total_time, length_over_feed_s=summary.naive_time))
     return rows

@@ -9,10 +9,13 @@ list of commands: their F is in mm/s, as FreeCAD stores it). Speeds are mm/s ins
 import json
 import os
 
+import numpy as np
+
 from . import _core
 from .resources import RESOURCES_DIR
 
 MACHINES_DIR = os.path.join(RESOURCES_DIR, "machines")
+DEFAULT_MACHINE = _core.DEFAULT_MACHINE  # the guidance-curve paper's Mikron UCP 710 / 840D
 FEED_CLASS_LABELS = ("<0.3", "0.3-0.5", "0.5-0.7", "0.7-0.9", ">=0.9")
 MOTION_NAMES = ("G0", "G1", "G2", "G3")  # result.blocks["motion"] indexes this
 
@@ -55,16 +58,20 @@ def path_to_gcode(commands):
     return "\n".join(c.toGCode() for c in commands) + "\n"
 
 
-def simulate(program, machine="mikron-ucp710-840d", blocks=False, trace_period=None, refuse_unknown_words=False):
+def _trace_period(trace_period):
+    period = float(trace_period or 0.0)
+    if period < 0:
+        raise ValueError("trace_period %g s must be positive (or None for no trace)" % period)
+    return period
+
+
+def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, refuse_unknown_words=False):
     """Simulate `program` on `machine`; returns a SimulationResult (summary, blocks, trace).
 
     blocks=True keeps one result per block (arrays in result.blocks); trace_period (s) samples t, x, y, z,
     speed along the run into result.trace. Without them memory does not grow with the program.
     """
-    model = load_machine(machine)
-    period = float(trace_period or 0.0)
-    if period < 0:
-        raise ValueError("trace_period %g s must be positive (or None for no trace)" % period)
+    model, period = load_machine(machine), _trace_period(trace_period)
     commands = _path_commands(program)
     if commands is not None:
         return _core.simulate_text(path_to_gcode(commands), model, bool(blocks), period, refuse_unknown_words, True)
@@ -77,6 +84,18 @@ def simulate(program, machine="mikron-ucp710-840d", blocks=False, trace_period=N
         return _core.simulate_text(program, model, bool(blocks), period, refuse_unknown_words, False)
     raise TypeError("program must be a G-code file, G-code text or FreeCAD Path commands, got %s"
                     % type(program).__name__)
+
+
+def simulate_moves(moves, feed_mm_min, machine=DEFAULT_MACHINE, blocks=False, trace_period=None):
+    """Simulate a toolpath's moves ((N, 4) x, y, z, rapid flag, as the finishing generators return them) run
+    as G0/G1 at `feed_mm_min`, without writing G-code text; returns a SimulationResult as simulate does."""
+    if not feed_mm_min > 0:
+        raise ValueError("feed %r mm/min must be positive" % (feed_mm_min,))
+    moves = np.asarray(moves, dtype=float)
+    if moves.ndim != 2 or moves.shape[1] != 4:
+        raise ValueError("moves must be an (N, 4) array of x, y, z and a rapid flag, got shape %s" % (moves.shape,))
+    return _core.simulate_moves(moves, float(feed_mm_min) / 60.0, load_machine(machine), bool(blocks),
+                                _trace_period(trace_period))
 
 
 def summary_dict(summary, program=""):

@@ -11,13 +11,16 @@ using namespace hsm::direction;
 
 namespace {
 CuttingConditions case2() {
-  CuttingConditions c;  // Ø10 ball, Sz 0.01 mm, fz 0.2 mm at 15,000 rpm and Z 2: 6000 mm/min; a 2.5 m/s²
+  CuttingConditions c;  // Ø10 ball, Sz 0.01 mm, fz 0.2 mm at 15,000 rpm and Z 2: 6000 mm/min
   c.toolRadius = 5.0;
   c.spindleSpeed = 250.0;
   c.programmedFeed = 100.0;
-  c.acceleration = 2500.0;
-  c.stopJerk = 5000.0;
   return c;
+}
+
+kinematics::MachineModel mikron() {
+  kinematics::MachineModel machine;  // the defaults are the Mikron UCP 710's axes: X 2.5 m/s², 5 m/s³
+  return machine;
 }
 
 void optimalDirectionOfAFace(benchmark::State& state) {
@@ -25,7 +28,7 @@ void optimalDirectionOfAFace(benchmark::State& state) {
   const int grid = static_cast<int>(state.range(0));
   DirectionResult result;
   for (auto _ : state) {
-    result = optimalDirection(face, case2(), DirectionSettings{grid, grid, 1.0, 0.95});
+    result = optimalDirection(face, case2(), mikron(), DirectionSettings{grid, grid, 1.0, 0.95});
     benchmark::DoNotOptimize(result.rate.data());
   }
   state.counters["points"] = static_cast<double>(result.points.rows());

@@ -35,6 +35,24 @@ class PythonApi(unittest.TestCase):
         self.assertAlmostEqual(from_text, from_commands, places=9)
         self.assertGreater(from_text, hsmplanner.simulate(PROGRAM).summary.naive_time)
 
+    def test_moves_simulated_without_gcode_text(self):
+        """A toolpath's moves give the time of the same moves written as G-code (to its 4 decimals)."""
+        from hsmplanner.toolpaths import moves_to_gcode
+
+        angle = np.linspace(0.0, 2.0 * np.pi, 400)
+        moves = np.column_stack([30 * np.cos(angle), 20 * np.sin(angle), 0.01 * angle, np.zeros_like(angle)])
+        moves = np.vstack([[30.0, 0.0, 5.0, 1.0], moves])
+        direct = hsmplanner.feedsim.simulate_moves(moves, 4000.0, blocks=True)
+        text = hsmplanner.simulate(moves_to_gcode(moves, 4000.0)).summary
+        self.assertEqual(direct.summary.block_count, text.block_count)
+        self.assertAlmostEqual(direct.summary.total_time, text.total_time, delta=1e-4 * text.total_time)
+        self.assertAlmostEqual(direct.summary.time_over_naive, direct.summary.total_time / direct.summary.naive_time)
+        self.assertEqual(len(direct.blocks["line"]), direct.summary.block_count)
+        with self.assertRaisesRegex(ValueError, "must be positive"):
+            hsmplanner.feedsim.simulate_moves(moves, 0.0)
+        with self.assertRaisesRegex(ValueError, r"\(N, 4\) array"):
+            hsmplanner.feedsim.simulate_moves(moves[:, :3], 4000.0)
+
     def test_blocks_and_trace(self):
         result = hsmplanner.simulate(PROGRAM, "linuxcnc-2.9", blocks=True, trace_period=0.002)
         blocks = result.blocks

@@ -5,7 +5,7 @@ it as arrows of the local best direction. The Proxy class name is saved in docum
 """
 import FreeCAD
 
-from hsmplanner import direction, feedsim
+from hsmplanner import _core, direction, feedsim
 
 from . import finishing
 
@@ -14,7 +14,9 @@ from .property_limits import PropertyLimits
 from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
-DEFAULT_MACHINE = "mikron-ucp710-840d"
+DEFAULT_MACHINE = feedsim.DEFAULT_MACHINE
+# The core's defaults, in the units of the properties (each default is written once, in C++).
+_CONDITIONS, _SAMPLING = _core.CuttingConditions(), _core.DirectionSettings()
 ACCELERATION_ONLY = "(acceleration only)"
 FEED_FROM = ["Programmed feed", "Feed per tooth"]
 CHOICES = ["Directional beams", "Least predicted time", "Fastest simulated"]
@@ -22,22 +24,22 @@ CHOICES = ["Directional beams", "Least predicted time", "Fastest simulated"]
 _INPUTS = [
     # type, name, group, tooltip, default
     ("App::PropertyLinkSub", "Face", "Face", "the face to finish with parallel planes", None),
-    ("App::PropertyLength", "ToolDiameter", "Tool", "ball-end diameter", 10.0),
-    ("App::PropertyInteger", "Teeth", "Tool", "number of teeth Z", 2),
-    ("App::PropertyLength", "Scallop", "Cutting", "scallop height Sz left between passes", 0.01),
+    ("App::PropertyLength", "ToolDiameter", "Tool", "ball-end diameter", 2.0 * _CONDITIONS.tool_radius),
+    ("App::PropertyInteger", "Teeth", "Tool", "number of teeth Z", _CONDITIONS.teeth),
+    ("App::PropertyLength", "Scallop", "Cutting", "scallop height Sz left between passes", _CONDITIONS.scallop),
     ("App::PropertyEnumeration", "FeedFrom", "Cutting", "programmed feed, or feed per tooth × Z × N", FEED_FROM),
-    ("App::PropertyFloat", "Feed", "Cutting", "programmed feed, mm/min", 6000.0),
+    ("App::PropertyFloat", "Feed", "Cutting", "programmed feed, mm/min", 60.0 * _CONDITIONS.programmed_feed),
     ("App::PropertyLength", "FeedPerTooth", "Cutting", "feed per tooth fz (FeedFrom = Feed per tooth)", 0.2),
-    ("App::PropertyFloat", "SpindleSpeed", "Cutting", "spindle speed N, rpm", 15000.0),
+    ("App::PropertyFloat", "SpindleSpeed", "Cutting", "spindle speed N, rpm", 60.0 * _CONDITIONS.spindle_speed),
     ("App::PropertyEnumeration", "Machine", "Machine", "machine model: its slowest of X and Y sets a_max", None),
     ("App::PropertyFloat", "Acceleration", "Machine", "a_max in m/s², when Machine is '%s'" % ACCELERATION_ONLY, 3.0),
     ("App::PropertyBool", "UseJerk", "Machine", "also limit the real feed by the axes' jerk", False),
     ("App::PropertyFloat", "ScanFrom", "Feed scan", "lowest programmed feed of the scan, mm/min (0: no scan)", 0.0),
     ("App::PropertyFloat", "ScanTo", "Feed scan", "highest programmed feed of the scan, mm/min", 0.0),
     ("App::PropertyInteger", "ScanSteps", "Feed scan", "feeds in the scan", 15),
-    ("App::PropertyInteger", "Grid", "Sampling", "sample points along each parameter of the face", 50),
-    ("App::PropertyFloat", "AngleStep", "Sampling", "directions every … degrees over 0–180° (1 or finer)", 1.0),
-    ("App::PropertyFloat", "Alpha", "Sampling", "α of the acceptable set reported (at most the optimum's)", 0.95),
+    ("App::PropertyInteger", "Grid", "Sampling", "sample points along each parameter of the face", _SAMPLING.grid_u),
+    ("App::PropertyFloat", "AngleStep", "Sampling", "directions every … degrees over 0–180° (1 or finer)", _SAMPLING.angle_step),
+    ("App::PropertyFloat", "Alpha", "Sampling", "α of the acceptable set reported (at most the optimum's)", _SAMPLING.report_alpha),
     ("App::PropertyEnumeration", "Choice", "Choice",
      "the angle applied: the paper's beams (worst point), the least predicted time of planes over the face, "
      "or the fastest of planes finished and simulated on the machine every ValidationStep", CHOICES),

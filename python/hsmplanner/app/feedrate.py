@@ -53,7 +53,7 @@ def check_feeds(obj):
                                  " '%s'" % controller.Label if controller is not None else ""))
 
 
-def simulate_object(obj, machine="mikron-ucp710-840d", blocks=True, trace_period=None):
+def simulate_object(obj, machine=feedsim.DEFAULT_MACHINE, blocks=True, trace_period=None):
     """Simulate a Job or an operation; FreeCAD's feeds (mm/s) are read as they are stored."""
     check_feeds(obj)
     commands = program_commands(obj)

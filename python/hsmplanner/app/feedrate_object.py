@@ -10,7 +10,7 @@ from .feedrate import is_simulatable, simulate_object
 from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
-DEFAULT_MACHINE = "mikron-ucp710-840d"
+DEFAULT_MACHINE = feedsim.DEFAULT_MACHINE
 CUSTOM_MACHINE = "(machine file)"
 COLOR_MODES = ["Share of programmed feed", "Feed (mm/min)"]
 

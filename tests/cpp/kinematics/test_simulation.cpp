@@ -1,3 +1,4 @@
+#include "kinematics/moves.hpp"
 #include "kinematics/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -263,4 +264,28 @@ TEST(Machine, PresetsLoadAndBadFilesAreRefusedByKey) {
     EXPECT_NE(std::string(e.what()).find("my.json axis X: missing \"max_jerk_m_s3\""), std::string::npos) << e.what();
   }
   EXPECT_THROW(machineFromJson("{nope", "x.json"), hsm::InputError);
+}
+
+TEST(Simulation, MovesRunAsTheBlocksOfTheirGcode) {
+  MoveArray moves(5, 4);
+  moves << 0, 0, 5, 1,   // G0 above the start
+      0, 0, 0, 0,        // G1 down
+      40, 0, 0, 0, 40, 0, 0, 0,  // the same point twice: the second moves nothing
+      40, 10, 0, 0;
+  const std::vector<Block> blocks = movesToBlocks(moves, 100.0);
+  ASSERT_EQ(blocks.size(), 4u);
+  EXPECT_EQ(blocks[0].motion, Motion::Rapid);
+  EXPECT_EQ(blocks[0].feed, 0.0);
+  EXPECT_EQ(blocks[3].line, 5);  // rows counted from 1, the skipped one included
+  const MachineModel mikron = preset("mikron-ucp710-840d");
+  const auto text = run("G0 X0 Y0 Z5\nG1 Z0 F6000\nG1 X40\nG1 X40\nG1 Y10\n", mikron, false).summary;
+  const auto direct = simulateBlocks(blocks, mikron).summary;
+  EXPECT_NEAR(direct.totalTime, text.totalTime, 1e-12);
+  EXPECT_EQ(direct.blockCount, text.blockCount);
+  MoveArray bad = moves;
+  bad(2, 1) = std::nan("");
+  EXPECT_THROW(movesToBlocks(bad, 100.0), hsm::InputError);
+  EXPECT_THROW(movesToBlocks(moves, 0.0), hsm::InputError);
+  bad(2, 1) = 2e9;
+  EXPECT_THROW(movesToBlocks(bad, 100.0), hsm::InputError);
 }

@@ -1,0 +1,45 @@
+// The machine's physics along a path, written once: how long a change of speed takes (S-curve or
+// trapezoid), the steady speed a curve allows, and the per-axis limits projected onto a direction.
+// The feed-rate planner (kinematics/planner.cpp) and the machining-direction model (direction/) use it.
+//
+// Every speed change starts and ends at zero acceleration. Jerk-limited (840D SOFT): the acceleration ramps
+// at J up to A (if reached) and back, so Δv ≤ A²/J takes 2·sqrt(Δv/J) and larger changes Δv/A + A/J;
+// acceleration-limited (840D BRISK, LinuxCNC, grbl): steps of A, Δv/A. On radius R the steady speed is
+// at most sqrt(A·R), and cbrt(J·R²) when jerk-limited. Per-axis limits l_i project on a unit direction u
+// as min_i l_i/|u_i|.
+#pragma once
+
+#include "kinematics/machine.hpp"
+
+#include <Eigen/Core>
+
+namespace hsm::kinematics {
+
+struct Dynamics {
+  double acceleration = 0.0;  // A, mm/s², along the path
+  double jerk = 0.0;          // J, mm/s³, along the path; ignored when !jerkLimited
+  bool jerkLimited = true;
+};
+
+// Time of a speed change by Δv ≥ 0 (0 for Δv ≤ 0).
+double speedChangeTime(double dv, const Dynamics& d);
+
+// The time a stop from `speed` and a start back to it cost over cruising through the same distance: the
+// braking and the start each cover speed·t/2 in t, so together they lose one change time t.
+double stopAndGoLoss(double speed, const Dynamics& d);
+
+// Highest steady speed on a curve of radius `radius` mm.
+double curvatureSpeed(double radius, const Dynamics& d);
+
+// min over the axes of limits_i / |u_i|: per-axis limits projected on direction u (infinite for u = 0).
+double projectedLimit(const Eigen::Vector3d& limits, const Eigen::Vector3d& u);
+
+// Whether the controller limits the jerk of the path by default (840D SOFT at start-up; LinuxCNC and grbl
+// are trapezoidal).
+bool jerkLimitedByDefault(const MachineModel& machine);
+
+// The acceleration and jerk of the slowest of the X and Y axes: what a path in any plan direction may
+// count on (the a_max of Quinsat & Sabourin's machining-direction model).
+Dynamics slowestPlanAxes(const MachineModel& machine);
+
+}  // namespace hsm::kinematics
