@@ -1,7 +1,7 @@
 #include "bindings/bindings.hpp"
 
 #include "geometry/brep.hpp"
-#include "geometry/curve_sampling.hpp"
+#include "geometry/bspline.hpp"
 #include "geometry/face_drop.hpp"
 
 #include <pybind11/eigen.h>

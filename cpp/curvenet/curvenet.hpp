@@ -32,7 +32,7 @@
 #pragma once
 
 #include "common/progress.hpp"
-#include "geometry/curve_sampling.hpp"
+#include "geometry/points.hpp"
 
 #include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>

@@ -2,7 +2,7 @@
 // those planes, the contact planes, the face to drop points on, and the stop rule.
 #pragma once
 
-#include "curvenet/plane_cuts.hpp"
+#include "curvenet/fitting.hpp"
 #include "geometry/face_drop.hpp"
 
 #include <memory>

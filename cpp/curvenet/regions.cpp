@@ -4,7 +4,7 @@
 #include "common/text.hpp"
 #include "geometry/bspline.hpp"
 #include "geometry/face_drop.hpp"
-#include "curvenet/plane_cuts.hpp"
+#include "curvenet/fitting.hpp"
 
 #include <BRepAlgoAPI_Splitter.hxx>
 #include <BRepBndLib.hxx>

@@ -28,7 +28,7 @@
 // where every direction ties, is reported as such.
 #pragma once
 
-#include "geometry/curve_sampling.hpp"
+#include "geometry/points.hpp"
 #include "kinematics/machine.hpp"
 #include "kinematics/physics.hpp"
 

@@ -193,4 +193,8 @@ CurveShapeReport analyzeCurve(const Handle(Geom_BSplineCurve)& curve, const Eige
   return report;
 }
 
+PointArray sampleByArcLength(const TopoDS_Shape& curve, int count) {
+  return sampleByArcLength(Handle(Geom_Curve)(toBSpline(curve)), count);
+}
+
 }  // namespace hsm::geometry

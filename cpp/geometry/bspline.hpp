@@ -1,7 +1,8 @@
 // Curves as B-splines: the one representation the curve-net and toolpath code works on.
 #pragma once
 
-#include "geometry/curve_sampling.hpp"
+#include "geometry/points.hpp"
+#include "geometry/wire.hpp"
 
 #include <Geom_BSplineCurve.hxx>
 #include <TopoDS_Shape.hxx>
@@ -21,6 +22,9 @@ Handle(Geom_BSplineCurve) interpolatePoints(const PointArray& points);
 
 // `count` points equally spaced by arc length along the curve, ends included.
 PointArray sampleByArcLength(const Handle(Geom_Curve)& curve, int count);
+// The same along a curve given as an edge, a wire or a chain of edges. Throws InputError when count < 2 or
+// the curve is not a chain of edges of non-zero length.
+PointArray sampleByArcLength(const TopoDS_Shape& curve, int count);
 
 // BREP text of an edge on the curve (what FreeCAD's Part.Shape().importBrepFromString() reads).
 std::string edgeBrep(const Handle(Geom_Curve)& curve);

@@ -1,7 +1,7 @@
 // Points dropped on a face along the tool axis: the plan position is kept, the height comes from the face.
 #pragma once
 
-#include "geometry/curve_sampling.hpp"
+#include "geometry/points.hpp"
 
 #include <Geom_Surface.hxx>
 #include <ShapeAnalysis_Surface.hxx>

@@ -3,7 +3,7 @@
 // OpenCAMLib's drop-cutter, with closed forms for each). Positions are of the tool tip (ball bottom).
 #pragma once
 
-#include "geometry/curve_sampling.hpp"
+#include "geometry/points.hpp"
 #include "toolpath/mesh.hpp"
 
 #include <limits>

@@ -3,7 +3,7 @@
 #include "common/error.hpp"
 #include "common/parallel.hpp"
 #include "common/text.hpp"
-#include "curvenet/plane_cuts.hpp"
+#include "geometry/plane_cutter.hpp"
 #include "geometry/face_drop.hpp"
 #include "toolpath/cusp.hpp"
 #include "toolpath/reach.hpp"
@@ -567,7 +567,7 @@ namespace {
 // Points of the guides in the planes of one spacing: every pass is a blend of the same two point lists.
 class GuidePoints {
 public:
-  GuidePoints(const curvenet::detail::PlaneCutter& first, const curvenet::detail::PlaneCutter& second, double s0,
+  GuidePoints(const geometry::PlaneCutter& first, const geometry::PlaneCutter& second, double s0,
               double s1)
       : first_(first), second_(second), s0_(s0), s1_(s1) {}
 
@@ -582,7 +582,7 @@ public:
   }
 
 private:
-  const curvenet::detail::PlaneCutter &first_, &second_;
+  const geometry::PlaneCutter &first_, &second_;
   double s0_, s1_;
   std::map<double, std::pair<geometry::PointArray, geometry::PointArray>> cache_;
 };
@@ -601,7 +601,7 @@ Toolpath guideCurveFinishing(const TopoDS_Shape& part, int bottomFace, const std
     const GuideArea& area = areas[index];
     const std::string name = "area " + std::to_string(index + 1);
     if (area.first.IsNull() || area.second.IsNull()) throw InputError(name + " lacks a guide");
-    const curvenet::detail::PlaneCutter first(area.first, direction), second(area.second, direction);
+    const geometry::PlaneCutter first(area.first, direction), second(area.second, direction);
     const double s0 = std::max(first.extent().first, second.extent().first);
     const double s1 = std::min(first.extent().second, second.extent().second);
     if (s1 - s0 < settings.sampling)

@@ -1,6 +1,6 @@
 #include "curves.hpp"
 
-#include "curvenet/plane_cuts.hpp"
+#include "curvenet/fitting.hpp"
 
 namespace hsm::test {
 double yAt(const Handle(Geom_BSplineCurve)& curve, double x) {

@@ -1,5 +1,5 @@
 #include "common/error.hpp"
-#include "geometry/curve_sampling.hpp"
+#include "geometry/bspline.hpp"
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>

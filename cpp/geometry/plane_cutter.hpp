@@ -1,19 +1,17 @@
-// Internal pieces of the curve-net construction: cutting curves by the planes of the stations, dropping
-// points on the bottom face along the tool axis, fitting the degree-5 curve.
+// Where the planes d·x = s (stations along a direction d) cut a curve: the curve nets' construction planes
+// and the guide-curve passes' stations both need it.
 #pragma once
 
-#include "curvenet/curvenet.hpp"
+#include "geometry/points.hpp"
+
+#include <Geom_BSplineCurve.hxx>
+
+#include <Eigen/Core>
 
 #include <utility>
 #include <vector>
 
-namespace hsm::curvenet::detail {
-
-// The machining direction d, the tool axis and the transverse direction t = axis × d that orders the
-// curves across the feature (B1 on the low side).
-struct Frame {
-  Eigen::Vector3d direction, axis, transverse;
-};
+namespace hsm::geometry {
 
 // Where the planes d·x = s cut one curve. The curve is oriented along +d; a dense table of s(t) brackets
 // the cuts, Newton with a bisection guard refines them to 1e-9 mm.
@@ -28,7 +26,8 @@ public:
     PointArray points;                 // one per station
     std::vector<int> multiCutStations; // stations that cut the curve more than once
   };
-  // One point per station with the continuation rule (see curvenet.hpp). Stations must be increasing and
+  // One point per station with the continuation rule (the first cut at or after the previous one in the curve's order, else
+  // the last). Stations must be increasing and
   // lie in extent().
   Cuts cut(const std::vector<double>& stations) const;
 
@@ -45,8 +44,4 @@ private:
 // Copy of `curve` oriented so that d·x grows from its first to its last point.
 Handle(Geom_BSplineCurve) orientedAlong(const Handle(Geom_BSplineCurve)& curve, const Eigen::Vector3d& direction);
 
-// Degree-5 (or points−1) B-spline approximating the points within `tolerance`, chord-length parameters, C2.
-// Also returns the largest distance from a point to the curve.
-std::pair<Handle(Geom_BSplineCurve), double> fitCurve(const PointArray& points, double tolerance);
-
-}  // namespace hsm::curvenet::detail
+}  // namespace hsm::geometry

@@ -1,7 +1,6 @@
-#include "geometry/curve_sampling.hpp"
+#include "geometry/wire.hpp"
 
 #include "common/error.hpp"
-#include "geometry/bspline.hpp"
 
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
@@ -40,10 +39,6 @@ TopoDS_Wire toWire(const TopoDS_Shape& curve) {
                      std::to_string(wires.IsNull() ? 0 : wires->Length()) +
                      " pieces): pass edges that meet end to end");
   return TopoDS::Wire(wires->First());
-}
-
-PointArray sampleByArcLength(const TopoDS_Shape& curve, int count) {
-  return sampleByArcLength(Handle(Geom_Curve)(toBSpline(curve)), count);
 }
 
 }  // namespace hsm::geometry
