@@ -13,27 +13,9 @@ namespace hsm::toolpath {
 
 namespace {
 constexpr double kVertical = 1e-9;  // facets this close to vertical are reached through their edges only
-
-// A cell index in [-1, count]: computed in doubles and clamped before the cast (a coordinate far out, or
-// not a number, must not overflow an int).
-int cellIndex(double offset, double cell, int count) {
-  const double index = std::floor(offset / cell);
-  if (!(index >= 0.0)) return -1;
-  return index >= count ? count : static_cast<int>(index);
-}
 }
 
-template <class Add>
-void BallDropCutter::registerBox(double x0, double y0, double x1, double y1, Add&& add) {
-  const int i0 = std::max(0, cellIndex(x0 - radius_ - x0_, cell_, nx_));
-  const int i1 = std::min(nx_ - 1, cellIndex(x1 + radius_ - x0_, cell_, nx_));
-  const int j0 = std::max(0, cellIndex(y0 - radius_ - y0_, cell_, ny_));
-  const int j1 = std::min(ny_ - 1, cellIndex(y1 + radius_ - y0_, cell_, ny_));
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) add(cells_[static_cast<size_t>(j) * nx_ + i]);
-}
-
-BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius_(radius) {
+BallDropCutter::BallDropCutter(const geometry::TriangleMesh& mesh, double radius) : radius_(radius) {
   if (!(radius > 0.0)) throw InputError("ball radius must be positive, got " + std::to_string(radius) + " mm");
   if (mesh.triangles.empty() && mesh.polylines.empty())
     throw InputError("the mesh has no triangle: nothing to drop the tool on");
@@ -44,20 +26,9 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
   Eigen::AlignedBox3d box = mesh.bounds();
   for (const auto& line : mesh.polylines)
     for (const auto& p : line) box.extend(p);
-  if (!box.min().allFinite() || !box.max().allFinite())
-    throw InputError("the mesh has points that are not finite: check the part's geometry");
-  cell_ = std::max(radius, 1e-3);
-  x0_ = box.min().x() - radius;
-  y0_ = box.min().y() - radius;
-  const double cellsX = std::ceil((box.max().x() + radius - x0_) / cell_) + 1.0;
-  const double cellsY = std::ceil((box.max().y() + radius - y0_) / cell_) + 1.0;
-  if (!(cellsX * cellsY <= 5e7))
-    throw InputError("the part is " + std::to_string(box.sizes().x()) + " × " + std::to_string(box.sizes().y()) +
-                     " mm in plan, too large for a " + std::to_string(2.0 * radius) + " mm tool (5e7 cells): "
-                     "split the area or check the part's units");
-  nx_ = std::max(1, static_cast<int>(cellsX));
-  ny_ = std::max(1, static_cast<int>(cellsY));
-  cells_.resize(static_cast<size_t>(nx_) * ny_);
+  const Eigen::AlignedBox2d plan(box.min().head<2>(), box.max().head<2>());
+  grid_ = geometry::PlanGrid<Cell>(plan, std::max(radius, 1e-3), radius,
+                                   "the part (for a " + std::to_string(2.0 * radius) + " mm tool)");
 
   // Polylines: their points are vertices, their chords edges.
   for (size_t l = 0; l < mesh.polylines.size(); ++l) {
@@ -67,7 +38,7 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
       const Eigen::Vector3d& v = line[k];
       const int id = static_cast<int>(vertices_.size());
       vertices_.push_back({v.x(), v.y(), v.z(), face});
-      registerBox(v.x(), v.y(), v.x(), v.y(), [&](Cell& cell) { cell.vertices.push_back(id); });
+      grid_.forBox(v.x(), v.y(), v.x(), v.y(), [&](Cell& cell) { cell.vertices.push_back(id); });
       if (k == 0) continue;
       addEdge(line[k - 1], v, face);
     }
@@ -91,7 +62,7 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
         const int id = static_cast<int>(facets_.size());
         facets_.push_back({a.x(), a.y(), a.z(), n.x(), n.y(), n.z(), n.dot(a), b.x() - a.x(), b.y() - a.y(),
                            c.x() - a.x(), c.y() - a.y(), det, face});
-        registerBox(xmin, ymin, xmax, ymax, [&](Cell& cell) { cell.facets.push_back(id); });
+        grid_.forBox(xmin, ymin, xmax, ymax, [&](Cell& cell) { cell.facets.push_back(id); });
       }
     }
     for (int k = 0; k < 3; ++k) {
@@ -101,7 +72,7 @@ BallDropCutter::BallDropCutter(const TriangleMesh& mesh, double radius) : radius
         const Eigen::Vector3d& v = mesh.vertices[p];
         const int id = static_cast<int>(vertices_.size());
         vertices_.push_back({v.x(), v.y(), v.z(), face});
-        registerBox(v.x(), v.y(), v.x(), v.y(), [&](Cell& cell) { cell.vertices.push_back(id); });
+        grid_.forBox(v.x(), v.y(), v.x(), v.y(), [&](Cell& cell) { cell.vertices.push_back(id); });
       }
       if (p > q) std::swap(p, q);
       if (edgeIndex.count({p, q})) continue;
@@ -117,19 +88,13 @@ void BallDropCutter::addEdge(const Eigen::Vector3d& A, const Eigen::Vector3d& B,
   const int id = static_cast<int>(edges_.size());
   edges_.push_back({A.x(), A.y(), A.z(), (B.x() - A.x()) / length, (B.y() - A.y()) / length, length,
                     (B.z() - A.z()) / length, face});
-  registerBox(std::min(A.x(), B.x()), std::min(A.y(), B.y()), std::max(A.x(), B.x()), std::max(A.y(), B.y()),
+  grid_.forBox(std::min(A.x(), B.x()), std::min(A.y(), B.y()), std::max(A.x(), B.x()), std::max(A.y(), B.y()),
               [&](Cell& cell) { cell.edges.push_back(id); });
-}
-
-const BallDropCutter::Cell* BallDropCutter::cellAt(double x, double y) const {
-  const int i = cellIndex(x - x0_, cell_, nx_), j = cellIndex(y - y0_, cell_, ny_);
-  if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return nullptr;
-  return &cells_[static_cast<size_t>(j) * nx_ + i];
 }
 
 Contact BallDropCutter::drop(double x, double y) const {
   Contact best;
-  const Cell* cell = cellAt(x, y);
+  const Cell* cell = grid_.at(x, y);
   if (!cell) return best;
   const double r = radius_, r2 = r * r;
   double top = -std::numeric_limits<double>::infinity();  // highest ball centre

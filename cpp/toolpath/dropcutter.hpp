@@ -3,8 +3,9 @@
 // OpenCAMLib's drop-cutter, with closed forms for each). Positions are of the tool tip (ball bottom).
 #pragma once
 
+#include "geometry/mesh.hpp"
+#include "geometry/plan_grid.hpp"
 #include "geometry/points.hpp"
-#include "toolpath/mesh.hpp"
 
 #include <limits>
 #include <vector>
@@ -21,7 +22,7 @@ inline constexpr size_t kMaxTriangles = 20000000;  // about 2 GB of index: the m
 
 class BallDropCutter {
 public:
-  BallDropCutter(const TriangleMesh& mesh, double radius);
+  BallDropCutter(const geometry::TriangleMesh& mesh, double radius);
 
   double radius() const { return radius_; }
   Contact drop(double x, double y) const;
@@ -46,18 +47,13 @@ private:
   struct Cell {
     std::vector<int> facets, edges, vertices;
   };
-  template <class Add>
-  void registerBox(double x0, double y0, double x1, double y1, Add&& add);
-  const Cell* cellAt(double x, double y) const;
   void addEdge(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int face);
 
   double radius_;
-  double x0_, y0_, cell_;
-  int nx_ = 0, ny_ = 0;
   std::vector<Facet> facets_;
   std::vector<Edge> edges_;
   std::vector<Vertex> vertices_;
-  std::vector<Cell> cells_;
+  geometry::PlanGrid<Cell> grid_;  // cells of one radius: the ball at (x, y) reaches only its own cell's lists
 };
 
 }  // namespace hsm::toolpath

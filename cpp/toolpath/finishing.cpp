@@ -92,8 +92,8 @@ public:
       const bool nearInPlan = !faceBox.IsVoid() && !reachBox.IsOut(faceBox);
       if ((i != bottomFace || reach.up < 1.0) && nearInPlan) others.push_back(i);
     }
-    TriangleMesh mesh = others.empty() ? TriangleMesh{} : meshFaces(part, settings.meshDeflection, others);
-    addFaceBoundary(mesh, part, bottomFace, 0.05);
+    geometry::TriangleMesh mesh = others.empty() ? geometry::TriangleMesh{} : geometry::meshFaces(part, settings.meshDeflection, others);
+    geometry::addFaceBoundary(mesh, part, bottomFace, 0.05);
     cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
     exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius, reach.toolSide);
     gauge_ = std::make_unique<CuspGauge>(*exact_, settings.toolRadius);

@@ -10,6 +10,7 @@
 #include <vector>
 
 using namespace hsm;
+using namespace hsm::geometry;
 using namespace hsm::toolpath;
 
 namespace {

@@ -1,4 +1,4 @@
-// Triangle meshes of the faces a cutter must not gouge, with a grid index in the plan (XY) for drop-cutting.
+// Triangle meshes: of the faces of a shape (what a cutter must not gouge), and read from STL files.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace hsm::toolpath {
+namespace hsm::geometry {
 
 struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
@@ -27,10 +27,11 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
 // The boundary edges of face `face` of `shape` as polylines with chords of at most `spacing` mm.
 void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing);
 
-// Reads an STL file, binary or ASCII; InputError names the file and what is wrong.
+// Reads an STL file, binary or ASCII (OCCT's RWStl: coincident corners merged into shared vertices);
+// InputError names the file and what is wrong.
 TriangleMesh readStl(const std::string& path);
 
 // The faces of `solid` that share an edge with face `face` (1-based numbers), the face itself first.
 std::vector<int> faceAndNeighbours(const TopoDS_Shape& solid, int face);
 
-}  // namespace hsm::toolpath
+}  // namespace hsm::geometry

@@ -1,8 +1,10 @@
-#include "toolpath/mesh.hpp"
+#include "geometry/mesh.hpp"
 
 #include "common/error.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <RWStl.hxx>
+#include <Standard_Failure.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <TopExp_Explorer.hxx>
@@ -17,12 +19,9 @@
 #include <TopoDS_Face.hxx>
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <fstream>
-#include <sstream>
 
-namespace hsm::toolpath {
+namespace hsm::geometry {
 
 Eigen::AlignedBox3d TriangleMesh::bounds() const {
   Eigen::AlignedBox3d box;
@@ -90,53 +89,28 @@ void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, do
   }
 }
 
-namespace {
-TriangleMesh readAsciiStl(std::istream& in, const std::string& path) {
-  TriangleMesh mesh;
-  std::string word;
-  std::vector<Eigen::Vector3d> corner;
-  while (in >> word) {
-    if (word != "vertex") continue;
-    Eigen::Vector3d v;
-    if (!(in >> v.x() >> v.y() >> v.z())) throw InputError(path + ": a vertex has no three numbers");
-    corner.push_back(v);
-    if (corner.size() == 3) {
-      const int base = static_cast<int>(mesh.vertices.size());
-      mesh.vertices.insert(mesh.vertices.end(), corner.begin(), corner.end());
-      mesh.triangles.emplace_back(base, base + 1, base + 2);
-      mesh.faceOf.push_back(0);
-      corner.clear();
-    }
-  }
-  return mesh;
-}
-}  // namespace
-
 TriangleMesh readStl(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read the STL file '" + path + "': check the path");
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (data.size() >= 84) {
-    uint32_t count = 0;
-    std::memcpy(&count, data.data() + 80, 4);
-    if (data.size() == 84 + 50ull * count) {  // binary: the size matches the triangle count exactly
-      TriangleMesh mesh;
-      mesh.vertices.reserve(3 * count);
-      for (uint32_t t = 0; t < count; ++t) {
-        const char* record = data.data() + 84 + 50ull * t + 12;
-        float xyz[9];
-        std::memcpy(xyz, record, sizeof xyz);
-        const int base = static_cast<int>(mesh.vertices.size());
-        for (int k = 0; k < 3; ++k) mesh.vertices.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
-        mesh.triangles.emplace_back(base, base + 1, base + 2);
-        mesh.faceOf.push_back(0);
-      }
-      return mesh;
-    }
+  if (!std::ifstream(path, std::ios::binary)) throw InputError("cannot read the STL file '" + path + "': check the path");
+  Handle(Poly_Triangulation) triangulation;
+  try {
+    triangulation = RWStl::ReadFile(path.c_str());
+  } catch (const Standard_Failure& failure) {
+    throw InputError(path + ": not a readable STL file (" + failure.GetMessageString() + ")");
   }
-  std::istringstream text(data);
-  TriangleMesh mesh = readAsciiStl(text, path);
-  if (mesh.triangles.empty()) throw InputError(path + ": no triangle found (neither binary nor ASCII STL)");
+  if (triangulation.IsNull() || triangulation->NbTriangles() == 0)
+    throw InputError(path + ": no triangle found (neither binary nor ASCII STL)");
+  TriangleMesh mesh;
+  mesh.vertices.reserve(static_cast<size_t>(triangulation->NbNodes()));
+  for (int i = 1; i <= triangulation->NbNodes(); ++i) {
+    const gp_Pnt p = triangulation->Node(i);
+    mesh.vertices.emplace_back(p.X(), p.Y(), p.Z());
+  }
+  for (int i = 1; i <= triangulation->NbTriangles(); ++i) {
+    int a, b, c;
+    triangulation->Triangle(i).Get(a, b, c);
+    mesh.triangles.emplace_back(a - 1, b - 1, c - 1);
+    mesh.faceOf.push_back(0);
+  }
   return mesh;
 }
 
@@ -162,4 +136,4 @@ std::vector<int> faceAndNeighbours(const TopoDS_Shape& solid, int face) {
   return result;
 }
 
-}  // namespace hsm::toolpath
+}  // namespace hsm::geometry
