@@ -1,0 +1,280 @@
+#include "kinematics/gcode_interpreter.hpp"
+
+#include "common/text.hpp"
+
+#include <Eigen/Geometry>
+#include <fast_float/fast_float.h>
+
+#include <cmath>
+#include <string>
+
+namespace hsm::kinematics::detail {
+
+namespace {
+// Siemens frame instructions: the coordinates on their line shift the frame, they do not move the tool.
+bool isFrameKeyword(std::string_view name) {
+  return name == "TRANS" || name == "ATRANS" || name == "ROT" || name == "AROT" || name == "SCALE" ||
+         name == "ASCALE" || name == "MIRROR" || name == "AMIRROR";
+}
+}  // namespace
+
+bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
+  lineNumber_ = lineNumber;
+  LineWords words;
+  if (!collect(line, words)) return false;
+  applyModes(words);
+  return makeBlock(words, block);
+}
+
+bool Interpreter::collect(const Line& line, LineWords& words) {
+  for (const Keyword& k : line.keywords) {
+    if (isFrameKeyword(k.name)) {
+      unknown(k.name);  // frames are not simulated: the line is skipped
+      return false;
+    }
+    keyword(k, words);
+  }
+  for (int i = 0; i < line.wordCount; ++i) {
+    const Word& w = line.words[i];
+    switch (w.letter) {
+      case 'G': gWord(w, words); break;
+      case 'X': case 'Y': case 'Z': {
+        const int a = w.letter - 'X';
+        if (words.hasAxis[a]) throw ParseError(lineNumber_, std::string("axis ") + w.letter + " given twice");
+        words.hasAxis[a] = true;
+        words.axis[a] = w.value;
+        break;
+      }
+      case 'I': case 'J': case 'K': {
+        const int a = w.letter - 'I';
+        words.hasOffset[a] = true;
+        words.offset[a] = w.value;
+        break;
+      }
+      case 'F': words.fWord = w.value; words.hasFeed = true; break;
+      case 'R': words.radiusWord = w.value; words.hasRadius = true; break;
+      case 'P': words.pWord = w.value; words.hasP = true; break;
+      case 'M': mWord(w); break;
+      case 'T': ++stats_.toolChanges; break;
+      case 'N': case 'S': case 'D': case 'H': case 'Q': case 'L': break;  // no effect on the motion
+      default: unknown(w.text);
+    }
+  }
+  return true;
+}
+
+void Interpreter::applyModes(const LineWords& w) {
+  if (w.hasFeed && !w.dwell) {
+    if (w.fWord <= 0.0 || !std::isfinite(w.fWord))
+      throw ParseError(lineNumber_, "feed rate F" + std::to_string(w.fWord) + " must be positive");
+    feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
+  }
+  if (w.dwell) {
+    const double seconds = w.pWord >= 0.0 ? w.pWord : w.hasFeed ? w.fWord : -1.0;  // LinuxCNC G4 P, Siemens G4 F
+    if (w.hasP && w.pWord < 0.0)
+      throw ParseError(lineNumber_, "G4 P" + number(w.pWord) + ": a dwell lasts 0 s or more; write G4 P<seconds>");
+    if (!(seconds >= 0.0)) throw ParseError(lineNumber_, "G4 dwell needs its time: G4 P<seconds> (or F on the 840D)");
+    stats_.dwellTime += seconds;
+  }
+  if (w.g64) {
+    pathMode_ = w.pWord > 0.0 ? PathMode::Rounding : PathMode::Continuous;
+    tolerance_ = w.pWord > 0.0 ? w.pWord * unit_ : 0.0;
+  }
+  if (w.newMotion >= 0) motion_ = w.newMotion;
+}
+
+bool Interpreter::makeBlock(const LineWords& w, Block& block) {
+  if ((w.newMotion == 2 || w.newMotion == 3) && !w.anyAxis() && !w.anyOffset() && !w.hasRadius)
+    throw ParseError(lineNumber_, "G" + std::to_string(w.newMotion) + " without an end point or a centre: an arc "
+                                  "needs X/Y/Z and I/J/K (or R); the line moves nothing");
+  if (!w.anyAxis() && !(w.anyOffset() && (motion_ == 2 || motion_ == 3))) return false;
+  if (w.dwell) return false;
+  if (motion_ < 0) throw ParseError(lineNumber_, "coordinates before any motion mode: start with G0 or G1");
+
+  Eigen::Vector3d target = position_;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasAxis[a]) target[a] = absolute_ ? w.axis[a] * unit_ : position_[a] + w.axis[a] * unit_;
+
+  block = Block{};
+  block.start = position_;
+  block.end = target;
+  block.line = lineNumber_;
+  block.pathMode = w.exactStopHere ? PathMode::ExactStop : pathMode_;
+  block.tolerance = tolerance_;
+  block.jerkLimited = jerkLimited_;
+  if (motion_ == 0) {
+    block.motion = Motion::Rapid;
+  } else {
+    if (feed_ <= 0.0) throw ParseError(lineNumber_, "no feed rate: program F before the first G1/G2/G3 move");
+    block.feed = feed_;
+    block.motion = motion_ == 1 ? Motion::Linear : motion_ == 2 ? Motion::ArcClockwise : Motion::ArcCounterClockwise;
+  }
+  if (block.isArc()) {
+    arc(block, w);
+  } else if ((target - position_).squaredNorm() == 0.0) {
+    return false;  // a move to where the tool already is
+  }
+  position_ = target;
+  ++stats_.motionBlocks;
+  return true;
+}
+
+void Interpreter::unknown(std::string_view word) {
+  if (options_.refuseUnknownWords)
+    throw ParseError(lineNumber_, "'" + std::string(word) + "' is not understood: remove it, or let unknown "
+                                 "words be skipped (refuse_unknown_words off)");
+  ++stats_.unknownWords;
+  auto it = stats_.unknownWordCounts.find(std::string(word));
+  if (it != stats_.unknownWordCounts.end()) {
+    ++it->second;
+  } else if (stats_.unknownWordCounts.size() < 50) {
+    stats_.unknownWordCounts.emplace(std::string(word), 1);
+  }
+}
+
+void Interpreter::gWord(const Word& w, LineWords& words) {
+  const long code = std::lround(w.value * 10.0);
+  if (std::abs(w.value * 10.0 - code) > 1e-6) return unknown(w.text);
+  switch (code) {
+    case 0: case 10: case 20: case 30: words.newMotion = int(code / 10); break;
+    case 40: words.dwell = true; break;
+    case 90: words.exactStopHere = true; break;
+    case 170: case 180: case 190: plane_ = int(code / 10); break;
+    case 200: case 700: case 7000: unit_ = 25.4; break;  // G20; 840D G70/G700
+    case 210: case 710: case 7100: unit_ = 1.0; break;   // G21; 840D G71/G710
+    case 900: absolute_ = true; break;
+    case 910: absolute_ = false; break;
+    case 901: arcCentreAbsolute_ = true; break;
+    case 911: arcCentreAbsolute_ = false; break;
+    case 600: case 610: case 611: pathMode_ = PathMode::ExactStop; break;
+    case 640: words.g64 = true; break;
+    case 6410: case 6420: case 6430: case 6440: case 6450:
+      pathMode_ = PathMode::Rounding;
+      tolerance_ = roundingTolerance_;
+      break;
+    // Accepted without effect on the simulated motion: cutter and length compensation, work offsets,
+    // canned-cycle cancel, feed per minute, exact-stop windows, return modes, machine coordinates.
+    case 400: case 410: case 420: case 430: case 431: case 490: case 530: case 540: case 550: case 560:
+    case 570: case 580: case 590: case 800: case 940: case 980: case 990: case 6010: case 6020: case 6030:
+    case 150: case 160: case 5000: case 5010:
+      break;
+    default: unknown(w.text);
+  }
+}
+
+void Interpreter::mWord(const Word& w) {
+  const long code = std::lround(w.value);
+  if (code == 6) ++stats_.toolChanges;
+  const bool known = code == 0 || code == 1 || code == 2 || code == 3 || code == 4 || code == 5 || code == 6 ||
+                     code == 7 || code == 8 || code == 9 || code == 30 || code == 17;
+  if (!known) unknown(w.text);
+}
+
+void Interpreter::keyword(const Keyword& k, LineWords& words) {
+  const std::string_view name = k.name;
+  if (name == "SOFT") {
+    jerkLimited_ = 1;
+  } else if (name == "BRISK") {
+    jerkLimited_ = 0;
+  } else if (name == "CR" && k.hasValue) {
+    words.radiusWord = k.value;
+    words.hasRadius = true;
+  } else if ((name == "ADIS" || name == "ADISPOS") && k.hasValue) {
+    roundingTolerance_ = k.value * unit_;
+    if (pathMode_ == PathMode::Rounding) tolerance_ = roundingTolerance_;
+  } else if (name == "T") {
+    ++stats_.toolChanges;  // T="BALL4": a tool called by name
+  } else if (name == "MSG") {
+    // operator messages
+  } else if (name == "CYCLE832" && k.call) {
+    cycle832(k.arguments);
+  } else if (name == "COMPCAD" || name == "COMPCURV" || name == "COMPOF" || name == "COMPON" || name == "FFWON" ||
+             name == "FFWOF" || name == "TRAFOOF" || name == "UPATH" || name == "SPATH" ||
+             name == "DYNNORM" || name == "DYNFINISH" || name == "DYNSEMIFIN" || name == "DYNROUGH") {
+    // compressor, feed-forward, dynamic-response groups: no effect on this model
+  } else {
+    unknown(name);
+  }
+}
+
+void Interpreter::cycle832(std::string_view arguments) {
+  const auto comma = arguments.find(',');
+  std::string_view first = arguments.substr(0, comma);
+  while (!first.empty() && (first.front() == ' ')) first.remove_prefix(1);
+  double value = 0.0;
+  if (first.empty()) {
+    pathMode_ = PathMode::Continuous;
+    jerkLimited_ = 0;
+    return;
+  }
+  const auto parsed =
+      fast_float::from_chars(first.data(), first.data() + first.size(), value, fast_float::chars_format::fixed);
+  if (parsed.ec != std::errc() || value < 0.0) return unknown("CYCLE832(" + std::string(first) + ")");
+  if (value == 0.0) {
+    pathMode_ = PathMode::Continuous;
+    jerkLimited_ = 0;
+    return;
+  }
+  roundingTolerance_ = value * unit_;
+  pathMode_ = PathMode::Rounding;
+  tolerance_ = roundingTolerance_;
+  jerkLimited_ = 1;
+}
+
+void Interpreter::arc(Block& block, const LineWords& words) {
+  const double* offset = words.offset;
+  const bool* hasOffset = words.hasOffset;
+  const double radiusWord = words.radiusWord;
+  const bool hasRadius = words.hasRadius;
+  static constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // G17 XY/Z, G18 ZX/Y, G19 YZ/X
+  const int* axes = kPlaneAxes[plane_ == 17 ? 0 : plane_ == 18 ? 1 : 2];
+  const int u = axes[0], v = axes[1], n = axes[2];
+  block.normal = Eigen::Vector3d::Unit(n);
+  const Eigen::Vector3d& s = block.start;
+  const Eigen::Vector3d& e = block.end;
+  Eigen::Vector3d centre = s;
+  if (hasRadius && !(hasOffset[u] || hasOffset[v])) {
+    const double r = std::abs(radiusWord) * unit_;
+    const Eigen::Vector2d a(s[u], s[v]), b(e[u], e[v]);
+    const Eigen::Vector2d chord = b - a;
+    const double d = chord.norm();
+    if (r <= 0.0 || d == 0.0)
+      throw ParseError(lineNumber_, "an arc by radius needs R > 0 and an end point away from the start");
+    if (d > 2.0 * r * (1.0 + 1e-9) + 1e-9)
+      throw ParseError(lineNumber_, "arc radius " + std::to_string(r) + " mm is less than half the chord (" +
+                                       std::to_string(d / 2) + " mm): no such arc");
+    const double h = std::sqrt(std::max(0.0, r * r - d * d / 4.0));
+    const Eigen::Vector2d left(-chord.y() / d, chord.x() / d);  // chord turned +90° about the normal
+    // Counter-clockwise short arc: centre on the left of the chord; clockwise or R < 0 flips it.
+    const bool clockwise = block.motion == Motion::ArcClockwise;
+    const double side = (clockwise ? -1.0 : 1.0) * (radiusWord < 0 ? -1.0 : 1.0);
+    const Eigen::Vector2d c = 0.5 * (a + b) + side * h * left;
+    centre[u] = c.x();
+    centre[v] = c.y();
+  } else {
+    if (!(hasOffset[u] || hasOffset[v]))
+      throw ParseError(lineNumber_, "arc without centre: give I/J/K (or R / CR=) for the active plane G" +
+                                       std::to_string(plane_));
+    for (int a : {u, v}) centre[a] = arcCentreAbsolute_ ? offset[a] * unit_ : s[a] + offset[a] * unit_;
+  }
+  centre[n] = s[n];
+  const Eigen::Vector3d rs = s - centre, re = Eigen::Vector3d(e[u] - centre[u], e[v] - centre[v], 0.0);
+  const double r0 = std::hypot(rs[u], rs[v]), r1 = re.head<2>().norm();
+  if (r0 <= 1e-9) throw ParseError(lineNumber_, "arc radius is zero: the centre is on the start point");
+  if (std::abs(r1 - r0) > options_.arcRadiusTolerance + 1e-3 * r0)
+    throw ParseError(lineNumber_, "arc end point is not on the circle: its radius is " + std::to_string(r1) +
+                                     " mm, the start's " + std::to_string(r0) + " mm");
+  double angle = std::atan2(rs[u] * re.y() - rs[v] * re.x(), rs[u] * re.x() + rs[v] * re.y());
+  const bool full = std::hypot(e[u] - s[u], e[v] - s[v]) < 1e-9;
+  if (block.motion == Motion::ArcCounterClockwise) {
+    if (angle <= 0.0 || full) angle += 2.0 * M_PI;
+  } else {
+    if (angle >= 0.0 || full) angle -= 2.0 * M_PI;
+  }
+  if (full) angle = block.motion == Motion::ArcCounterClockwise ? 2.0 * M_PI : -2.0 * M_PI;
+  block.center = centre;
+  block.radius = r0;
+  block.sweep = angle;
+}
+
+}  // namespace hsm::kinematics::detail

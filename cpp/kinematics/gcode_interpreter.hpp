@@ -1,0 +1,70 @@
+// The modal interpreter of the G-code reader (internal): the words of a line (gcode_lexer.hpp) applied to
+// the modal state of a FreeCAD/LinuxCNC or Siemens 840D controller, giving at most one motion block.
+#pragma once
+
+#include "kinematics/gcode_lexer.hpp"
+
+#include <Eigen/Core>
+
+#include <string_view>
+
+namespace hsm::kinematics::detail {
+
+// What one line says, before it is applied to the modal state.
+struct LineWords {
+  int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3
+  bool exactStopHere = false, dwell = false, g64 = false;
+  bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
+  double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
+  double radiusWord = 0.0, pWord = -1.0, fWord = 0.0;
+  bool hasRadius = false, hasFeed = false, hasP = false;
+
+  bool anyAxis() const { return hasAxis[0] || hasAxis[1] || hasAxis[2]; }
+  bool anyOffset() const { return hasOffset[0] || hasOffset[1] || hasOffset[2]; }
+};
+
+class Interpreter {
+public:
+  explicit Interpreter(const ReaderOptions& options) : options_(options), position_(options.startPosition) {}
+
+  // Applies one line (number `lineNumber`); true when it produced a motion block.
+  bool interpret(const Line& line, long lineNumber, Block& block);
+  ReaderStats& stats() { return stats_; }
+  const ReaderStats& stats() const { return stats_; }
+
+private:
+  // The line's words and keywords; false when the line is to be skipped (a Siemens frame instruction).
+  bool collect(const Line& line, LineWords& words);
+  // Feed, dwell, G64 and the motion mode of the line.
+  void applyModes(const LineWords& words);
+  // The motion block of the line, if it moves.
+  bool makeBlock(const LineWords& words, Block& block);
+
+  void unknown(std::string_view word);
+  void gWord(const Word& w, LineWords& words);
+  void mWord(const Word& w);
+  void keyword(const Keyword& k, LineWords& words);
+  // CYCLE832(tolerance, machining type, …): the 840D high-speed setting. A tolerance selects G642 rounding
+  // within it, SOFT and the compressor; no argument (or 0) deselects it (G64, BRISK).
+  void cycle832(std::string_view arguments);
+  void arc(Block& block, const LineWords& words);
+
+  ReaderOptions options_;
+  ReaderStats stats_;
+  long lineNumber_ = 0;
+
+  // Modal state
+  Eigen::Vector3d position_;
+  int motion_ = -1;  // 0, 1, 2, 3; −1 before the first motion word
+  int plane_ = 17;
+  bool absolute_ = true;
+  bool arcCentreAbsolute_ = false;
+  double unit_ = 1.0;  // mm per program unit
+  double feed_ = 0.0;  // mm/s
+  PathMode pathMode_ = PathMode::Continuous;
+  double tolerance_ = 0.0;
+  double roundingTolerance_ = 0.0;  // from CYCLE832 or ADIS; used by G641/G642
+  int jerkLimited_ = -1;
+};
+
+}  // namespace hsm::kinematics::detail

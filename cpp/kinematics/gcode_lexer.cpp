@@ -1,0 +1,175 @@
+#include "kinematics/gcode_lexer.hpp"
+
+#include "common/text.hpp"
+
+#include <fast_float/fast_float.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace hsm::kinematics::detail {
+
+namespace {
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+char toUpper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+}  // namespace
+
+bool LineSource::next(std::string_view& line) {
+  size_t searched = position_;
+  for (;;) {
+    const size_t newline = buffer_.find('\n', searched);
+    if (newline != std::string::npos && newline - position_ <= kMaxLineLength) {
+      line = trimmed(position_, newline);
+      position_ = newline + 1;
+      ++lines_;
+      return true;
+    }
+    if (buffer_.size() - position_ > kMaxLineLength)
+      throw ParseError(lines_ + 1, "the line is longer than " + std::to_string(kMaxLineLength) +
+                                       " characters: a G-code block is one line (is this a G-code file?)");
+    searched = buffer_.size() - position_;  // as an offset: refill() moves the unread part to the front
+    if (eof_) {
+      if (position_ >= buffer_.size()) return false;
+      line = trimmed(position_, buffer_.size());
+      position_ = buffer_.size();
+      ++lines_;
+      return true;
+    }
+    refill();
+  }
+}
+
+std::string_view LineSource::trimmed(size_t from, size_t to) const {
+  if (to > from && buffer_[to - 1] == '\r') --to;
+  return std::string_view(buffer_.data() + from, to - from);
+}
+
+void LineSource::refill() {
+  buffer_.erase(0, position_);
+  position_ = 0;
+  const size_t old = buffer_.size();
+  buffer_.resize(old + kChunk);
+  input_.read(buffer_.data() + old, kChunk);
+  const auto got = static_cast<size_t>(input_.gcount());
+  buffer_.resize(old + got);
+  if (got == 0 || !input_) eof_ = true;
+}
+
+void Line::parse(std::string_view raw, long number) {
+  wordCount = 0;
+  keywords.clear();
+  upper.assign(raw);
+  for (char& c : upper) c = toUpper(c);
+  const char* p = upper.data();
+  const char* end = p + upper.size();
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if (p < end && *p == '/') ++p;  // block delete: the block runs (the switch is off)
+  while (p < end) {
+    const char c = *p;
+    if (c == ' ' || c == '\t') {
+      ++p;
+    } else if (c == ';') {
+      break;
+    } else if (c == '(') {
+      const char* close = static_cast<const char*>(std::memchr(p, ')', end - p));
+      if (!close) throw ParseError(number, "comment '(' is not closed: add ')'");
+      p = close + 1;
+    } else if (c == '%' && wordCount == 0 && keywords.empty()) {
+      break;  // program start/end marker
+    } else if (isLetter(c)) {
+      const char after = p + 1 < end ? p[1] : ' ';
+      p = isLetter(after) || after == '_' || after == '=' ? keyword(p, end, number) : word(p, end, number);
+    } else {
+      throw ParseError(number, std::string("unexpected character '") + c + "' (byte " +
+                                   std::to_string(static_cast<unsigned char>(c)) +
+                                   "): G-code words are a letter and a number; is this a G-code file?");
+    }
+  }
+}
+
+const char* Line::numberAt(const char* p, const char* end, double& value, std::string_view what, long number) {
+  const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
+  const char* token = p;  // what is quoted: up to the next blank, at most 24 characters
+  while (token < end && token - p < 24 && *token != ' ' && *token != '\t') ++token;
+  if (!(digits < end && (isDigit(*digits) || (*digits == '.' && digits + 1 < end && isDigit(digits[1])))))
+    throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+                                 "' is not a letter followed by a number (digits, an optional sign and point)");
+  const char* from = *p == '+' ? p + 1 : p;
+  const auto parsed = fast_float::from_chars(from, end, value, fast_float::chars_format::fixed);
+  const char* stop = parsed.ptr;
+  if (parsed.ec != std::errc() || (stop < end && (*stop == '.' || isDigit(*stop))))
+    throw ParseError(number, "'" + std::string(what) + std::string(p, token) + "' is not a number");
+  if (stop < end && (*stop == 'e' || *stop == 'E') && stop + 1 < end &&
+      (isDigit(stop[1]) || ((stop[1] == '+' || stop[1] == '-') && stop + 2 < end && isDigit(stop[2]))))
+    throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+                                 "': G-code numbers have no exponent; write the number in full");
+  if (!(std::abs(value) <= kMaxWordValue))
+    throw ParseError(number, "'" + std::string(what) + std::string(p, std::min<size_t>(stop - p, 24)) +
+                                 "' is out of range: words are at most " + std::to_string(long(kMaxWordValue)) +
+                                 " in size");
+  return stop;
+}
+
+const char* Line::word(const char* p, const char* end, long number) {
+  const char letter = *p;
+  const char* start = p++;
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  double value = 0.0;
+  const char* numberEnd = numberAt(p, end, value, std::string_view(start, p - start), number);
+  p = numberEnd;
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if (p < end && *p == '=') {
+    // R1=5, P3=… : a parameter assignment (Siemens R parameters): not a plain word.
+    Keyword k;
+    k.name = std::string_view(start, numberEnd - start);
+    k.hasValue = true;
+    p = assignment(p + 1, end, k, number);
+    keywords.push_back(k);
+    return p;
+  }
+  if (wordCount == static_cast<int>(words.size())) throw ParseError(number, "more than 64 words on one line");
+  words[wordCount++] = Word{letter, value, std::string_view(start, numberEnd - start)};
+  return p;
+}
+
+const char* Line::keyword(const char* p, const char* end, long number) {
+  const char* start = p;
+  while (p < end && (isLetter(*p) || isDigit(*p) || *p == '_')) ++p;
+  Keyword k;
+  k.name = std::string_view(start, p - start);
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if (p < end && *p == '=') {
+    k.hasValue = true;
+    p = assignment(p + 1, end, k, number);
+  } else if (p < end && *p == '(') {
+    int depth = 0;
+    const char* open = p;
+    for (; p < end; ++p) {
+      if (*p == '(') ++depth;
+      if (*p == ')' && --depth == 0) break;
+    }
+    if (p == end) throw ParseError(number, "'" + std::string(k.name) + "(' is not closed: add ')'");
+    k.call = true;
+    k.arguments = std::string_view(open + 1, p - open - 1);
+    ++p;
+  }
+  keywords.push_back(k);
+  return p;
+}
+
+const char* Line::assignment(const char* p, const char* end, Keyword& k, long number) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
+  const char* stop = p;
+  if (digits < end && (isDigit(*digits) || *digits == '.')) {
+    stop = numberAt(p, end, k.value, std::string(k.name) + "=", number);
+    if (stop == end || *stop == ' ' || *stop == '\t' || *stop == ';') return stop;
+  }
+  // An expression or a variable (R1=R2*3): not evaluated; keep the name so it counts as unknown.
+  k.hasValue = false;
+  while (p < end && *p != ' ' && *p != '\t' && *p != ';') ++p;
+  return p;
+}
+
+}  // namespace hsm::kinematics::detail

@@ -1,0 +1,77 @@
+// The lexical level of the G-code reader (internal): lines from a stream read in large chunks, and the
+// words and keywords of one line. The modal interpreter (gcode_interpreter.hpp) works on what this gives.
+#pragma once
+
+#include "kinematics/gcode.hpp"
+
+#include <array>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hsm::kinematics::detail {
+
+// Lines from a stream, read in large chunks.
+class LineSource {
+public:
+  explicit LineSource(std::istream& input) : input_(input) { buffer_.reserve(kChunk * 2); }
+
+  // The next line without its end-of-line characters; false at the end. A line longer than
+  // kMaxLineLength is refused as soon as that many characters have come without a line end.
+  bool next(std::string_view& line);
+
+private:
+  static constexpr size_t kChunk = 1 << 20;
+
+  std::string_view trimmed(size_t from, size_t to) const;
+
+  void refill();
+
+  std::istream& input_;
+  std::string buffer_;
+  size_t position_ = 0;
+  long lines_ = 0;
+  bool eof_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------------------
+// Words of one line
+
+struct Word {
+  char letter;
+  double value;
+  std::string_view text;  // as written, for messages
+};
+
+struct Keyword {
+  std::string_view name;       // upper-cased copy lives in Line::upper
+  std::string_view arguments;  // inside ( ), for calls
+  bool hasValue = false;       // NAME=value
+  double value = 0.0;
+  bool call = false;
+};
+
+class Line {
+public:
+  std::array<Word, 64> words{};
+  int wordCount = 0;
+  std::vector<Keyword> keywords;
+  std::string upper;  // upper-cased copy of the line: keywords point into it
+
+  // Splits `raw` into words and keywords; throws ParseError on malformed text.
+  void parse(std::string_view raw, long number);
+
+private:
+  // A G-code number at p: an optional sign, digits with at most one point, no exponent, nan or inf, at
+  // most kMaxWordValue. Returns the end of the number; `what` names the word in messages.
+  const char* numberAt(const char* p, const char* end, double& value, std::string_view what, long number);
+
+  const char* word(const char* p, const char* end, long number);
+
+  const char* keyword(const char* p, const char* end, long number);
+
+  const char* assignment(const char* p, const char* end, Keyword& k, long number);
+};
+
+}  // namespace hsm::kinematics::detail
