@@ -13,8 +13,8 @@ import time
 import numpy as np
 
 import hsmplanner
-from hsmplanner import plots
 from hsmplanner.app.master_feature import make_master_bottom_feature
+from hsmplanner.plots.curve_nets import save_net_grid
 from hsmplanner.scripting import output_dir, run_script
 
 TABLE_1 = [("b1_to_b2", 0.25, 5.0), ("b1_to_b2", 0.75, 5.0), ("b2_to_b1", 0.25, 5.0), ("b2_to_b1", 0.75, 5.0)]
@@ -29,7 +29,7 @@ def along_direction(points, direction):
 
 def panel(net, title):
     direction = np.asarray(net.direction)
-    curves = [(along_direction(np.asarray(c.sample(150)), direction), c.role) for c in net.curves]
+    curves = [(along_direction(np.asarray(c.sample(150)), direction), c.role.name) for c in net.curves]
     return curves, net.elementary_areas(), title
 
 
@@ -66,12 +66,12 @@ def main(argv):
         writer = csv.DictWriter(stream, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
-    plots.save_net_grid(table_panels[1], os.path.join(out, "curve_nets_table1.png"),
-                        "Table 1: nets from one boundary to the other (P = 5 mm, minimum gap 2 mm)", columns=2)
-    plots.save_net_grid(table_panels[2], os.path.join(out, "curve_nets_table2.png"),
-                        "Table 2: nets with the median (P = 5 mm)", columns=3)
+    save_net_grid(table_panels[1], os.path.join(out, "curve_nets_table1.png"),
+                  "Table 1: nets from one boundary to the other (P = 5 mm, minimum gap 2 mm)", columns=2)
+    save_net_grid(table_panels[2], os.path.join(out, "curve_nets_table2.png"),
+                  "Table 2: nets with the median (P = 5 mm)", columns=3)
     four = panel(net, "4-step method: median, then K 0.75 from the smoother guide of each half")
-    plots.save_net_grid([four], os.path.join(out, "curve_nets_4step.png"), "Guidance curves (paper §4.3)", columns=1)
+    save_net_grid([four], os.path.join(out, "curve_nets_4step.png"), "Guidance curves (paper §4.3)", columns=1)
     for row in rows:
         print("%-22s K %-9s P %-7s %2s curves, areas %s" % (row["building_direction"], row["K"], row["P_mm"],
                                                              row["intermediate_curves"], row["composed_areas"]))

@@ -15,10 +15,11 @@ import os
 
 import FreeCAD
 
-from hsmplanner import evaluation, feedsim, plots
+from hsmplanner import evaluation, feedsim
 from hsmplanner.app import finishing, finishing_ops, guide_curve_net_object, master_feature_object
 from hsmplanner.app.compat import create_job
 from hsmplanner.app.posts import siemens840d_post
+from hsmplanner.plots.feedrate import save_strategy_times
 from hsmplanner.scripting import output_dir, run_script
 
 MACHINE = "mikron-ucp710-840d"
@@ -87,7 +88,8 @@ def main(argv):
                                              figures["machining_time_s"], figures["naive_time_s"],
                                              figures["tool_entries"], 100 * evaluation.short_share(op.PassLengths)))
     write_tables(out, rows)
-    plots.save_strategy_times(times, FEEDS_MM_MIN, os.path.join(out, "study_times.png"))
+    save_strategy_times(times, FEEDS_MM_MIN, os.path.join(out, "study_times.png"),
+                        "Finishing the master bottom feature on the Mikron UCP 710 / 840D model")
     document.saveAs(os.path.join(out, "study.FCStd"))
     FreeCAD.closeDocument(document.Name)
 

@@ -17,9 +17,9 @@ import os
 import numpy as np
 
 import hsmplanner
-from hsmplanner import plots
 from hsmplanner.app import surfaces
 from hsmplanner.direction import directions_over_feeds, fastest, simulated_directions
+from hsmplanner.plots.direction import save_direction_report, save_direction_validation, save_directions_over_feeds
 from hsmplanner.scripting import output_dir, run_script
 
 MACHINE = "mikron-ucp710-840d"
@@ -32,7 +32,7 @@ def case1(out):
     feeds = np.arange(2000.0, 30001.0, 1000.0)
     rows = directions_over_feeds(face, feeds, grid=21, **CASE1)
     switching = math.sqrt((10.0 + 5.0) * 3000.0) * 60.0
-    plots.save_directions_over_feeds(
+    save_directions_over_feeds(
         rows, os.path.join(out, "direction_case1_feeds.png"),
         "Case 1: cylinder R10 about Y, Ø10 ball, Sz 0.01 mm, a_max 3 m/s², Z 4 at 18,000 rpm\n"
         "the optimum leaves 0° above √((R+Ro)·a) = %.0f mm/min" % switching)
@@ -54,13 +54,13 @@ def case2(out):
     for row in rows:
         print("  planes at %3d°: %4d passes, %6.1f s simulated (%6.1f s by length/feed)"
               % (row["angle_deg"], row["passes"], row["simulated_s"], row["length_over_feed_s"]))
-    plots.save_direction_report(result, os.path.join(out, "direction_case2.png"),
-                                "Case 2: valleys 100 × 100 × 15 mm at 45°, Ø10 ball, fz 0.2 mm, 6000 mm/min")
+    save_direction_report(result, os.path.join(out, "direction_case2.png"),
+                          "Case 2: valleys 100 × 100 × 15 mm at 45°, Ø10 ball, fz 0.2 mm, 6000 mm/min")
     with open(os.path.join(out, "direction_case2_validation.csv"), "w", newline="") as stream:
         writer = csv.DictWriter(stream, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows({k: round(v, 1) if isinstance(v, float) else v for k, v in row.items()} for row in rows)
-    plots.save_direction_validation(
+    save_direction_validation(
         rows, [("directional beams", result.angle_deg), ("least predicted time", result.fastest_angle_deg)],
         os.path.join(out, "direction_case2_validation.png"),
         "Case 2: parallel planes every 10°, simulated on the Mikron UCP 710 / 840D")

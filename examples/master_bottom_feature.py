@@ -16,8 +16,9 @@ import numpy as np
 import Part
 
 import hsmplanner
-from hsmplanner import plan_analysis, plots
+from hsmplanner import plan_analysis
 from hsmplanner.app import master_feature_object
+from hsmplanner.plots.curve_nets import plot_part_with_curves
 from hsmplanner.scripting import output_dir, run_script
 
 
@@ -74,11 +75,11 @@ def main(argv):
         meshes.append((np.array([tuple(v) for v in vertices]), np.array(triangles), colour))
     marks = [(b1["min_plan_radius_at_mm"][0], b1["min_plan_radius_at_mm"][1], "R %.1f" % b1["min_plan_radius_mm"])]
     marks += [(x, y, "inflection") for x, y, _ in b1["inflections_at_mm"]]
-    plots.plot_part_with_curves(
+    plot_part_with_curves(
         meshes, [(b1_points, "#cc0000", "boundary 1 (%s)" % obj.Boundary1),
                  (b2_points, "#3465a4", "boundary 2 (%s)" % obj.Boundary2)],
         base + ".png", "Master bottom feature: %s between two flanks, open at x = 0 and x = %g mm"
-        % (obj.BottomFace, obj.Length.Value), plan_marks=marks)
+        % (obj.BottomFace, obj.Length.Value), plan_marks=marks, plan_title="plan view of the boundaries")
     print("master bottom feature written to %s: bottom %s, boundaries %s and %s, plan radius of boundary 1 "
           "down to %.1f mm" % (out, obj.BottomFace, obj.Boundary1, obj.Boundary2, b1["min_plan_radius_mm"]))
     FreeCAD.closeDocument(document.Name)

@@ -20,23 +20,9 @@ namespace {
 using curvenet::NetCurve;
 using Curve = Handle(Geom_BSplineCurve);
 
-std::string roleName(curvenet::CurveRole role) {
-  switch (role) {
-    case curvenet::CurveRole::Boundary: return "boundary";
-    case curvenet::CurveRole::Median: return "median";
-    case curvenet::CurveRole::Intermediate: return "intermediate";
-  }
-  return "?";
-}
-
-curvenet::NetSettings makeSettings(double step, std::optional<Eigen::Vector3d> direction,
-                                   std::optional<std::string> faceBrep, double fitTolerance, double minGap) {
-  curvenet::NetSettings settings;
-  settings.step = step;
-  settings.direction = direction;
+// The settings as given, with the bottom face read from BREP text (a face does not cross to Python).
+curvenet::NetSettings withFace(curvenet::NetSettings settings, const std::optional<std::string>& faceBrep) {
   if (faceBrep) settings.face = geometry::singleFace(geometry::readBrep(*faceBrep));
-  settings.fitTolerance = fitTolerance;
-  settings.minGap = minGap;
   return settings;
 }
 
@@ -69,9 +55,36 @@ void bindCurvenet(py::module_& m) {
   m.def("curve_from_points", [](const geometry::PointArray& points) { return BSplineCurve{geometry::interpolatePoints(points)}; },
         py::arg("points"), "Cubic B-spline through an (N,3) array of points along a curve");
 
+  py::enum_<curvenet::CurveRole>(m, "CurveRole")
+      .value("boundary", curvenet::CurveRole::Boundary)
+      .value("median", curvenet::CurveRole::Median)
+      .value("intermediate", curvenet::CurveRole::Intermediate);
+  py::enum_<curvenet::NetMode>(m, "NetMode", "How a net grows between the boundaries")
+      .value("b1_to_b2", curvenet::NetMode::B1ToB2)
+      .value("b2_to_b1", curvenet::NetMode::B2ToB1)
+      .value("median", curvenet::NetMode::Median)
+      .value("median_to_boundaries", curvenet::NetMode::MedianToBoundaries)
+      .value("boundaries_to_median", curvenet::NetMode::BoundariesToMedian);
+  py::class_<curvenet::NetSettings>(m, "NetSettings", "Planes and fit of a net (mm); the bottom face is given apart")
+      .def(py::init<>())
+      .def_readwrite("step", &curvenet::NetSettings::step, "P, mm: largest distance between two planes")
+      .def_readwrite("direction", &curvenet::NetSettings::direction,
+                     "machining direction (None: the boundaries' mean chord, snapped to an axis within 10°)")
+      .def_readwrite("tool_axis", &curvenet::NetSettings::toolAxis)
+      .def_readwrite("fit_tolerance", &curvenet::NetSettings::fitTolerance, "mm")
+      .def_readwrite("min_gap", &curvenet::NetSettings::minGap, "mm: stop rule of the iterative nets")
+      .def_readwrite("pinch_fraction", &curvenet::NetSettings::pinchFraction)
+      .def_readwrite("max_curves_per_net", &curvenet::NetSettings::maxCurvesPerNet);
+  py::class_<curvenet::GuidanceSettings>(m, "GuidanceSettings", "The 4-step method: net.step is the initial step")
+      .def(py::init<>())
+      .def_readwrite("net", &curvenet::GuidanceSettings::net)
+      .def_readwrite("k_median", &curvenet::GuidanceSettings::kMedian)
+      .def_readwrite("k", &curvenet::GuidanceSettings::k)
+      .def_readwrite("min_step", &curvenet::GuidanceSettings::minStep, "mm");
+
   py::class_<NetCurve>(m, "NetCurve", "A curve of a net: a boundary, the median or an intermediate curve")
       .def_readonly("label", &NetCurve::label)
-      .def_property_readonly("role", [](const NetCurve& c) { return roleName(c.role); })
+      .def_readonly("role", &NetCurve::role)
       .def_property_readonly("curve", [](const NetCurve& c) { return BSplineCurve{c.curve}; })
       .def_readonly("points", &NetCurve::points, "construction points, one per plane (empty for boundaries)")
       .def_readonly("k", &NetCurve::k)
@@ -125,44 +138,33 @@ void bindCurvenet(py::module_& m) {
 
   m.def(
       "intermediate_curve",
-      [](const BSplineCurve& a, const BSplineCurve& b, double k, double step, std::optional<Eigen::Vector3d> direction,
-         std::optional<std::string> face, double fitTolerance) {
-        const auto settings = makeSettings(step, direction, face, fitTolerance, 0.0);
-        return guarded("intermediate curve", [&] { return curvenet::intermediateCurve(a.curve, b.curve, k, settings); });
+      [](const BSplineCurve& a, const BSplineCurve& b, double k, const curvenet::NetSettings& settings,
+         const std::optional<std::string>& face) {
+        const auto s = withFace(settings, face);
+        return guarded("intermediate curve", [&] { return curvenet::intermediateCurve(a.curve, b.curve, k, s); });
       },
-      py::arg("a"), py::arg("b"), py::arg("k"), py::arg("step"), py::arg("direction") = py::none(),
-      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01);
+      py::arg("a"), py::arg("b"), py::arg("k"), py::arg("settings"), py::arg("face_brep") = py::none());
   m.def(
       "curve_net",
-      [](const BSplineCurve& b1, const BSplineCurve& b2, double k, double step, const std::string& mode,
-         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap,
-         const py::object& progress) {
-        auto settings = makeSettings(step, direction, face, fitTolerance, minGap);
-        settings.progress = progressCallback(progress);
-        const auto netMode = curvenet::parseNetMode(mode);
+      [](const BSplineCurve& b1, const BSplineCurve& b2, double k, curvenet::NetMode mode,
+         const curvenet::NetSettings& settings, const std::optional<std::string>& face, const py::object& progress) {
+        auto s = withFace(settings, face);
+        s.progress = progressCallback(progress);
         py::gil_scoped_release release;
-        return guarded("curve net", [&] { return curvenet::curveNet({b1.curve, b2.curve}, k, netMode, settings); });
+        return guarded("curve net", [&] { return curvenet::curveNet({b1.curve, b2.curve}, k, mode, s); });
       },
-      py::arg("b1"), py::arg("b2"), py::arg("k"), py::arg("step"), py::arg("mode"), py::arg("direction") = py::none(),
-      py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01, py::arg("min_gap") = 2.0,
-      py::arg("progress") = py::none());
+      py::arg("b1"), py::arg("b2"), py::arg("k"), py::arg("mode"), py::arg("settings"),
+      py::arg("face_brep") = py::none(), py::arg("progress") = py::none());
   m.def(
       "guidance_curves",
-      [](const BSplineCurve& b1, const BSplineCurve& b2, double step, double kMedian, double k,
-         std::optional<Eigen::Vector3d> direction, std::optional<std::string> face, double fitTolerance, double minGap,
-         double minStep) {
-        curvenet::GuidanceSettings settings;
-        settings.net = makeSettings(step, direction, face, fitTolerance, minGap);
-        settings.kMedian = kMedian;
-        settings.k = k;
-        settings.minStep = minStep;
+      [](const BSplineCurve& b1, const BSplineCurve& b2, curvenet::GuidanceSettings settings,
+         const std::optional<std::string>& face) {
+        settings.net = withFace(settings.net, face);
         const auto result =
             guarded("4-step method", [&] { return curvenet::guidanceCurves({b1.curve, b2.curve}, settings); });
         return py::make_tuple(result.net, result.report);
       },
-      py::arg("b1"), py::arg("b2"), py::arg("step") = 5.0, py::arg("k_median") = 0.5, py::arg("k") = 0.75,
-      py::arg("direction") = py::none(), py::arg("face_brep") = py::none(), py::arg("fit_tolerance") = 0.01,
-      py::arg("min_gap") = 2.0, py::arg("min_step") = 0.5);
+      py::arg("b1"), py::arg("b2"), py::arg("settings"), py::arg("face_brep") = py::none());
 }
 
 }  // namespace hsm::bindings

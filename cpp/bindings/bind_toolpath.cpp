@@ -15,29 +15,6 @@ namespace hsm::bindings {
 namespace {
 using namespace toolpath;
 
-FinishingSettings settingsFrom(const py::dict& d) {
-  FinishingSettings s;
-  for (const auto& [key, value] : d) {
-    const std::string k = py::str(key);
-    if (k == "tool_radius") s.toolRadius = value.cast<double>();
-    else if (k == "cusp_height") s.cuspHeight = value.cast<double>();
-    else if (k == "tolerance") s.tolerance = value.cast<double>();
-    else if (k == "zigzag") s.zigzag = value.cast<bool>();
-    else if (k == "sweep") {
-      const std::string sweep = value.cast<std::string>();
-      if (sweep != "upward" && sweep != "downward")
-        throw InputError("sweep '" + sweep + "' is unknown: use upward or downward");
-      s.sweep = sweep == "upward" ? Sweep::Upward : Sweep::Downward;
-    } else if (k == "clearance") s.clearance = value.cast<double>();
-    else if (k == "extension") s.extension = value.cast<double>();
-    else if (k == "mesh_deflection") s.meshDeflection = value.cast<double>();
-    else if (k == "sampling") s.sampling = value.cast<double>();
-    else if (k == "threads") s.threads = value.cast<int>();
-    else throw InputError("unknown finishing setting '" + k + "'");
-  }
-  return s;
-}
-
 py::tuple output(const Toolpath& path) {
   py::array_t<double> moves({static_cast<py::ssize_t>(path.moves.size()), py::ssize_t(4)});
   auto m = moves.mutable_unchecked<2>();
@@ -57,10 +34,24 @@ py::tuple output(const Toolpath& path) {
 }  // namespace
 
 void bindToolpath(py::module_& m) {
+  py::enum_<Sweep>(m, "Sweep", "Passes climb or descend the face")
+      .value("upward", Sweep::Upward)
+      .value("downward", Sweep::Downward);
+  py::class_<FinishingSettings>(m, "FinishingSettings", "Ball-end finishing (mm); progress is given apart")
+      .def(py::init<>())
+      .def_readwrite("tool_radius", &FinishingSettings::toolRadius, "ball radius, mm")
+      .def_readwrite("cusp_height", &FinishingSettings::cuspHeight, "mm")
+      .def_readwrite("tolerance", &FinishingSettings::tolerance, "mm, chordal, for the G1 points")
+      .def_readwrite("zigzag", &FinishingSettings::zigzag)
+      .def_readwrite("sweep", &FinishingSettings::sweep)
+      .def_readwrite("clearance", &FinishingSettings::clearance, "mm above the part's top for rapids")
+      .def_readwrite("extension", &FinishingSettings::extension, "mm past open boundaries; < 0: the tool radius")
+      .def_readwrite("mesh_deflection", &FinishingSettings::meshDeflection, "mm")
+      .def_readwrite("sampling", &FinishingSettings::sampling, "mm between cutter positions before refinement")
+      .def_readwrite("threads", &FinishingSettings::threads, "0: all cores");
   m.def(
       "parallel_finishing",
-      [](const std::string& part, int bottomFace, double angle, const py::dict& settings, const py::object& progress) {
-        FinishingSettings s = settingsFrom(settings);
+      [](const std::string& part, int bottomFace, double angle, FinishingSettings s, const py::object& progress) {
         s.progress = progressCallback(progress);
         const TopoDS_Shape shape = geometry::readBrep(part);
         Toolpath path;
@@ -76,8 +67,7 @@ void bindToolpath(py::module_& m) {
   m.def(
       "guide_finishing",
       [](const std::string& part, int bottomFace, const std::vector<std::pair<BSplineCurve, BSplineCurve>>& areas,
-         const Eigen::Vector3d& direction, const py::dict& settings, const py::object& progress) {
-        FinishingSettings s = settingsFrom(settings);
+         const Eigen::Vector3d& direction, FinishingSettings s, const py::object& progress) {
         s.progress = progressCallback(progress);
         const TopoDS_Shape shape = geometry::readBrep(part);
         std::vector<GuideArea> guides;

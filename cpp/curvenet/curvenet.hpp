@@ -139,8 +139,8 @@ struct GuidanceResult {
 
 GuidanceResult guidanceCurves(const Boundaries& boundaries, const GuidanceSettings& settings);
 
-// Parses "b1_to_b2", "b2_to_b1", "median", "median_to_boundaries", "boundaries_to_median".
-NetMode parseNetMode(const std::string& name);
+// "b1_to_b2", "b2_to_b1", "median", "median_to_boundaries", "boundaries_to_median" (the names Python's
+// hsmplanner.NetMode gives them), for messages.
 std::string netModeName(NetMode mode);
 
 }  // namespace hsm::curvenet

@@ -116,16 +116,6 @@ void append(std::vector<NetCurve>& to, It first, It last) {
 
 }  // namespace
 
-NetMode parseNetMode(const std::string& name) {
-  if (name == "b1_to_b2") return NetMode::B1ToB2;
-  if (name == "b2_to_b1") return NetMode::B2ToB1;
-  if (name == "median") return NetMode::Median;
-  if (name == "median_to_boundaries") return NetMode::MedianToBoundaries;
-  if (name == "boundaries_to_median") return NetMode::BoundariesToMedian;
-  throw InputError("net mode '" + name +
-                   "' is unknown: use b1_to_b2, b2_to_b1, median, median_to_boundaries or boundaries_to_median");
-}
-
 std::string netModeName(NetMode mode) {
   switch (mode) {
     case NetMode::B1ToB2: return "b1_to_b2";

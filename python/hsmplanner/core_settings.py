@@ -17,3 +17,13 @@ def core_settings(kind, **values):
 def default(kind, name):
     """The core's default of one setting."""
     return getattr(kind(), name)
+
+
+def enum_value(kind, value, what):
+    """A core enum value from itself or its name ('b1_to_b2'); ValueError names the input and the choices."""
+    if isinstance(value, kind):
+        return value
+    try:
+        return kind.__members__[str(value)]
+    except KeyError:
+        raise ValueError("%s %r is unknown: use one of %s" % (what, value, ", ".join(kind.__members__))) from None

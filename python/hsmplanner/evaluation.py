@@ -33,26 +33,26 @@ def evaluate(result, short_sequence_mm=SHORT_SEQUENCE_MM):
     blocks = result.blocks
     if len(blocks["line"]) == 0:
         raise ValueError("the simulation holds no blocks: simulate with blocks=True to evaluate it")
-    summary = feedsim.summary_dict(result.summary)
+    summary = result.summary
     sequences = machining_sequences(blocks)
     short = int(np.sum(sequences < short_sequence_mm))
     return {
-        "machining_time_s": summary["total_time_s"],
-        "cutting_time_s": summary["cutting_time_s"],
-        "naive_time_s": summary["naive_time_s"],
-        "time_over_naive": summary["time_over_naive"],
-        "path_length_mm": summary["cutting_length_mm"],
-        "blocks": summary["block_count"],
-        "cutting_blocks": summary["cutting_blocks"],
+        "machining_time_s": summary.total_time,
+        "cutting_time_s": summary.cutting_time,
+        "naive_time_s": summary.naive_time,
+        "time_over_naive": summary.time_over_naive,
+        "path_length_mm": summary.cutting_length,
+        "blocks": summary.block_count,
+        "cutting_blocks": summary.cutting_blocks,
         "tool_entries": int(len(sequences)),
         "tool_exits": int(len(sequences)),
         "short_sequences": short,
         "short_sequence_share": short / len(sequences) if len(sequences) else 0.0,
         "short_sequence_threshold_mm": short_sequence_mm,
-        "feed_classes_time": summary["feed_classes"]["share_of_time"],
-        "feed_classes_blocks": summary["feed_classes"]["share_of_blocks"],
-        "block_length_classes": summary["block_length_classes"]["cutting_blocks"],
-        "block_length_edges_mm": summary["block_length_classes"]["edges_mm"],
+        "feed_classes_time": list(summary.feed_classes_time),
+        "feed_classes_blocks": list(summary.feed_classes_blocks),
+        "block_length_classes": list(summary.length_classes),
+        "block_length_edges_mm": list(feedsim.LENGTH_CLASS_EDGES_MM),
     }
 
 

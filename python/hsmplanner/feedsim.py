@@ -17,6 +17,7 @@ from .resources import RESOURCES_DIR
 MACHINES_DIR = os.path.join(RESOURCES_DIR, "machines")
 DEFAULT_MACHINE = _core.DEFAULT_MACHINE  # the guidance-curve paper's Mikron UCP 710 / 840D
 FEED_CLASS_LABELS = ("<0.3", "0.3-0.5", "0.5-0.7", "0.7-0.9", ">=0.9")
+LENGTH_CLASS_EDGES_MM = tuple(_core.LENGTH_CLASS_EDGES_MM)  # block-length classes: < 0.1, 0.1-0.25, … ≥ 10
 MOTION_NAMES = ("G0", "G1", "G2", "G3")  # result.blocks["motion"] indexes this
 
 
@@ -98,11 +99,6 @@ def simulate_moves(moves, feed_mm_min, machine=DEFAULT_MACHINE, blocks=False, tr
                                 _trace_period(trace_period))
 
 
-def summary_dict(summary, program=""):
-    """The summary as the JSON report's dict (total_time_s, cutting_time_s, …, feed_classes)."""
-    return json.loads(summary.to_json(program))
-
-
 def write_blocks_csv(result, path):
     """One row per block, feeds in mm/min (needs simulate(..., blocks=True))."""
     if len(result.blocks["line"]) == 0:
@@ -115,15 +111,14 @@ def write_blocks_csv(result, path):
 def write_report(result, folder, stem="feedrate", program=""):
     """JSON summary, per-block CSV, histogram and feed-map PNGs of a result kept with blocks=True.
     Returns the paths written."""
-    from . import plots
+    from .plots.feedrate import save_feed_histograms, save_feed_map
 
     os.makedirs(folder, exist_ok=True)
     base = os.path.join(folder, stem)
-    summary = summary_dict(result.summary, program)
     with open(base + ".json", "w") as stream:
-        json.dump(summary, stream, indent=2)
+        stream.write(result.summary.to_json(program))
     paths = [base + ".json", write_blocks_csv(result, base + "_blocks.csv"),
-             plots.save_feed_histograms(summary, base + "_histograms.png"),
-             plots.save_feed_map(result.blocks, base + "_map.png",
-                                 "%s on %s: feed-rate map" % (program or stem, summary["machine"]))]
+             save_feed_histograms(result.summary, base + "_histograms.png"),
+             save_feed_map(result.blocks, base + "_map.png",
+                           "%s on %s: feed-rate map" % (program or stem, result.summary.machine))]
     return paths

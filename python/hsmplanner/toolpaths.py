@@ -12,10 +12,11 @@ points within the tolerance, upward or downward sweeping, zigzag or one-way.
 import numpy as np
 
 from . import _core
+from .core_settings import core_settings, enum_value
 from .curvenet import as_curve
 from .geometry import as_brep
 
-SWEEPS = ("upward", "downward")
+SWEEPS = tuple(_core.Sweep.__members__)  # upward, downward
 
 
 def face_number(face):
@@ -27,28 +28,34 @@ def face_number(face):
     return int(number)
 
 
-def _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance, threads, extension):
-    if sweep not in SWEEPS:
-        raise ValueError("sweep %r is unknown: use 'upward' or 'downward'" % (sweep,))
-    if not tool_diameter > 0:
+def finishing_settings(tool_diameter=None, cusp_height=None, tolerance=None, sweep=None, zigzag=None, clearance=None,
+                       threads=None, extension=None):
+    """The core's FinishingSettings with what is given (None keeps the core's default:
+    help(hsmplanner._core.FinishingSettings)); sweep is a Sweep or its name."""
+    if tool_diameter is not None and not tool_diameter > 0:
         raise ValueError("tool diameter %r mm must be positive" % (tool_diameter,))
-    settings = dict(tool_radius=0.5 * float(tool_diameter), cusp_height=float(cusp_height),
-                    tolerance=float(tolerance), sweep=sweep, zigzag=bool(zigzag), clearance=float(clearance),
-                    threads=int(threads))
-    if extension is not None:
-        settings["extension"] = float(extension)
-    return settings
+    return core_settings(_core.FinishingSettings,
+                         tool_radius=None if tool_diameter is None else 0.5 * float(tool_diameter),
+                         cusp_height=None if cusp_height is None else float(cusp_height),
+                         tolerance=None if tolerance is None else float(tolerance),
+                         sweep=None if sweep is None else enum_value(_core.Sweep, sweep, "sweep"),
+                         zigzag=None if zigzag is None else bool(zigzag),
+                         clearance=None if clearance is None else float(clearance),
+                         threads=None if threads is None else int(threads),
+                         extension=None if extension is None else float(extension))
 
 
-def parallel_finishing(part, bottom_face, angle_deg=0.0, tool_diameter=4.0, cusp_height=0.01, tolerance=0.01,
-                       sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None, progress=None):
-    """Planes containing the tool axis at angle_deg from X, spaced for the cusp height.
+def parallel_finishing(part, bottom_face, angle_deg=0.0, tool_diameter=None, cusp_height=None, tolerance=None,
+                       sweep=None, zigzag=None, clearance=None, threads=None, extension=None, progress=None):
+    """Planes containing the tool axis at angle_deg from X, spaced for the cusp height. Settings left out take
+    the core's defaults (help(hsmplanner._core.FinishingSettings): Ø4 ball, cusp and tolerance 0.01 mm,
+    upward zigzag).
 
     progress: a callable progress(done) called with the share done (0..1); returning False cancels the
     computation (hsmplanner.Cancelled is raised)."""
     return _core.parallel_finishing(as_brep(part), face_number(bottom_face), float(angle_deg),
-                                    _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
-                                              threads, extension), progress)
+                                    finishing_settings(tool_diameter, cusp_height, tolerance, sweep, zigzag,
+                                                       clearance, threads, extension), progress)
 
 
 def guide_areas(areas):
@@ -62,8 +69,8 @@ def guide_areas(areas):
     return [(as_curve(a, "guide"), as_curve(b, "guide")) for a, b in pairs]
 
 
-def guide_finishing(part, bottom_face, areas, direction=(1.0, 0.0, 0.0), tool_diameter=4.0, cusp_height=0.01,
-                    tolerance=0.01, sweep="upward", zigzag=True, clearance=5.0, threads=0, extension=None,
+def guide_finishing(part, bottom_face, areas, direction=(1.0, 0.0, 0.0), tool_diameter=None, cusp_height=None,
+                    tolerance=None, sweep=None, zigzag=None, clearance=None, threads=None, extension=None,
                     progress=None):
     """Passes morphed between the guides of each area, areas in the order given (a CurveNet: B1 to B2).
     progress: as for parallel_finishing."""
@@ -71,8 +78,8 @@ def guide_finishing(part, bottom_face, areas, direction=(1.0, 0.0, 0.0), tool_di
     if isinstance(areas, _core.CurveNet):
         direction = np.asarray(areas.direction, dtype=float)
     return _core.guide_finishing(as_brep(part), face_number(bottom_face), guide_areas(areas), direction,
-                                 _settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
-                                           threads, extension), progress)
+                                 finishing_settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
+                                                    threads, extension), progress)
 
 
 def path_length(moves, rapid=False):

@@ -18,24 +18,36 @@ def panel():
     return guide_curve_net_panel.GuideCurveNetPanel.active
 
 
+def preview_done():
+    """The panel's preview is computed for its current values (it waits 30 ms for the slider to settle,
+    then computes)."""
+    return panel() is not None and not panel()._timer.isActive()
+
+
 def curve_count(run):
-    run.process_events(0.4)  # the preview waits 30 ms for the slider to settle, then computes
+    run.wait_until(preview_done, 20.0, "the net's preview computed")
     result = panel().last_result
     return len(result.net.curves) if result else 0
+
+
+def selected():
+    """(object name, sub-element) of everything the selection holds."""
+    return [(s.ObjectName, sub) for s in Gui.Selection.getSelectionEx() for sub in s.SubElementNames or [""]]
 
 
 @run.step
 def build_part_and_select_its_boundaries(run):
     Gui.activateWorkbench("HSMPlannerWorkbench")
     Gui.runCommand("HSM_MasterBottomFeature")
-    run.process_events(0.5)
+    run.wait_until(lambda: run.shape_built(FreeCAD.ActiveDocument.getObject("MasterBottomFeature")), 20.0,
+                   "the master bottom feature built")
     part = FreeCAD.ActiveDocument.getObject("MasterBottomFeature")
     state["part"] = part
     Gui.Selection.clearSelection()
     for sub in (part.Boundary1, part.Boundary2, part.BottomFace):
         Gui.Selection.addSelection(part, sub)
     Gui.runCommand("HSM_GuideCurveNet")
-    run.process_events(0.8)
+    run.wait_until(lambda: run.task_dialog_open() and preview_done(), 20.0, "the Guide curve net panel open")
     run.check("panel open", panel() is not None)
     run.check_fits_combo_view("Guide curve net panel", panel().form)
     run.check("boundary 1 taken from the selection", panel().boundary_1.link == (part, [part.Boundary1]),
@@ -65,10 +77,14 @@ def moving_k_changes_the_net(run):
 def pick_button_uses_a_selection_gate(run):
     p, part = panel(), state["part"]
     p.boundary_1.button.click()
+    Gui.Selection.addSelection(part, part.BottomFace)  # returns None whatever the gate says: look at the selection
     run.check("gate rejects a face while picking an edge",
-              not Gui.Selection.addSelection(part, part.BottomFace) or p.boundary_1.link[1] == [part.Boundary1])
+              (part.Name, part.BottomFace) not in selected() and p.boundary_1.link == (part, [part.Boundary1]),
+              "selection %s, field %s" % (selected(), p.boundary_1.link))
     Gui.Selection.addSelection(part, part.Boundary2)  # both boundaries the same edge: a clear error
-    run.process_events(0.4)
+    run.check("the gate lets the edge through", (part.Name, part.Boundary2) in selected(), str(selected()))
+    run.wait_until(lambda: p.boundary_1.link == (part, [part.Boundary2]) and preview_done(), 20.0,
+                   "the picked edge in the field and the preview computed")
     run.check("picked edge fills the field", p.boundary_1.link == (part, [part.Boundary2]), str(p.boundary_1.link))
     run.check("same edge twice is reported, not crashed", p.last_error is not None and "coincide" in p.last_error,
               str(p.last_error))
@@ -92,7 +108,11 @@ def four_step_and_accept(run):
     p.four_step.click()
     run.check("4-step preview", curve_count(run) == 5)
     p.accept()
-    run.process_events(0.8)
+    def net_computed():
+        net = FreeCAD.ActiveDocument.getObject("GuideCurveNet")
+        return run.shape_built(net) and len(net.Curves) > 0
+
+    run.wait_until(lambda: not run.task_dialog_open() and net_computed(), 20.0, "the panel closed and the net computed")
     net = FreeCAD.ActiveDocument.getObject("GuideCurveNet")
     run.check("net valid", net is not None and net.isValid(), str(net.State if net else None))
     run.check("4 coloured areas", len(net.AreaSurfaces) == 4 and len(net.ViewObject.DiffuseColor) == len(net.FaceAreas),
@@ -116,10 +136,10 @@ def four_step_and_accept(run):
 @run.step
 def reopen_and_cancel_keeps_the_object(run):
     Gui.ActiveDocument.setEdit("GuideCurveNet")
-    run.process_events(0.6)
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the Guide curve net panel reopened")
     run.check("panel reopened with its values", panel() is not None and panel().mode.currentText() == "4-step method")
     panel().reject()
-    run.process_events(0.4)
+    run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
     run.check("cancel kept the existing net", FreeCAD.ActiveDocument.getObject("GuideCurveNet") is not None)
 
 

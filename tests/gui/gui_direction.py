@@ -37,16 +37,24 @@ def valleys_with_a_job(run):
     state["part"] = part
     for obj in (job, state["planes"]):
         obj.ViewObject.Visibility = False
-    run.process_events(0.5)
+    run.wait_until(lambda: run.shape_built(part) and run.valid(state["planes"]) and state["planes"].Passes > 0, 30.0,
+                   "the part and the Planes operation computed")
 
 
 @run.step
 def command_on_the_selected_face(run):
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(state["part"], "Face1")
-    run.process_events(0.3)
+    run.wait_until(lambda: [(s.ObjectName, s.SubElementNames) for s in Gui.Selection.getSelectionEx()]
+                   == [(state["part"].Name, ("Face1",))], 10.0, "Face1 of the part selected")
     Gui.runCommand("HSM_MachiningDirection")
-    run.process_events(1.0)
+
+    def analysis_shown():
+        analysis = FreeCAD.ActiveDocument.getObject("MachiningDirection")
+        return (run.valid(analysis) and panel() is not None and run.task_dialog_open()
+                and analysis.ViewObject.Proxy.root.getNumChildren() > 0)
+
+    run.wait_until(analysis_shown, 60.0, "the direction analysis computed, its arrows drawn and its panel open")
     analysis = FreeCAD.ActiveDocument.getObject("MachiningDirection")
     state["analysis"] = analysis
     run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
@@ -57,13 +65,13 @@ def command_on_the_selected_face(run):
               str(analysis.Face))
     run.check("summary shows the beams", "Directional beams" in panel().summary.text(), panel().summary.text())
     import numpy as np
-    from hsmplanner import plots
+    from hsmplanner.plots.common import feed_colors
     from hsmplanner.gui import direction_view
 
     result = analysis.Proxy.result
     values = np.asarray(result.fitness_max)
     low, high = direction_view.fitness_scale(values)
-    colours = plots.feed_colors((values - low) / (high - low))
+    colours = feed_colors((values - low) / (high - low))
     run.notes["G_pmax range (mm2)"] = [round(float(values.min()), 5), round(float(values.max()), 5)]
     run.check("the strokes' colours span the scale (not one green)",
               float(np.ptp(colours, axis=0).max()) > 0.3, str(np.ptp(colours, axis=0)))
@@ -88,8 +96,9 @@ def feed_scan_in_the_panel(run):
     p.numbers["ScanTo"].setValue(12000.0)
     p.numbers["ScanSteps"].setValue(6)
     run.check("computed with a scan", p.compute(), p.message.text())
-    run.process_events(0.5)
     analysis = state["analysis"]
+    run.wait_until(lambda: run.valid(analysis) and len(analysis.ScanFeeds) == 6, 60.0,
+                   "the analysis recomputed with its feed scan")
     run.check("scan of 6 feeds", len(analysis.ScanFeeds) == 6, str(list(analysis.ScanFeeds)))
     run.notes["scan optimum deg"] = list(analysis.ScanOptimalAngles)
     run.screenshot("direction_feed_scan")
@@ -118,8 +127,9 @@ def fastest_simulated_applied_to_the_operation(run):
               str(list(analysis.ValidationAngles)))
     run.check("operation listed", p.operations.count() == 1 and p.apply_button.isEnabled())
     angle = p.apply()
-    run.process_events(0.5)
     planes = state["planes"]
+    run.wait_until(lambda: run.valid(planes) and abs(planes.Angle.Value - analysis.ChosenAngle.Value) < 1e-9,
+                   60.0, "the Planes operation recomputed at the chosen angle")
     run.check("angle applied", angle is not None and abs(planes.Angle.Value - analysis.ChosenAngle.Value) < 1e-9,
               "%s %s" % (planes.Angle, analysis.ChosenAngle))
     run.check("operation recomputed", planes.isValid() and planes.Passes > 100, str(planes.State))
@@ -131,7 +141,7 @@ def fastest_simulated_applied_to_the_operation(run):
     run.screenshot("direction_validation_applied")
     run.panel_plots("direction_panel_validation", panel().figure)
     p.reject()
-    run.process_events(0.3)
+    run.wait_until(lambda: panel() is None and not run.task_dialog_open(), 10.0, "the direction panel closed")
 
 
 run.start()

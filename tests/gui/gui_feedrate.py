@@ -19,17 +19,39 @@ def panel():
     return feedrate_panel.FeedRatePanel.active
 
 
+def scene_texts(node):
+    """Every string of the SoText2 labels under a Coin node (the map's legend)."""
+    from pivy import coin
+
+    search = coin.SoSearchAction()
+    search.setType(coin.SoText2.getClassTypeId())
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.apply(node)
+    paths = search.getPaths()
+    return [paths[i].getTail().string.getValues()[0] for i in range(paths.getLength())]
+
+
+def analysis_open(source=None, name="FeedRateAnalysis"):
+    """The analysis (of `source`, or the one named `name`) is computed and its panel is open."""
+    document = FreeCAD.ActiveDocument
+    analysis = ([o for o in document.Objects if getattr(o, "Source", None) is source] or [None])[0] \
+        if source is not None else document.getObject(name)
+    return run.valid(analysis) and panel() is not None and run.task_dialog_open()
+
+
 @run.step
 def job_with_a_toolpath(run):
     from hsmplanner.app import probe_paths
 
     Gui.activateWorkbench("HSMPlannerWorkbench")
     Gui.runCommand("HSM_MasterBottomFeature")
-    run.process_events(0.5)
+    run.wait_until(lambda: run.shape_built(FreeCAD.ActiveDocument.getObject("MasterBottomFeature")), 20.0,
+                   "the master bottom feature built")
     part = FreeCAD.ActiveDocument.getObject("MasterBottomFeature")
     state["job"], state["op"] = probe_paths.make_probe_job(part, 4000.0)
     part.ViewObject.Transparency = 70
-    run.process_events(0.5)
+    run.wait_until(lambda: run.valid(state["op"]) and len(state["op"].Path.Commands) > 0, 30.0,
+                   "the probe operation's path computed")
 
 
 @run.step
@@ -37,14 +59,17 @@ def command_needs_a_job_selected(run):
     Gui.Selection.clearSelection()
     run.check("inactive without a Job", not Gui.Command.get("HSM_FeedRateAnalysis").isActive())
     Gui.Selection.addSelection(state["job"])
-    run.process_events(0.3)
+    run.wait_until(lambda: Gui.Command.get("HSM_FeedRateAnalysis").isActive(), 10.0,
+                   "the Feed-rate analysis command active with the Job selected")
     run.check("active with a Job", Gui.Command.get("HSM_FeedRateAnalysis").isActive())
 
 
 @run.step
 def analysis_draws_the_map_and_fills_the_panel(run):
     Gui.runCommand("HSM_FeedRateAnalysis")
-    run.process_events(1.5)
+    run.wait_until(lambda: analysis_open() and panel().table.rowCount() > 0
+                   and FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").ViewObject.Proxy.root.getNumChildren() > 0,
+                   60.0, "the feed-rate analysis computed, its map drawn and its panel filled")
     analysis = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis")
     run.check("analysis valid", analysis is not None and analysis.isValid(), str(analysis.State if analysis else ""))
     run.check("panel open", panel() is not None)
@@ -95,11 +120,14 @@ def other_machine_colours_and_export(run):
     before = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").TotalTime
     p.machine.setCurrentText("grbl")
     p.simulate_button.click()
-    run.process_events(1.0)
-    after = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").TotalTime
+    analysis = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis")
+    run.wait_until(lambda: run.valid(analysis) and analysis.Machine == "grbl" and analysis.TotalTime != before,
+                   60.0, "the analysis simulated again on grbl")
+    after = analysis.TotalTime
     run.check("another machine, another time", abs(after - before) > 1.0, "%s %s" % (before, after))
     p.color_by.setCurrentText("Feed (mm/min)")
-    run.process_events(0.5)
+    run.wait_until(lambda: any("mm/min" in text for text in scene_texts(analysis.ViewObject.Proxy.root)), 20.0,
+                   "the map redrawn with its mm/min legend")
     from hsmplanner.gui import feedmap
 
     blocks = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").Proxy.result.blocks
@@ -116,7 +144,7 @@ def other_machine_colours_and_export(run):
     paths = p.export(folder)
     run.check("report written", len(paths) == 4 and all(os.path.getsize(x) > 0 for x in paths), str(paths))
     p.reject()
-    run.process_events(0.3)
+    run.wait_until(lambda: panel() is None and not run.task_dialog_open(), 10.0, "the feed-rate panel closed")
 
 
 @run.step
@@ -131,7 +159,8 @@ def an_operation_at_f0_gives_one_clear_message_in_the_panel(run):
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(custom)
     Gui.runCommand("HSM_FeedRateAnalysis")
-    run.process_events(1.0)
+    run.wait_until(lambda: analysis_open(custom) and panel().message.text(), 60.0,
+                   "the analysis of AtF0 computed and its panel open with a message")
     analysis = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is custom][0]
     message = panel().message.text() if panel() is not None else ""
     run.notes["F0 message"] = message
@@ -144,7 +173,7 @@ def an_operation_at_f0_gives_one_clear_message_in_the_panel(run):
     run.check("the panel's table stays empty", panel().table.rowCount() == 0)
     run.screenshot("feedrate_panel_f0")
     panel().reject()
-    run.process_events(0.3)
+    run.wait_until(lambda: panel() is None and not run.task_dialog_open(), 10.0, "the feed-rate panel closed")
 
 
 run.start()

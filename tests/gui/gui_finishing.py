@@ -17,6 +17,17 @@ def operation_panel(obj):
     return obj.ViewObject.Proxy.panel
 
 
+def panel_open(name):
+    """The operation `name` exists and its panel is shown in the task view."""
+    op = FreeCAD.ActiveDocument.getObject(name)
+    return op is not None and operation_panel(op) is not None and run.task_dialog_open()
+
+
+def accepted(op):
+    """The operation's panel is closed and the operation recomputed with a path."""
+    return not run.task_dialog_open() and run.valid(op) and len(op.Path.Commands) > 0
+
+
 def show_only(*objects):
     for o in FreeCAD.ActiveDocument.Objects:
         if o.ViewObject is not None:
@@ -38,14 +49,16 @@ def part_net_and_job(run):
     state["default tool"] = list(job.Tools.Group)
     run.check("the new Job's tool cannot finish", not any(finishing.is_usable(c) for c in job.Tools.Group))
     document.recompute()
-    run.process_events(1.0)
+    run.wait_until(lambda: run.valid(state["net"]) and len(state["net"].Curves) > 0
+                   and Gui.Command.get("HSM_GuideCurveFinishing").isActive(), 30.0,
+                   "the net computed and the Guide curve finishing command active")
     run.check("command active with a Job", Gui.Command.get("HSM_GuideCurveFinishing").isActive())
 
 
 @run.step
 def guide_curve_finishing_from_its_panel(run):
     Gui.runCommand("HSM_GuideCurveFinishing")
-    run.process_events(1.0)
+    run.wait_until(lambda: panel_open("GuideCurveFinishing"), 30.0, "the Guide curve finishing panel open")
     op = FreeCAD.ActiveDocument.getObject("GuideCurveFinishing")
     panel = operation_panel(op)
     run.check("operation panel open", panel is not None)
@@ -53,7 +66,7 @@ def guide_curve_finishing_from_its_panel(run):
     page.form.net.setCurrentText(state["net"].Label)
     page.form.areas.setCurrentText("Elementary areas of the net")
     panel.accept()
-    run.process_events(2.0)
+    run.wait_until(lambda: accepted(op), 60.0, "the panel closed and the guide curve finishing computed")
     run.check("guide curve path", op.isValid() and len(op.Path.Commands) > 5000 and op.Passes > 100,
               "%s %d %d" % (op.State, len(op.Path.Commands), op.Passes))
     controller = op.ToolController
@@ -70,7 +83,7 @@ def parallel_plane_finishing_from_its_panel(run):
     part = state["part"]
     Gui.Selection.clearSelection()
     Gui.runCommand("HSM_ParallelPlaneFinishing")
-    run.process_events(1.0)
+    run.wait_until(lambda: panel_open("ParallelPlaneFinishing"), 30.0, "the Parallel plane finishing panel open")
     op = FreeCAD.ActiveDocument.getObject("ParallelPlaneFinishing")
     panel = operation_panel(op)
     page = panel.featurePages[-1]
@@ -78,7 +91,7 @@ def parallel_plane_finishing_from_its_panel(run):
     page.form.useSelection.click()
     run.check("face taken from the selection", page.form.face.text().endswith(part.BottomFace), page.form.face.text())
     panel.accept()
-    run.process_events(2.0)
+    run.wait_until(lambda: accepted(op), 60.0, "the panel closed and the parallel plane finishing computed")
     run.check("parallel plane path", op.isValid() and op.Passes > 100, "%s %d" % (op.State, op.Passes))
     run.notes["parallel plane finishing"] = {"passes": op.Passes, "commands": len(op.Path.Commands)}
     state["planes"] = op
@@ -123,14 +136,14 @@ def escape_cancels_a_long_finishing_and_keeps_the_document(run):
     op.CuspHeight = 0.001
     QtCore.QTimer.singleShot(1500, press_escape)
     FreeCAD.ActiveDocument.recompute()
-    run.process_events(1.0)
+    run.wait_until(lambda: "dialogs" in seen, 10.0, "the timer that presses Esc")
     run.notes["escape"] = {"status": op.getStatusString(), "dialogs": seen.get("dialogs")}
     run.check("a progress dialog shows", bool(seen.get("dialogs")), str(seen))
     run.check("Esc cancels the finishing", "cancelled" in op.getStatusString(), op.getStatusString())
     run.check("the document is kept", FreeCAD.ActiveDocument is not None and op.Document is FreeCAD.ActiveDocument)
     op.CuspHeight = 0.01
     FreeCAD.ActiveDocument.recompute()
-    run.process_events(1.0)
+    run.wait_until(lambda: run.valid(op) and op.Passes > 100, 60.0, "the operation recomputed at 0.01 mm")
     run.check("the next recompute works", op.isValid() and op.Passes > 100, "%s %d" % (op.State, op.Passes))
 
 
@@ -141,13 +154,19 @@ def feed_rate_maps_of_both(run):
         Gui.Selection.clearSelection()
         Gui.Selection.addSelection(op)
         Gui.runCommand("HSM_FeedRateAnalysis")
-        run.process_events(1.5)
+        from hsmplanner.gui import feedrate_panel
+
+        def analysed():
+            found = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is op]
+            return found and run.valid(found[0]) and feedrate_panel.FeedRatePanel.active is not None
+
+        run.wait_until(analysed, 60.0, "the feed-rate analysis of %s computed and its panel open" % name)
         analysis = [o for o in FreeCAD.ActiveDocument.Objects if getattr(o, "Source", None) is op][0]
         run.check("%s analysed" % name, analysis.isValid() and analysis.TotalTime > 0, str(analysis.State))
         run.notes["%s simulated s / length-feed s" % name] = [round(analysis.TotalTime, 1), round(analysis.NaiveTime, 1)]
-        from hsmplanner.gui import feedrate_panel
-
         feedrate_panel.FeedRatePanel.active.reject()
+        run.wait_until(lambda: feedrate_panel.FeedRatePanel.active is None and not run.task_dialog_open(), 10.0,
+                       "the feed-rate panel closed")
         show_only(state["part"], analysis)
         state["part"].ViewObject.Transparency = 75
         Gui.Selection.clearSelection()

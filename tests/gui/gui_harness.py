@@ -3,6 +3,10 @@
 A macro registers checks; the harness runs them once the main window is up, captures what reaches
 sys.stderr (FreeCAD prints Python errors there), closes stray modal dialogs, takes screenshots, writes
 result.json into $HSM_GUI_TEST_OUT and ends FreeCAD with os._exit so nothing can hang the test.
+
+After an action, a macro waits for its effect with wait_until(condition, timeout, what) (an object
+recomputed, a panel open, a dialog shown, a map drawn), never for a fixed time: a slow machine only waits
+longer, and an effect that never comes is a failure that names it.
 """
 import io
 import json
@@ -47,18 +51,55 @@ class GuiRun:
         return function
 
     def process_events(self, seconds=0.5):
+        """Runs the event loop for a fixed time: only to let the 3D view redraw before a screenshot, where
+        there is no condition to wait for. After an action, use wait_until."""
         end = time.time() + seconds
         while time.time() < end:
             QtWidgets.QApplication.processEvents()
             time.sleep(0.02)
+
+    def wait_until(self, condition, timeout=10.0, what="the condition"):
+        """Processes events until condition() is true, and returns True; after `timeout` seconds records a
+        failure naming `what` and returns False. An exception raised by the condition counts as "not yet"
+        (a panel not open yet), and is quoted in the failure if the condition never holds."""
+        end = time.time() + timeout
+        last_error = None
+        while True:
+            QtWidgets.QApplication.processEvents()
+            try:
+                if condition():
+                    return True
+                last_error = None
+            except Exception as error:
+                last_error = "%s: %s" % (type(error).__name__, error)
+            if time.time() >= end:
+                self.failures.append("timed out after %g s waiting for %s%s"
+                                     % (timeout, what, " (%s)" % last_error if last_error else ""))
+                return False
+            time.sleep(0.02)
+
+    @staticmethod
+    def valid(obj):
+        """The document object exists and its last recompute did not fail. (An object recomputed alone, by
+        obj.recompute(), stays "Touched": wait for what its recompute sets as well.)"""
+        return obj is not None and obj.isValid()
+
+    @classmethod
+    def shape_built(cls, obj):
+        """The object is valid and has its shape."""
+        return cls.valid(obj) and not obj.Shape.isNull()
+
+    @staticmethod
+    def task_dialog_open():
+        return bool(Gui.Control.activeDialog())
 
     def close_modal_dialogs(self):
         widget = QtWidgets.QApplication.activeModalWidget()
         while widget is not None:
             self.failures.append("modal dialog appeared: %s %r" % (type(widget).__name__, widget.windowTitle()))
             widget.close()
-            self.process_events(0.2)
-            if QtWidgets.QApplication.activeModalWidget() is widget:
+            if not self.wait_until(lambda: QtWidgets.QApplication.activeModalWidget() is not widget, 5.0,
+                                   "the modal dialog %r to close" % widget.windowTitle()):
                 break
             widget = QtWidgets.QApplication.activeModalWidget()
 
@@ -118,7 +159,8 @@ class GuiRun:
 
     def widget_screenshot(self, name, widget):
         """A window other than the main one (a plot window: no 3D view in it, so grab() draws it whole)."""
-        self.process_events(0.5)
+        self.wait_until(widget.isVisible, 5.0, "the window %r shown" % widget.windowTitle())
+        self.process_events(0.5)  # settle: a new window lays out and paints its canvas over a few events
         path = os.path.join(OUT, name + ".png")
         widget.grab().save(path)
         self.screenshots.append(path)
@@ -126,7 +168,7 @@ class GuiRun:
 
     def screenshot(self, name):
         """Grab the whole main window from the screen (grab() would leave the 3D view blank)."""
-        self.process_events(0.5)
+        self.process_events(0.5)  # settle: the 3D view redraws (after a ViewFit, a new colour) on later events
         window = Gui.getMainWindow()
         path = os.path.join(OUT, name + ".png")
         QtWidgets.QApplication.primaryScreen().grabWindow(window.winId()).save(path)
@@ -138,6 +180,8 @@ class GuiRun:
             for function in self.checks:
                 self.close_modal_dialogs()
                 function(self)
+                # not a wait for an effect: lets a dialog the step left behind (opened by a timer) show itself
+                # before close_modal_dialogs looks for one
                 self.process_events(0.3)
             self.close_modal_dialogs()
         except Exception:

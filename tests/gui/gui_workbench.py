@@ -20,10 +20,15 @@ def workbench_is_listed(run):
 @run.step
 def workbench_activates(run):
     Gui.activateWorkbench("HSMPlannerWorkbench")
-    run.process_events(1.0)
+
+    def visible_toolbars():
+        return [t.windowTitle() for t in Gui.getMainWindow().findChildren(QtWidgets.QToolBar) if t.isVisible()]
+
+    run.wait_until(lambda: type(Gui.activeWorkbench()).__name__ == "HSMPlannerWorkbench"
+                   and "HSM Planner" in visible_toolbars(), 20.0, "the workbench active with its toolbar shown")
     active = Gui.activeWorkbench()
     run.check("workbench active", type(active).__name__ == "HSMPlannerWorkbench", type(active).__name__)
-    toolbars = [t.windowTitle() for t in Gui.getMainWindow().findChildren(QtWidgets.QToolBar) if t.isVisible()]
+    toolbars = visible_toolbars()
     run.check("toolbar shown", "HSM Planner" in toolbars, str(toolbars))
     run.notes["toolbars"] = toolbars
 
@@ -31,7 +36,8 @@ def workbench_activates(run):
 @run.step
 def command_builds_master_feature(run):
     Gui.runCommand("HSM_MasterBottomFeature")
-    run.process_events(1.0)
+    run.wait_until(lambda: run.shape_built(FreeCAD.ActiveDocument.getObject("MasterBottomFeature")), 20.0,
+                   "the master bottom feature built")
     document = FreeCAD.ActiveDocument
     obj = document.getObject("MasterBottomFeature") if document else None
     run.check("object created", obj is not None)
@@ -51,7 +57,7 @@ def command_builds_master_feature(run):
 def undo_removes_it(run):
     document = FreeCAD.ActiveDocument
     document.undo()
-    run.process_events(0.5)
+    run.wait_until(lambda: document.getObject("MasterBottomFeature") is None, 10.0, "the feature removed by undo")
     run.check("undo removed the feature", document.getObject("MasterBottomFeature") is None)
 
 

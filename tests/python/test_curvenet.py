@@ -19,6 +19,21 @@ B2 = FEATURE.shape.getElement(FEATURE.boundary_2)
 BOTTOM = FEATURE.shape.getElement(FEATURE.bottom_face)
 
 
+def edge_ends(edges):
+    """Start (3), end (3) and length of each edge, one row each: what tells the curves of a net apart, and
+    their order."""
+    return np.array([tuple(e.valueAt(e.FirstParameter)) + tuple(e.valueAt(e.LastParameter)) + (e.Length,)
+                     for e in edges])
+
+
+def same_ends(edge, other, tolerance=1e-6):
+    """The two edges join the same two points (either way round)."""
+    a = [edge.valueAt(edge.FirstParameter), edge.valueAt(edge.LastParameter)]
+    b = [other.valueAt(other.FirstParameter), other.valueAt(other.LastParameter)]
+    return ((a[0] - b[0]).Length < tolerance and (a[1] - b[1]).Length < tolerance) or \
+        ((a[0] - b[1]).Length < tolerance and (a[1] - b[0]).Length < tolerance)
+
+
 def line_points(y, z=0.0, length=100.0, n=11):
     x = np.linspace(0.0, length, n)
     return np.column_stack([x, np.full_like(x, y), np.full_like(x, z)])
@@ -152,7 +167,7 @@ class GuideCurveNetObject(unittest.TestCase):
         self.assertEqual(len(net.Curves), 5)
         self.part.Length = 120
         self.document.recompute()
-        self.assertAlmostEqual(net.Shape.Edges[-1].BoundBox.XMax, 120.0, delta=0.05)
+        self.assertAlmostEqual(guide_curve_net_object.net_curve_edges(net)[-1].BoundBox.XMax, 120.0, delta=0.05)
 
     def test_values_outside_the_panel_ranges_are_clamped_at_the_door(self):
         net = self.make(Mode="Boundary 1 to boundary 2")
@@ -184,8 +199,27 @@ class GuideCurveNetObject(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "Boundary2 is not set"):
             guide_curve_net_object.GuideCurveNet.inputs(net)
 
+    def test_curves_are_their_own_property_from_b1_to_b2(self):
+        net = self.make()
+        edges = guide_curve_net_object.net_curve_edges(net)
+        self.assertEqual(len(edges), len(net.Curves))
+        self.assertEqual(net.getEditorMode("CurveShapes"), ["ReadOnly"])
+        part = self.part.Shape
+        self.assertTrue(same_ends(edges[0], part.getElement(self.part.Boundary1)))
+        self.assertTrue(same_ends(edges[-1], part.getElement(self.part.Boundary2)))
+        # the same edges as the displayed shape's curves, whatever their place in it
+        shown = edge_ends(net.Shape.Edges)
+        for row in edge_ends(edges):
+            self.assertTrue(np.any(np.all(np.abs(shown - row) < 1e-9, axis=1)), row)
+
+    def test_a_net_not_computed_has_no_curves_to_give(self):
+        net = guide_curve_net_object.create(self.document)
+        with self.assertRaisesRegex(ValueError, "has no curves: recompute it"):
+            guide_curve_net_object.net_curve_edges(net)
+
     def test_saves_and_restores(self):
         net = self.make(K=0.7, Step=4)
+        curves = edge_ends(guide_curve_net_object.net_curve_edges(net))
         path = os.path.join(temporary_directory(self), "net.FCStd")
         self.document.saveAs(path)
         FreeCAD.closeDocument(self.document.Name)
@@ -193,10 +227,23 @@ class GuideCurveNetObject(unittest.TestCase):
         restored = document.getObject(net.Name if False else "GuideCurveNet")
         self.assertEqual(type(restored.Proxy).__name__, "GuideCurveNet")
         self.assertAlmostEqual(restored.K, 0.7)
+        # the curves come back as they were saved, B1 → B2, before any recompute
+        np.testing.assert_allclose(edge_ends(guide_curve_net_object.net_curve_edges(restored)), curves, atol=1e-9)
         restored.touch()
         document.recompute()
         self.assertTrue(restored.isValid(), restored.State)
         self.assertEqual(restored.Curves, ["B1", "C1", "Cmed", "C2", "B2"])
+
+    def test_a_document_saved_before_curve_shapes_gets_them_on_opening(self):
+        net = self.make()
+        curves = edge_ends(guide_curve_net_object.net_curve_edges(net))
+        net.removeProperty("CurveShapes")  # as nets were saved before it existed
+        path = os.path.join(temporary_directory(self), "old.FCStd")
+        self.document.saveAs(path)
+        FreeCAD.closeDocument(self.document.Name)
+        restored = FreeCAD.openDocument(path).getObject("GuideCurveNet")
+        self.assertIn("CurveShapes", restored.PropertiesList)
+        np.testing.assert_allclose(edge_ends(guide_curve_net_object.net_curve_edges(restored)), curves, atol=1e-9)
 
     def test_unknown_property_is_refused(self):
         with self.assertRaisesRegex(ValueError, "no property 'Kay'"):

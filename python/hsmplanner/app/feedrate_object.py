@@ -58,17 +58,16 @@ class FeedRateAnalysis(InMemoryResult):
         if not is_simulatable(obj.Source):
             raise ValueError("Source is not a Path/CAM Job or operation: link one")
         self.result = simulate_object(obj.Source, self.machine(obj), blocks=True)
-        summary = feedsim.summary_dict(self.result.summary, obj.Source.Label)
-        obj.CuttingTime, obj.RapidTime = summary["cutting_time_s"], summary["rapid_time_s"]
-        obj.NaiveTime, obj.TimeOverNaive = summary["naive_time_s"], summary["time_over_naive"]
-        obj.BlockCount = summary["block_count"]
-        classes = summary["feed_classes"]
-        obj.FeedClassesTime = classes["share_of_time"]
-        obj.FeedClassesBlocks = classes["share_of_blocks"]
-        obj.FeedClassesLength = classes["share_of_length"]
-        obj.LengthClasses = summary["block_length_classes"]["cutting_blocks"]
-        obj.Report = self.result.summary.to_json(obj.Source.Label)
-        obj.TotalTime = summary["total_time_s"]  # last: the view provider redraws on it
+        summary = self.result.summary
+        obj.CuttingTime, obj.RapidTime = summary.cutting_time, summary.rapid_time
+        obj.NaiveTime, obj.TimeOverNaive = summary.naive_time, summary.time_over_naive
+        obj.BlockCount = summary.block_count
+        obj.FeedClassesTime = list(summary.feed_classes_time)
+        obj.FeedClassesBlocks = list(summary.feed_classes_blocks)
+        obj.FeedClassesLength = list(summary.feed_classes_length)
+        obj.LengthClasses = list(summary.length_classes)
+        obj.Report = summary.to_json(obj.Source.Label)
+        obj.TotalTime = summary.total_time  # last: the view provider redraws on it
 
     def has_input(self, obj):
         return is_simulatable(obj.Source)

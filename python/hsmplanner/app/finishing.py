@@ -10,16 +10,14 @@ import hsmplanner
 from hsmplanner.toolpaths import face_number
 
 from .compat import cam_module
+from .guide_curve_net_object import net_curve_edges
 
 AREA_CHOICES = ["Elementary areas of the net", "Between the boundaries"]
 
 
 def net_curves(net):
-    """The curves of a Guide curve net object as core curves, B1 to B2 (the last edges of its shape)."""
-    count = len(net.Curves)
-    if count < 2:
-        raise ValueError("the guide curve net %s has no curves: recompute it" % net.Label)
-    return [hsmplanner.as_curve(edge) for edge in net.Shape.Edges[-count:]]
+    """The curves of a Guide curve net object as core curves, B1 to B2 (its CurveShapes)."""
+    return [hsmplanner.as_curve(edge) for edge in net_curve_edges(net)]
 
 
 def net_areas(net, areas=AREA_CHOICES[0]):

@@ -14,7 +14,8 @@ from .property_limits import PropertyLimits
 
 PathOp = cam_module("op")
 
-SWEEPS = ["Upward", "Downward"]
+SWEEPS = ["Upward", "Downward"]  # saved in documents: the core's Sweep names, capitalised
+_DEFAULTS = hsmplanner._core.FinishingSettings()  # each default written once, in C++
 PATTERNS = ["ZigZag", "OneWay"]
 
 
@@ -32,9 +33,9 @@ class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
 
     def initFinishing(self, obj):
         obj.addProperty("App::PropertyLength", "CuspHeight", "Finishing", "largest cusp left on the surface")
-        obj.CuspHeight = 0.01
+        obj.CuspHeight = _DEFAULTS.cusp_height
         obj.addProperty("App::PropertyLength", "Tolerance", "Finishing", "chordal tolerance of the G1 points")
-        obj.Tolerance = 0.01
+        obj.Tolerance = _DEFAULTS.tolerance
         obj.addProperty("App::PropertyEnumeration", "Sweep", "Finishing", "passes climb or descend the face")
         obj.Sweep = SWEEPS
         obj.addProperty("App::PropertyEnumeration", "Pattern", "Finishing", "zigzag or one-way passes")

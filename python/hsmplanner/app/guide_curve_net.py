@@ -7,28 +7,33 @@ from dataclasses import dataclass, field
 import Part
 
 import hsmplanner
+from hsmplanner import _core
 
-# Modes as the user reads them -> the core's names ("4-step" is hsmplanner.guidance_curves).
+FOUR_STEP = "4-step method"  # hsmplanner.guidance_curves; the other modes are the core's NetMode
+# Modes as the user reads them (saved in documents: never rename) -> the core's.
 MODES = {
-    "4-step method": "four_step",
-    "Boundary 1 to boundary 2": "b1_to_b2",
-    "Boundary 2 to boundary 1": "b2_to_b1",
-    "Median only": "median",
-    "Median to boundaries": "median_to_boundaries",
-    "Boundaries to median": "boundaries_to_median",
+    FOUR_STEP: None,
+    "Boundary 1 to boundary 2": _core.NetMode.b1_to_b2,
+    "Boundary 2 to boundary 1": _core.NetMode.b2_to_b1,
+    "Median only": _core.NetMode.median,
+    "Median to boundaries": _core.NetMode.median_to_boundaries,
+    "Boundaries to median": _core.NetMode.boundaries_to_median,
 }
-DEFAULT_MODE = "4-step method"
+DEFAULT_MODE = FOUR_STEP
+# The core's defaults (each written once, in C++): K and K of the median of the 4-step method, its initial
+# step P, the net's gap and fit tolerance.
+_GUIDANCE = _core.GuidanceSettings()
 
 
 @dataclass(frozen=True)
 class NetParameters:
     mode: str = DEFAULT_MODE
-    k: float = 0.75                 # ratio of the net (the 4-step method's K after the median)
-    step: float = 5.0               # P, mm (the 4-step method's initial step)
-    direction: tuple = None         # machining direction; None = the boundaries' length direction
-    min_gap: float = 2.0            # mm
-    fit_tolerance: float = 0.01     # mm
-    k_median: float = 0.5           # 4-step method only
+    k: float = _GUIDANCE.k                        # ratio of the net (the 4-step method's K after the median)
+    step: float = _GUIDANCE.net.step              # P, mm (the 4-step method's initial step)
+    direction: tuple = None                       # machining direction; None = the boundaries' length direction
+    min_gap: float = _GUIDANCE.net.min_gap        # mm
+    fit_tolerance: float = _GUIDANCE.net.fit_tolerance  # mm
+    k_median: float = _GUIDANCE.k_median          # 4-step method only
 
     def core_mode(self):
         try:
@@ -70,7 +75,7 @@ def build_guide_curve_net(boundary_1, boundary_2, face=None, parameters=NetParam
     """
     mode = parameters.core_mode()
     report = None
-    if mode == "four_step":
+    if mode is None:
         net, report = hsmplanner.guidance_curves(
             boundary_1, boundary_2, direction=parameters.direction, face=face, step=parameters.step,
             k_median=parameters.k_median, k=parameters.k, min_gap=parameters.min_gap,

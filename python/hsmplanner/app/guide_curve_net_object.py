@@ -1,7 +1,10 @@
 """Parametric "Guide curve net" document object (Part::FeaturePython).
 
-Thin: links and numbers are wired to hsmplanner.app.guide_curve_net.build_guide_curve_net. Its Shape is a
-compound of the region faces (one or more per elementary area) followed by the curve edges (B1 … B2).
+Thin: links and numbers are wired to hsmplanner.app.guide_curve_net.build_guide_curve_net. Its Shape is what
+the 3D view shows: a compound of the region faces (one or more per elementary area) followed by the curve
+edges (display_edge_roles says which edge is which). The curves themselves, for whoever machines or reads
+them, are the read-only CurveShapes: a compound of one edge per curve, B1 … B2, saved with the document
+(net_curve_edges gives them as a list).
 """
 import FreeCAD
 import Part
@@ -18,17 +21,22 @@ _INPUTS = [
     ("App::PropertyLinkSub", "Boundary1", "first boundary: edge(s) between the bottom and a flank", None),
     ("App::PropertyLinkSub", "Boundary2", "second boundary: edge(s) on the other side of the bottom", None),
     ("App::PropertyLinkSub", "BottomFace", "the bottom face the curves lie on and the areas divide (optional)", None),
-    ("App::PropertyFloat", "K", "ratio from the starting curve, in ]0,1[ (4-step method: after the median)", 0.75),
-    ("App::PropertyFloat", "KMedian", "ratio of the median curve (4-step method)", 0.5),
-    ("App::PropertyLength", "Step", "P: largest spacing of the planes (4-step method: initial step)", 5.0),
+    ("App::PropertyFloat", "K", "ratio from the starting curve, in ]0,1[ (4-step method: after the median)",
+     NetParameters.k),
+    ("App::PropertyFloat", "KMedian", "ratio of the median curve (4-step method)", NetParameters.k_median),
+    ("App::PropertyLength", "Step", "P: largest spacing of the planes (4-step method: initial step)",
+     NetParameters.step),
     ("App::PropertyVector", "Direction", "machining direction; (0,0,0) = length direction of the boundaries",
      FreeCAD.Vector(0, 0, 0)),
-    ("App::PropertyLength", "MinGap", "a net stops before a curve comes closer than this to its target", 2.0),
-    ("App::PropertyLength", "FitTolerance", "B-spline approximation of the intermediate points", 0.01),
+    ("App::PropertyLength", "MinGap", "a net stops before a curve comes closer than this to its target",
+     NetParameters.min_gap),
+    ("App::PropertyLength", "FitTolerance", "B-spline approximation of the intermediate points",
+     NetParameters.fit_tolerance),
 ]
 _OUTPUTS = [
     ("App::PropertyStringList", "Curves", "labels of the curves, from boundary 1 to boundary 2"),
     ("App::PropertyStringList", "CurveRoles", "boundary, median or intermediate, per curve"),
+    ("Part::PropertyPartShape", "CurveShapes", "the curves, one edge each, from boundary 1 to boundary 2"),
     ("App::PropertyStringList", "ComposedAreas", "composed machining areas MA1, MA2… as pairs of curves"),
     ("App::PropertyFloatList", "AreaSurfaces", "surface of each elementary area on the bottom face, mm²"),
     ("App::PropertyIntegerList", "FaceAreas", "elementary area of each face of the shape"),
@@ -75,6 +83,18 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
             obj.setEditorMode(name, 1)
         obj.Proxy = self
 
+    def onDocumentRestored(self, obj):
+        """Documents saved before CurveShapes existed get it, filled from their Shape, whose curve edges
+        came last (the only layout those files have): their nets machine as before without a recompute."""
+        if "CurveShapes" in obj.PropertiesList:
+            return
+        prop_type, name, tooltip = next(output for output in _OUTPUTS if output[1] == "CurveShapes")
+        obj.addProperty(prop_type, name, "Result", tooltip)
+        obj.setEditorMode(name, 1)
+        count = len(obj.Curves)
+        if count and len(obj.Shape.Edges) >= count:
+            obj.CurveShapes = Part.Compound(obj.Shape.Edges[-count:])
+
     @staticmethod
     def parameters(obj):
         direction = tuple(obj.Direction)
@@ -95,9 +115,10 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
         for index, (lower, upper, shape, _) in enumerate(result.regions):
             faces += shape.Faces
             face_areas += [index] * len(shape.Faces)
+        obj.CurveShapes = Part.Compound(result.edges)
         obj.Shape = Part.Compound(faces + result.edges)
         obj.Curves = result.labels
-        obj.CurveRoles = [c.role for c in result.net.curves]
+        obj.CurveRoles = [c.role.name for c in result.net.curves]
         obj.ComposedAreas = result.composed_area_names()
         obj.AreaSurfaces = [area for _, _, _, area in result.regions]
         obj.FaceAreas = face_areas
@@ -106,6 +127,25 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
         spacing = [b - a for a, b in zip(stations, stations[1:])]
         obj.PlaneSpacing = "%d planes, %.2f to %.2f mm apart" % (len(stations), min(spacing), max(spacing))
         obj.Warnings = list(result.net.warnings)
+
+
+def net_curve_edges(obj):
+    """The curves of a guide curve net object as Part edges, B1 … B2 (its CurveShapes, in their order)."""
+    compound = getattr(obj, "CurveShapes", None)
+    edges = [] if compound is None or compound.isNull() else compound.childShapes()
+    if len(edges) < 2 or any(edge.ShapeType != "Edge" for edge in edges):
+        raise ValueError("the guide curve net %s has no curves: recompute it" % obj.Label)
+    return edges
+
+
+def display_edge_roles(obj):
+    """What each edge of the object's Shape is, for its colours in the 3D view: None for the borders of the
+    areas, then the role of each curve (execute puts the curve edges after the faces' edges); None when the
+    properties do not match yet (mid-recompute)."""
+    edges, roles = obj.Shape.Edges, list(obj.CurveRoles)
+    if len(obj.Shape.Faces) != len(obj.FaceAreas) or len(edges) < len(roles):
+        return None
+    return [None] * (len(edges) - len(roles)) + roles
 
 
 def create(document=None, boundary_1=None, boundary_2=None, bottom_face=None, name="GuideCurveNet", **values):

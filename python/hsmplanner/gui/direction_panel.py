@@ -3,9 +3,9 @@ three choices (beams, least predicted time, fastest simulated) with their plots;
 angle of a Parallel plane finishing operation."""
 from PySide2 import QtWidgets
 
-from hsmplanner import plots
 from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM
+from hsmplanner.plots.direction import PREDICTED_TIME_NOTE, draw_direction_report
 
 from .task_panel import AnalysisPanel, PanelPlots, narrow_combo, selected_faces
 
@@ -88,7 +88,7 @@ class DirectionPanel(AnalysisPanel):
         layout.addWidget(self.summary)
         # Two plots stacked, each with its legend below it.
         self.plots = PanelPlots(layout, 760, self.draw_plots, "Machining direction: %s" % self.obj.Label,
-                                tooltip=plots.PREDICTED_TIME_NOTE)
+                                tooltip=PREDICTED_TIME_NOTE)
         self.figure = self.plots.figure
         apply_row = QtWidgets.QHBoxLayout()
         self.operations = narrow_combo()
@@ -169,8 +169,8 @@ class DirectionPanel(AnalysisPanel):
         if getattr(proxy, "result", None) is None:
             return False
         title = "%s: %s" % (self.obj.Label, self.face_text()) if wide else ""
-        plots.draw_direction_report(figure, proxy.result, title, scan=proxy.scan, validation=proxy.validation,
-                                    stacked=not wide)
+        draw_direction_report(figure, proxy.result, title, scan=proxy.scan, validation=proxy.validation,
+                              stacked=not wide)
         return True
 
     def apply(self):

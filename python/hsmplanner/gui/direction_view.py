@@ -4,7 +4,7 @@ finish), and the chosen direction as a double arrow above the face, with a legen
 import numpy as np
 from pivy import coin
 
-from hsmplanner import plots
+from hsmplanner.plots.common import feed_colors
 
 from .feedmap import legend_node, line_set
 
@@ -53,7 +53,7 @@ def direction_node(result, chosen_deg, arrows):
     lines, chosen = strokes(result.points, result.best_angle_deg, arrows)
     values = np.asarray(result.fitness_max, dtype=float)
     low, high = fitness_scale(values)
-    root.addChild(line_set(lines, plots.feed_colors((values[chosen] - low) / (high - low)), width=2.0))
+    root.addChild(line_set(lines, feed_colors((values[chosen] - low) / (high - low)), width=2.0))
     arrow = chosen_arrow(result.points, chosen_deg)
     root.addChild(line_set(arrow, np.tile([0.85, 0.1, 0.1], (len(arrow), 1)), width=5.0))
     root.addChild(legend_node(low, high, "mm²", title="best local G_p", digits=4))

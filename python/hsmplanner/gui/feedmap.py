@@ -3,7 +3,8 @@ and a legend drawn in screen space (its own camera), so that it shows in screens
 import numpy as np
 from pivy import coin
 
-from hsmplanner import plots
+from hsmplanner.plots.common import feed_colors
+from hsmplanner.plots.feedrate import block_polylines
 
 LEGEND_STEPS = 20
 LEGEND_TICKS = 4
@@ -49,9 +50,9 @@ def block_colors(blocks, color_by):
         cutting = blocks["motion"] != 0
         programmed = blocks["programmed_feed"][cutting] if np.any(cutting) else blocks["programmed_feed"]
         top = max(float(np.max(programmed)) * 60.0, 1e-9) if len(programmed) else 1.0
-        return plots.feed_colors(blocks["mean_feed"] * 60.0 / top), (0.0, top, "mm/min")
+        return feed_colors(blocks["mean_feed"] * 60.0 / top), (0.0, top, "mm/min")
     ratios = blocks["mean_feed"] / np.maximum(blocks["programmed_feed"], 1e-12)
-    return plots.feed_colors(ratios), (0.0, 100.0, "% of F")
+    return feed_colors(ratios), (0.0, 100.0, "% of F")
 
 
 def map_node(blocks, color_by):
@@ -62,7 +63,7 @@ def map_node(blocks, color_by):
     overlay = coin.SoDepthBuffer()
     overlay.test = False
     root.addChild(overlay)
-    lines = plots.block_polylines(blocks)
+    lines = block_polylines(blocks)
     cutting = blocks["motion"] != 0
     colors, scale = block_colors(blocks, color_by)
     cut = [p for p, c in zip(lines, cutting) if c]
@@ -91,7 +92,7 @@ def legend_node(low, high, unit, title="mean reached feed", digits=0):
     for k in range(LEGEND_STEPS):
         a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS
         vertices += [(x0, a, 0), (x1, a, 0), (x1, b, 0), (x0, b, 0)]
-        colors.append(plots.feed_colors([(k + 0.5) / LEGEND_STEPS])[0])
+        colors.append(feed_colors([(k + 0.5) / LEGEND_STEPS])[0])
     property_ = coin.SoVertexProperty()
     property_.vertex.setValues(0, len(vertices), vertices)
     property_.orderedRGBA.setValues(0, len(colors), [int(c) for c in _packed(colors)])

@@ -1,7 +1,8 @@
 """Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
 from PySide2 import QtCore, QtWidgets
 
-from hsmplanner import feedsim, plots
+from hsmplanner import feedsim
+from hsmplanner.plots.feedrate import FEED_CLASS_LABELS, draw_feed_histograms
 from hsmplanner.app.feedrate_object import COLOR_MODES
 
 from .task_panel import AnalysisPanel, PanelPlots, narrow_combo
@@ -11,21 +12,20 @@ def summary_rows(summary):
     """(label, value, tool tip) rows of the summary table; feeds and times as people read them. Labels are
     short (the Combo View is about 275 px wide); the tool tip says what each one is. The machine is in the
     combo box above the table."""
-    classes = summary["feed_classes"]["share_of_time"]
+    s = summary
     rows = [
-        ("Simulated", "%.1f s" % summary["total_time_s"], "simulated machining time (jerk, acceleration, look-ahead)"),
-        ("cut / rapid", "%.1f / %.1f s" % (summary["cutting_time_s"], summary["rapid_time_s"]),
-         "simulated time in G1/G2/G3 and in G0"),
-        ("Length / F", "%.1f s" % summary["naive_time_s"],
+        ("Simulated", "%.1f s" % s.total_time, "simulated machining time (jerk, acceleration, look-ahead)"),
+        ("cut / rapid", "%.1f / %.1f s" % (s.cutting_time, s.rapid_time), "simulated time in G1/G2/G3 and in G0"),
+        ("Length / F", "%.1f s" % s.naive_time,
          "length / programmed feed: what CAM systems and FreeCAD's cycle time estimate"),
-        ("Ratio", "× %.2f" % summary["time_over_naive"], "simulated time / length-over-feed estimate"),
-        ("Blocks", "%d (%d G0)" % (summary["block_count"], summary["rapid_blocks"]),
-         "motion blocks of the program (%d cutting, %d rapid)" % (summary["cutting_blocks"], summary["rapid_blocks"])),
-        ("Cut length", "%.1f mm" % summary["cutting_length_mm"], "length of the cutting moves"),
+        ("Ratio", "× %.2f" % s.time_over_naive, "simulated time / length-over-feed estimate"),
+        ("Blocks", "%d (%d G0)" % (s.block_count, s.rapid_blocks),
+         "motion blocks of the program (%d cutting, %d rapid)" % (s.cutting_blocks, s.rapid_blocks)),
+        ("Cut length", "%.1f mm" % s.cutting_length, "length of the cutting moves"),
     ]
     rows += [("%s F" % label, "%.1f %%" % (100 * share),
               "share of the cutting time spent at %s of the programmed feed F" % label)
-             for label, share in zip(plots.FEED_CLASS_LABELS, classes)]
+             for label, share in zip(FEED_CLASS_LABELS, s.feed_classes_time)]
     return rows
 
 
@@ -79,7 +79,7 @@ class FeedRatePanel(AnalysisPanel):
             self.message.setText("Not simulated: %s" % (error or ", ".join(self.obj.State) or "no Job or operation"))
         else:
             self.message.setText("")
-            self.fill_table(summary_rows(feedsim.summary_dict(result.summary, self.obj.Source.Label)))
+            self.fill_table(summary_rows(result.summary))
         self.plots.redraw()
 
     def fill_table(self, rows):
@@ -97,8 +97,8 @@ class FeedRatePanel(AnalysisPanel):
         result = self.result()
         if result is None:
             return False
-        plots.draw_feed_histograms(figure, feedsim.summary_dict(result.summary, self.obj.Source.Label),
-                                   stacked=not wide)
+        draw_feed_histograms(figure, result.summary,
+                             stacked=not wide)
         return True
 
     def fit_table_height(self):

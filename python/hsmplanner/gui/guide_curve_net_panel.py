@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from hsmplanner.app.guide_curve_net import MODES, NetParameters, build_guide_curve_net
+from hsmplanner.app.guide_curve_net import FOUR_STEP, MODES, NetParameters, build_guide_curve_net
 from hsmplanner.app.guide_curve_net_object import LIMITS, linked_shape
 
 from .preview import NetPreview
@@ -183,9 +183,9 @@ class GuideCurveNetPanel(TaskPanel):
 
     # --- computing ------------------------------------------------------------------------------------------
     def use_four_step(self):
-        self.mode.setCurrentText("4-step method")
-        self.k_box.setValue(0.75)
-        self.step_box.setValue(5.0)
+        self.mode.setCurrentText(FOUR_STEP)
+        self.k_box.setValue(NetParameters.k)
+        self.step_box.setValue(NetParameters.step)
 
     def parameters(self):
         direction = self.obj.Direction

@@ -4,6 +4,7 @@ Curves are drawn by role; each elementary area is filled between its two curves 
 the face), which is what the eye needs while K and P move; the exact split of the face waits for OK.
 """
 import FreeCADGui
+import hsmplanner
 import numpy as np
 from pivy import coin
 
@@ -44,8 +45,8 @@ class NetPreview:
         for index, (lower, upper) in enumerate(net.elementary_areas()):
             self.root.addChild(_strip(samples[lower], samples[upper], area_color(index)))
         for curve, points in zip(net.curves, samples):
-            self.root.addChild(_polyline(points, CURVE_COLORS.get(curve.role, (0, 0, 0)),
-                                         3.0 if curve.role != "boundary" else 2.0))
+            self.root.addChild(_polyline(points, CURVE_COLORS.get(curve.role.name, (0, 0, 0)),
+                                         3.0 if curve.role != hsmplanner.CurveRole.boundary else 2.0))
 
 
 def _polyline(points, color, width):

@@ -69,15 +69,16 @@ class ViewProviderGuideCurveNet(_StatelessViewProvider):
             self.colour(obj)
 
     def colour(self, obj):
+        from hsmplanner.app.guide_curve_net_object import display_edge_roles
+
         view = obj.ViewObject
-        faces, edges = obj.Shape.Faces, obj.Shape.Edges
-        if view is None or len(faces) != len(obj.FaceAreas) or len(edges) < len(obj.CurveRoles):
+        roles = display_edge_roles(obj)
+        if view is None or roles is None:
             return  # mid-recompute: the properties do not match yet
         view.DiffuseColor = [area_color(index) + (0.0,) for index in obj.FaceAreas]
         lift_over_the_part(obj)
-        border_count = len(edges) - len(obj.CurveRoles)  # the curve edges come last in the compound
-        view.LineColorArray = [REGION_BORDER + (0.0,)] * border_count + [
-            CURVE_COLORS.get(role, (0, 0, 0)) + (0.0,) for role in obj.CurveRoles]
+        view.LineColorArray = [(REGION_BORDER if role is None else CURVE_COLORS.get(role, (0, 0, 0))) + (0.0,)
+                               for role in roles]
 
     def doubleClicked(self, view_object):
         import FreeCADGui

@@ -150,11 +150,6 @@ TEST(CurveNet, AreasOfTheBottomFace) {
   for (size_t i = 0; i < regions.size(); ++i) EXPECT_NEAR(regions[i].surfaceArea, 140.0 * widths[i], 1e-3) << i;
 }
 
-TEST(CurveNet, UnknownModeIsRefused) {
-  EXPECT_EQ(parseNetMode("median_to_boundaries"), NetMode::MedianToBoundaries);
-  EXPECT_THROW(parseNetMode("sideways"), InputError);
-}
-
 TEST(CurveNet, ANetThatCouldNotEndIsRefusedBeforeAnyCurveIsBuilt) {
   NetSettings settings;
   settings.minGap = 0.0;  // no gap: the net would halve the distance for ever
