@@ -23,7 +23,7 @@ constexpr const char* kAxes[] = {"X", "Y", "Z"};
 }
 
 double number(const json& node, const std::string& key, const std::string& origin, double scale, bool positive) {
-  if (!node.contains(key)) bad(origin, "missing \"" + key + "\": add it (see resources/machines/README)");
+  if (!node.contains(key)) bad(origin, "missing \"" + key + "\": add it (see docs/machines.md)");
   const json& value = node.at(key);
   if (!value.is_number()) bad(origin, "\"" + key + "\" must be a number, got " + value.dump());
   const double x = value.get<double>();
