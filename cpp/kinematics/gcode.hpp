@@ -2,7 +2,8 @@
 //
 // Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21 (840D G70 G71
 // G700 G710), G90 G91,
-// G90.1 G91.1, G9 G60 G61 G61.1 G64 [P] G641 G642 G643 G644 G645, SOFT BRISK, CYCLE832(tolerance…),
+// G90.1 G91.1, G9 G60 G61 G61.1 G64 [P [Q]] G641 G642 G643 G644 G645, SOFT BRISK, CYCLE832(tolerance…),
+// COMPCAD COMPCURV COMPSURF COMPOF,
 // F S T D H M N, comments in ( ) and after ;, block delete /, % lines. Words that change nothing the
 // simulation sees (G40, G43, G54…, G80, G94, M3, COMPCAD, FFWON…) are accepted. Anything else is an
 // unknown word: skipped and counted, or refused, by option. A malformed line throws ParseError naming the
@@ -61,6 +62,12 @@ struct Block {
   double feed = 0.0;                                  // programmed, mm/s (0 for G0: rapid)
   PathMode pathMode = PathMode::Continuous;
   double tolerance = 0.0;                             // mm, for Rounding
+  // Merging of short G1 blocks before planning: LinuxCNC's naive-CAM tolerance (G64 P… Q…, Q defaults to P;
+  // 0: none), and whether the 840D's compressor is on (COMPCAD, COMPCURV, COMPSURF; CYCLE832 with a tolerance).
+  double mergeTolerance = 0.0;                        // mm
+  bool compressor = false;
+  double rateLength = 0.0;                            // mm the block-processing cycle counts (an 840D compressed
+                                                      // group, see merging.hpp); 0: the block's own length
   int jerkLimited = -1;                               // 1 SOFT, 0 BRISK, −1 the machine's default
   long line = 0;                                      // source line number, 1-based
 

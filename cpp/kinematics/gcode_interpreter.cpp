@@ -54,9 +54,10 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
       case 'F': words.fWord = w.value; words.hasFeed = true; break;
       case 'R': words.radiusWord = w.value; words.hasRadius = true; break;
       case 'P': words.pWord = w.value; words.hasP = true; break;
+      case 'Q': words.qWord = w.value; words.hasQ = true; break;
       case 'M': mWord(w); break;
       case 'T': ++stats_.toolChanges; break;
-      case 'N': case 'S': case 'D': case 'H': case 'Q': case 'L': break;  // no effect on the motion
+      case 'N': case 'S': case 'D': case 'H': case 'L': break;  // no effect on the motion
       default: unknown(w.text);
     }
   }
@@ -79,6 +80,10 @@ void Interpreter::applyModes(const LineWords& w) {
   if (w.g64) {
     pathMode_ = w.pWord > 0.0 ? PathMode::Rounding : PathMode::Continuous;
     tolerance_ = w.pWord > 0.0 ? w.pWord * unit_ : 0.0;
+    // LinuxCNC's naive-CAM detector merges G1 moves within Q (Q defaults to P; G64 alone: no merging).
+    if (w.hasQ && !(w.qWord >= 0.0))
+      throw ParseError(lineNumber_, "G64 Q" + number(w.qWord) + ": the naive-CAM tolerance is 0 or more (mm)");
+    mergeTolerance_ = (w.hasQ ? w.qWord : std::max(0.0, w.pWord)) * unit_;
   }
   if (w.newMotion >= 0) motion_ = w.newMotion;
 }
@@ -101,6 +106,8 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   block.line = lineNumber_;
   block.pathMode = w.exactStopHere ? PathMode::ExactStop : pathMode_;
   block.tolerance = tolerance_;
+  block.mergeTolerance = pathMode_ == PathMode::Rounding ? mergeTolerance_ : 0.0;
+  block.compressor = compressor_;
   block.jerkLimited = jerkLimited_;
   if (motion_ == 0) {
     block.motion = Motion::Rapid;
@@ -188,7 +195,11 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     // operator messages
   } else if (name == "CYCLE832" && k.call) {
     cycle832(k.arguments);
-  } else if (name == "COMPCAD" || name == "COMPCURV" || name == "COMPOF" || name == "COMPON" || name == "FFWON" ||
+  } else if (name == "COMPCAD" || name == "COMPCURV" || name == "COMPSURF") {
+    compressor_ = true;
+  } else if (name == "COMPOF") {
+    compressor_ = false;
+  } else if (name == "COMPON" || name == "FFWON" ||
              name == "FFWOF" || name == "TRAFOOF" || name == "UPATH" || name == "SPATH" ||
              name == "DYNNORM" || name == "DYNFINISH" || name == "DYNSEMIFIN" || name == "DYNROUGH") {
     // compressor, feed-forward, dynamic-response groups: no effect on this model
@@ -205,6 +216,7 @@ void Interpreter::cycle832(std::string_view arguments) {
   if (first.empty()) {
     pathMode_ = PathMode::Continuous;
     jerkLimited_ = 0;
+    compressor_ = false;
     return;
   }
   const auto parsed =
@@ -213,12 +225,14 @@ void Interpreter::cycle832(std::string_view arguments) {
   if (value == 0.0) {
     pathMode_ = PathMode::Continuous;
     jerkLimited_ = 0;
+    compressor_ = false;
     return;
   }
   roundingTolerance_ = value * unit_;
   pathMode_ = PathMode::Rounding;
   tolerance_ = roundingTolerance_;
   jerkLimited_ = 1;
+  compressor_ = true;  // the cycle switches the compressor on with the rounding (COMPCAD)
 }
 
 void Interpreter::arc(Block& block, const LineWords& words) {

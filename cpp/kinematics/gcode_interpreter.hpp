@@ -16,8 +16,8 @@ struct LineWords {
   bool exactStopHere = false, dwell = false, g64 = false;
   bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
-  double radiusWord = 0.0, pWord = -1.0, fWord = 0.0;
-  bool hasRadius = false, hasFeed = false, hasP = false;
+  double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0;
+  bool hasRadius = false, hasFeed = false, hasP = false, hasQ = false;
 
   bool anyAxis() const { return hasAxis[0] || hasAxis[1] || hasAxis[2]; }
   bool anyOffset() const { return hasOffset[0] || hasOffset[1] || hasOffset[2]; }
@@ -64,6 +64,8 @@ private:
   PathMode pathMode_ = PathMode::Continuous;
   double tolerance_ = 0.0;
   double roundingTolerance_ = 0.0;  // from CYCLE832 or ADIS; used by G641/G642
+  double mergeTolerance_ = 0.0;     // LinuxCNC G64 Q (naive CAM)
+  bool compressor_ = false;         // 840D COMPCAD/COMPCURV/COMPSURF
   int jerkLimited_ = -1;
 };
 

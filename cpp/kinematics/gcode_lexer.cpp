@@ -5,6 +5,7 @@
 #include <fast_float/fast_float.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace hsm::kinematics::detail {
@@ -88,21 +89,61 @@ void Line::parse(std::string_view raw, long number) {
   }
 }
 
-const char* Line::numberAt(const char* p, const char* end, double& value, std::string_view what, long number) {
-  const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
-  const char* token = p;  // what is quoted: up to the next blank, at most 24 characters
+namespace {
+// What a message quotes of the text at p: up to the next blank, at most 24 characters.
+std::string quoted(const char* p, const char* end) {
+  const char* token = p;
   while (token < end && token - p < 24 && *token != ' ' && *token != '\t') ++token;
+  return std::string(p, token);
+}
+
+// Digits with at most one point, at p (no sign): the value, correctly rounded, and where it stops; nullptr
+// when there are more than 15 significant digits (then fast_float reads it). A mantissa below 10^15 and a
+// power of ten up to 10^22 are exact doubles, so one division rounds correctly (Clinger's fast path): the
+// usual G-code number ("X12.3456") never reaches the general parser.
+const char* smallDecimal(const char* p, const char* end, double& value) {
+  static constexpr double kPowers[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  std::uint64_t mantissa = 0;
+  int digits = 0, fraction = 0;
+  bool point = false;
+  for (; p < end; ++p) {
+    if (*p >= '0' && *p <= '9') {
+      if (mantissa == 0 && *p == '0' && !point) continue;  // leading zeros are not significant
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+      if (++digits > 15) return nullptr;
+      if (point) ++fraction;
+    } else if (*p == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (fraction > 22) return nullptr;
+  value = static_cast<double>(mantissa) / kPowers[fraction];
+  return p;
+}
+}  // namespace
+
+const char* Line::numberAt(const char* p, const char* end, double& value, std::string_view what, long number) {
+  const bool negative = p < end && *p == '-';
+  const char* digits = p < end && (*p == '+' || *p == '-') ? p + 1 : p;
   if (!(digits < end && (isDigit(*digits) || (*digits == '.' && digits + 1 < end && isDigit(digits[1])))))
-    throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+    throw ParseError(number, "'" + std::string(what) + quoted(p, end) +
                                  "' is not a letter followed by a number (digits, an optional sign and point)");
-  const char* from = *p == '+' ? p + 1 : p;
-  const auto parsed = fast_float::from_chars(from, end, value, fast_float::chars_format::fixed);
-  const char* stop = parsed.ptr;
-  if (parsed.ec != std::errc() || (stop < end && (*stop == '.' || isDigit(*stop))))
-    throw ParseError(number, "'" + std::string(what) + std::string(p, token) + "' is not a number");
+  const char* stop = smallDecimal(digits, end, value);
+  if (stop != nullptr) {
+    if (negative) value = -value;
+  } else {
+    const auto parsed = fast_float::from_chars(*p == '+' ? p + 1 : p, end, value, fast_float::chars_format::fixed);
+    if (parsed.ec != std::errc()) throw ParseError(number, "'" + std::string(what) + quoted(p, end) + "' is not a number");
+    stop = parsed.ptr;
+  }
+  if (stop < end && (*stop == '.' || isDigit(*stop)))
+    throw ParseError(number, "'" + std::string(what) + quoted(p, end) + "' is not a number");
   if (stop < end && (*stop == 'e' || *stop == 'E') && stop + 1 < end &&
       (isDigit(stop[1]) || ((stop[1] == '+' || stop[1] == '-') && stop + 2 < end && isDigit(stop[2]))))
-    throw ParseError(number, "'" + std::string(what) + std::string(p, token) +
+    throw ParseError(number, "'" + std::string(what) + quoted(p, end) +
                                  "': G-code numbers have no exponent; write the number in full");
   if (!(std::abs(value) <= kMaxWordValue))
     throw ParseError(number, "'" + std::string(what) + std::string(p, std::min<size_t>(stop - p, 24)) +

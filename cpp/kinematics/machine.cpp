@@ -81,6 +81,7 @@ void checkMachine(const MachineModel& m) {
   check(m.lookAheadBlocks, 1, 100000, "look-ahead", 1.0, "blocks");
   check(m.cornerTolerance, 0.0, 10.0, "corner tolerance", 1.0, "mm");
   check(m.arcTolerance, 1e-4, 1.0, "arc tolerance", 1.0, "mm");
+  check(m.compressorPathLimit, 0.0, 1000.0, "compressor path limit", 1.0, "mm");
 }
 
 MachineModel machineFromJson(const std::string& text, const std::string& origin) {
@@ -112,6 +113,8 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
   m.cornerTolerance = number(root, "corner_tolerance_mm", origin, 1.0, false);
   m.jerkLimitedByDefault = root.value("jerk_limited_by_default", m.controller == ControllerKind::Siemens840D);
   if (root.contains("arc_tolerance_mm")) m.arcTolerance = number(root, "arc_tolerance_mm", origin, 1.0, true);
+  if (root.contains("compressor_path_limit_mm"))
+    m.compressorPathLimit = number(root, "compressor_path_limit_mm", origin, 1.0, true);
   try {
     checkMachine(m);
   } catch (const InputError& error) {
@@ -136,7 +139,8 @@ std::string machineToJson(const MachineModel& m) {
                {"look_ahead_blocks", m.lookAheadBlocks},
                {"corner_tolerance_mm", m.cornerTolerance},
                {"jerk_limited_by_default", m.jerkLimitedByDefault},
-               {"arc_tolerance_mm", m.arcTolerance}};
+               {"arc_tolerance_mm", m.arcTolerance},
+               {"compressor_path_limit_mm", m.compressorPathLimit}};
   return root.dump(2);
 }
 

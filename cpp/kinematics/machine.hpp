@@ -32,6 +32,7 @@ struct MachineModel {
   double cornerTolerance = 0.01;      // mm: rounding (840D G642), blending (LinuxCNC G64 P0), junction deviation (grbl)
   bool jerkLimitedByDefault = true;   // 840D: SOFT at start-up
   double arcTolerance = 0.002;        // mm: grbl cuts arcs into chords within this
+  double compressorPathLimit = 20.0;  // mm: 840D compressor, MD20170 COMPRESS_BLOCK_PATH_LIMIT (merging.hpp)
 };
 
 // Checks every limit of a model (positive, finite, in a range a machine can have): InputError names the

@@ -17,7 +17,7 @@ double stopAndGoLoss(double speed, const Dynamics& d) { return speedChangeTime(s
 
 double curvatureSpeed(double radius, const Dynamics& d) {
   double v = std::sqrt(d.acceleration * radius);
-  if (d.jerkLimited) v = std::min(v, std::cbrt(d.jerk * radius * radius));
+  if (d.jerkLimited) v = std::min(v, cubeRoot(d.jerk * radius * radius));
   return v;
 }
 
@@ -25,6 +25,15 @@ double projectedLimit(const Eigen::Vector3d& limits, const Eigen::Vector3d& u) {
   double result = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i)
     if (std::abs(u[i]) > 1e-12) result = std::min(result, limits[i] / std::abs(u[i]));
+  return result;
+}
+
+double inPlaneLimit(const Eigen::Vector3d& limits, const Eigen::Vector3d& planeNormal) {
+  double result = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double inPlane = std::sqrt(std::max(0.0, 1.0 - planeNormal[i] * planeNormal[i]));
+    if (inPlane > 1e-12) result = std::min(result, limits[i] / inPlane);
+  }
   return result;
 }
 

@@ -2,6 +2,8 @@
 
 #include "common/error.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -67,17 +69,20 @@ Segment Planner::prepare(const Block& block, long source) const {
     }
     curvatureLimit = curvatureSpeed(block.radius, normal);
   } else {
+    // Lines take the full axis acceleration along them: LinuxCNC 2.9 joins them by tangent blend arcs,
+    // which have their own share (its parabolic blends, which halve it, are the fallback we do not model).
     const Eigen::Vector3d u = s.startTangent;
     s.dynamics.acceleration = projectedLimit(m.maxAcceleration, u);
     s.dynamics.jerk = projectedLimit(m.maxJerk, u);
     velocity = projectedLimit(m.maxVelocity, u);
     rapidVelocity = projectedLimit(m.rapidVelocity, u);
-    if (linuxcnc && block.pathMode != PathMode::ExactStop)
-      s.dynamics.acceleration *= kLinuxCncTangentShare;  // blendable lines keep half for the blends
   }
   s.programmed = rapid ? rapidVelocity : block.feed;
   s.cruise = std::min({s.programmed, velocity, curvatureLimit});
-  if (m.interpolationCycle > 0.0) s.cruise = std::min(s.cruise, s.length / m.interpolationCycle);
+  // Block-processing limit: a block lasts at least one interpolation cycle (an 840D compressed group: the
+  // group does).
+  const double rateLength = block.rateLength > 0.0 ? block.rateLength : s.length;
+  if (m.interpolationCycle > 0.0) s.cruise = std::min(s.cruise, rateLength / m.interpolationCycle);
   return s;
 }
 
@@ -121,10 +126,13 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
       const double tolerance = before.block.pathMode == PathMode::Rounding ? before.block.tolerance : kInfinity;
       const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
                                    projectedLimit(m.maxAcceleration, after.startTangent));
+      // The blend arc is a curve in the plane of the two blocks: its normal acceleration may point anywhere
+      // across the path, so it counts on the axes' limits within that plane, whatever the blocks' direction.
+      const Eigen::Vector3d binormal = before.endTangent.cross(after.startTangent);
+      const double across = binormal.norm() > 1e-12 ? inPlaneLimit(m.maxAcceleration, binormal.normalized()) : full;
       const double radius = blendRadius(phi, tolerance, shorter);
-      const double blend = std::sqrt(kLinuxCncNormalShare * full * radius);
-      // A blend that takes half of each block leaves no straight part: the blocks run at the blend's speed.
-      if (radius < blendRadius(phi, tolerance, kInfinity)) j.adjacentCap = blend;
+      const double blend = std::sqrt(kLinuxCncNormalShare * across * radius);
+      j.blend = radius * std::tan(0.5 * phi);  // the tangent length the arc takes from each block
       const double kink = kLinuxCncKinkShare * full * m.interpolationCycle / phi;
       v = std::max(blend, kink);
       break;
@@ -146,6 +154,12 @@ void Planner::add(const Block& block, long source) {
   // A block waits here until its successor is known: the junction between them may lower both cruises.
   if (havePending_) {
     const Junction j = junction(pending_, segment);
+    // A block whose blend arcs take all of it (half at each end, both at most half of it) has no straight
+    // part left: it runs at its blends' speed. Otherwise it cruises between them, however short the blends.
+    if (j.blend > 0.0 && pending_.blendStart + j.blend >= pending_.length * (1.0 - 1e-9))
+      pending_.cruise = std::min(pending_.cruise, std::max(pending_.blendStartSpeed, j.speed));
+    segment.blendStart = j.blend;
+    segment.blendStartSpeed = j.speed;
     pending_.cruise = std::min(pending_.cruise, j.adjacentCap);
     segment.cruise = std::min(segment.cruise, j.adjacentCap);
     pending_.junction = std::min(pending_.junction, pending_.cruise);
@@ -223,6 +237,11 @@ void Planner::commitOldest() {
 
 void Planner::finish() {
   if (havePending_) {
+    // LinuxCNC keeps a parabolic end on the last line of a blending mode (no next block to blend it with
+    // by an arc), and a parabolic blend halves the line's acceleration (tp.c, tpGetScaledAccel).
+    const bool parabolicEnd = machine_.controller == ControllerKind::LinuxCNC && !pending_.block.isArc() &&
+                              pending_.block.pathMode != PathMode::ExactStop;
+    if (parabolicEnd) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
     if (count_ == ring_.size()) commitOldest();
     push(std::move(pending_));
     havePending_ = false;

@@ -29,6 +29,8 @@ struct Segment {
   Dynamics dynamics;
   double position = 0.0;    // mm: distance along the program at the start of the block
   double entry = 0.0;       // entry speed, final once the block before it is committed
+  double blendStart = 0.0;  // mm of the block a blend arc at its start takes (LinuxCNC), and that arc's speed
+  double blendStartSpeed = 0.0;
   Eigen::Vector3d startTangent, endTangent;
 };
 
@@ -49,6 +51,7 @@ private:
     double speed = 0.0;                                          // the most the junction allows
     double adjacentCap = std::numeric_limits<double>::infinity();  // the most both blocks allow when the
                                                                  // junction is really a curve (short blocks)
+    double blend = 0.0;  // mm of each block a tangent blend arc takes (LinuxCNC: R·tan(φ/2)), 0 for none
   };
   Segment prepare(const Block& block, long source) const;
   Junction junction(const Segment& before, const Segment& after) const;

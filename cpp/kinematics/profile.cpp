@@ -19,7 +19,7 @@ double reachableSpeed(double v0, double distance, const Dynamics& d) {
   // Jerk only: distance = (2·v0 + s²)·s/√J with s = sqrt(Δv): s³ + p·s − q = 0, one real root (Cardano).
   const double p = 2.0 * v0, q = distance * std::sqrt(j);
   const double root = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
-  const double s = std::cbrt(q / 2.0 + root) + std::cbrt(q / 2.0 - root);
+  const double s = cubeRoot(q / 2.0 + root) + cubeRoot(q / 2.0 - root);
   const double dv = s * s;
   if (dv <= a * a / j) return v0 + dv;
   // Acceleration reached: (v1² − v0²)/(2A) + (v0 + v1)·A/(2J) = distance, a quadratic in v1.

@@ -84,6 +84,11 @@ void RunTimer::time(size_t first, size_t last) {
   double offset = 0.0;
   for (size_t k = first; k < last; ++k) {
     const Segment& s = run_[k].segment;
+    // Nothing on the profile is faster than its peak: most blocks are checked without solving for a time.
+    if (p.peak <= s.cruise * (1 + kSlack) && (k == first || p.peak <= s.junction * (1 + kSlack))) {
+      offset += s.length;
+      continue;
+    }
     const double inside = std::clamp(peakFrom, offset, offset + s.length);
     const double highest = stateAt(p, timeAtDistance(p, inside, dynamics), dynamics).speed;
     const bool overJunction =

@@ -2,6 +2,7 @@
 
 #include "common/text.hpp"
 
+#include "kinematics/merging.hpp"
 #include "kinematics/planner.hpp"
 #include "kinematics/runs.hpp"
 
@@ -170,9 +171,11 @@ SimulationResult run(const MachineModel& machine, const SimulationOptions& optio
   detail::Planner planner(machine, [&](const detail::Segment& s, double entry, double exit, bool pinned) {
     runs.add(s, entry, exit, pinned);
   });
-  Block block;
   long source = 0;
-  while (next(block)) feed(planner, machine, block, source++, 0);
+  BlockMerger merger(machine, [&](const Block& b) { feed(planner, machine, b, source++, 0); });
+  Block block;
+  while (next(block)) merger.add(block);
+  merger.finish();
   planner.finish();
   runs.finish();
   collector.finish(stats());

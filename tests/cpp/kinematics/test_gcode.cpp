@@ -173,3 +173,15 @@ TEST(Gcode, FuzzedProgramsNeverCrash) {
   EXPECT_GT(parsed, 1000);
   EXPECT_GT(refused, 1000);
 }
+
+TEST(GcodeReader, NumbersReadExactlyAsTheGeneralParserReadsThem) {
+  // The fast path (up to 15 digits) and fast_float (beyond) give the same, correctly rounded doubles.
+  for (const char* text : {"12.3456", "0.05", "-0.0001", "+7", "5.", ".25", "-.5", "123456789.123456", "0.1",
+                           "999999999", "0.000000000000000000000001", "123456789.12345678", "0.30000000000000004"}) {
+    const auto blocks = readProgram(std::string("G0 X") + text + "\n");
+    ASSERT_EQ(blocks.size(), std::strtod(text, nullptr) == 0.0 ? 0u : 1u) << text;
+    if (!blocks.empty()) EXPECT_EQ(blocks[0].end.x(), std::strtod(text, nullptr)) << text;
+  }
+  for (const char* bad : {"1.2.3", "1e5", "--1", "1..2"})
+    EXPECT_THROW(readProgram(std::string("G0 X") + bad + "\n"), ParseError) << bad;
+}

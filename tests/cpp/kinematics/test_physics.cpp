@@ -64,3 +64,11 @@ TEST(Physics, ThePlanAxesAreTheSlowestOfXAndY) {
     EXPECT_FALSE(jerkLimitedByDefault(machine));
   }
 }
+
+TEST(Physics, CubeRootMatchesTheLibrary) {
+  for (double x : {1e-300, 1e-12, 0.001, 0.5, 1.0, 2.0, 27.0, 3.3e7, 1e15, 1e300, -8.0, -1e-9})
+    EXPECT_NEAR(cubeRoot(x), std::cbrt(x), 4e-16 * std::abs(std::cbrt(x))) << x;
+  EXPECT_EQ(cubeRoot(0.0), 0.0);
+  EXPECT_TRUE(std::isnan(cubeRoot(std::nan(""))));
+  EXPECT_EQ(cubeRoot(std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
+}
