@@ -104,22 +104,19 @@ std::string quoted(const char* p, const char* end) {
 const char* smallDecimal(const char* p, const char* end, double& value) {
   static constexpr double kPowers[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
+  while (p < end && *p == '0') ++p;  // leading zeros are not significant
   std::uint64_t mantissa = 0;
-  int digits = 0, fraction = 0;
-  bool point = false;
-  for (; p < end; ++p) {
-    if (*p >= '0' && *p <= '9') {
-      if (mantissa == 0 && *p == '0' && !point) continue;  // leading zeros are not significant
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-      if (++digits > 15) return nullptr;
-      if (point) ++fraction;
-    } else if (*p == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
+  const char* from = p;
+  for (; p < end && digit(*p); ++p) mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+  long digits = p - from, fraction = 0;
+  if (p < end && *p == '.') {
+    from = ++p;
+    for (; p < end && digit(*p); ++p) mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+    fraction = p - from;
+    digits += fraction;
   }
-  if (fraction > 22) return nullptr;
+  if (digits > 15 || fraction > 22) return nullptr;  // (the mantissa may have overflowed: not used)
   value = static_cast<double>(mantissa) / kPowers[fraction];
   return p;
 }

@@ -13,9 +13,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace hsm::kinematics {
 
@@ -43,18 +45,33 @@ inline double cubeRoot(double x) {
   return x < 0.0 ? -y : y;
 }
 
+// (The small functions are inline: the planner calls them for every block.)
+
 // Time of a speed change by Δv ≥ 0 (0 for Δv ≤ 0).
-double speedChangeTime(double dv, const Dynamics& d);
+inline double speedChangeTime(double dv, const Dynamics& d) {
+  if (dv <= 0.0) return 0.0;
+  if (!d.jerkLimited) return dv / d.acceleration;
+  const double a = d.acceleration, j = d.jerk;
+  return dv <= a * a / j ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
+}
 
 // The time a stop from `speed` and a start back to it cost over cruising through the same distance: the
 // braking and the start each cover speed·t/2 in t, so together they lose one change time t.
-double stopAndGoLoss(double speed, const Dynamics& d);
+inline double stopAndGoLoss(double speed, const Dynamics& d) { return speedChangeTime(speed, d); }
 
 // Highest steady speed on a curve of radius `radius` mm.
-double curvatureSpeed(double radius, const Dynamics& d);
+inline double curvatureSpeed(double radius, const Dynamics& d) {
+  const double v = std::sqrt(d.acceleration * radius);
+  return d.jerkLimited ? std::min(v, cubeRoot(d.jerk * radius * radius)) : v;
+}
 
 // min over the axes of limits_i / |u_i|: per-axis limits projected on direction u (infinite for u = 0).
-double projectedLimit(const Eigen::Vector3d& limits, const Eigen::Vector3d& u);
+inline double projectedLimit(const Eigen::Vector3d& limits, const Eigen::Vector3d& u) {
+  double result = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(u[i]) > 1e-12) result = std::min(result, limits[i] / std::abs(u[i]));
+  return result;
+}
 
 // Per-axis limits within a plane (unit normal n): the radius of the largest circle about the origin inside
 // the box of the limits, cut by the plane, min over the axes of limits_i / sqrt(1 − n_i²) (axes along n

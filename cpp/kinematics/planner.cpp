@@ -18,12 +18,21 @@ constexpr double kLinuxCncNormalShare = 0.866;
 constexpr double kLinuxCncTangentShare = 0.5;
 constexpr double kLinuxCncKinkShare = 0.2165;  // a kink φ in one cycle T is taken while v·φ/T ≤ 0.2165·a
 
-// Radius of the arc that rounds a corner of deflection φ within `tolerance` of the corner point, using at most
-// half of each block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
-double blendRadius(double phi, double tolerance, double shorter) {
-  const double c = std::cos(0.5 * phi);
+// A corner of deflection φ in the half-angle terms its blends need, from cos φ alone (no acos, cos, tan:
+// they were a tenth of the simulation's time).
+struct Corner {
+  double cosHalf, sinHalf, tanHalf, sinPhi;
+  explicit Corner(double cosine)
+      : cosHalf(std::sqrt(0.5 * (1.0 + cosine))), sinHalf(std::sqrt(0.5 * (1.0 - cosine))),
+        tanHalf(sinHalf / cosHalf), sinPhi(2.0 * sinHalf * cosHalf) {}
+};
+
+// Radius of the arc that rounds a corner within `tolerance` of the corner point, using at most half of each
+// block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
+double blendRadius(const Corner& corner, double tolerance, double shorter) {
+  const double c = corner.cosHalf;
   const double byTolerance = std::isfinite(tolerance) ? tolerance * c / std::max(1e-300, 1.0 - c) : kInfinity;
-  const double byLength = 0.5 * shorter / std::tan(0.5 * phi);
+  const double byLength = 0.5 * shorter / corner.tanHalf;
   return std::min(byTolerance, byLength);
 }
 }  // namespace
@@ -101,7 +110,7 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
     return j;
   }
   if (cosine <= -1.0 + 1e-9) return j;  // the path turns back
-  const double phi = std::acos(cosine);
+  const Corner corner(cosine);
   const double shorter = std::min(before.length, after.length);
   Dynamics d = before.dynamics;
   d.acceleration = std::min(before.dynamics.acceleration, after.dynamics.acceleration);
@@ -114,11 +123,11 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
       const double jump = projectedLimit(m.velocityJump, after.startTangent - before.endTangent);
       v = jump;
       if (before.block.pathMode == PathMode::Rounding)
-        v = std::max(v, curvatureSpeed(blendRadius(phi, before.block.tolerance, shorter), d));
+        v = std::max(v, curvatureSpeed(blendRadius(corner, before.block.tolerance, shorter), d));
       // A chain of short blocks is a curve: its radius through the three points bounds the speed, at the
       // junction and along both blocks (the look-ahead sees the curve, not the chords).
       const double chord = (after.block.end - before.block.start).norm();
-      j.adjacentCap = curvatureSpeed(chord / (2.0 * std::sin(phi)), d);
+      j.adjacentCap = curvatureSpeed(chord / (2.0 * corner.sinPhi), d);
       v = std::min(v, j.adjacentCap);
       break;
     }
@@ -130,17 +139,17 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
       // across the path, so it counts on the axes' limits within that plane, whatever the blocks' direction.
       const Eigen::Vector3d binormal = before.endTangent.cross(after.startTangent);
       const double across = binormal.norm() > 1e-12 ? inPlaneLimit(m.maxAcceleration, binormal.normalized()) : full;
-      const double radius = blendRadius(phi, tolerance, shorter);
+      const double radius = blendRadius(corner, tolerance, shorter);
       const double blend = std::sqrt(kLinuxCncNormalShare * across * radius);
-      j.blend = radius * std::tan(0.5 * phi);  // the tangent length the arc takes from each block
-      const double kink = kLinuxCncKinkShare * full * m.interpolationCycle / phi;
+      j.blend = radius * corner.tanHalf;  // the tangent length the arc takes from each block
+      const double kink = kLinuxCncKinkShare * full * m.interpolationCycle / std::acos(cosine);
       v = std::max(blend, kink);
       break;
     }
     case ControllerKind::Grbl: {
       const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
                                    projectedLimit(m.maxAcceleration, after.startTangent));
-      v = std::sqrt(full * blendRadius(phi, m.cornerTolerance, kInfinity));
+      v = std::sqrt(full * blendRadius(corner, m.cornerTolerance, kInfinity));
       break;
     }
   }
@@ -188,14 +197,13 @@ void Planner::push(Segment segment) {
   const Segment& newest = at(index);
   const double end = nextPosition_;
   const bool newestBinds =
-      index > 0 && newest.junction <= reachableSpeed(0.0, end - newest.position, newest.dynamics);
+      index > 0 && withinReach(newest.junction, 0.0, end - newest.position, newest.dynamics);
   while (!binding_.empty()) {
     const Segment& b = at(binding_.back() - committed_);
     const double downstreamSpeed = newestBinds ? newest.junction : 0.0;
     const double downstreamPosition = newestBinds ? newest.position : end;
-    const double reachable = reachableSpeed(downstreamSpeed, downstreamPosition - b.position,
-                                            weakest(b.dynamics, newest.dynamics));
-    if (b.junction <= reachable) break;
+    if (withinReach(b.junction, downstreamSpeed, downstreamPosition - b.position, weakest(b.dynamics, newest.dynamics)))
+      break;
     binding_.pop_back();
   }
   if (newestBinds) binding_.push_back(committed_ + index);
@@ -211,7 +219,7 @@ double Planner::plannedEntry(size_t i) {
   const Segment& downstream = binding_.empty() ? at(count_ - 1) : at(binding_.front() - committed_);
   const double speed = binding_.empty() ? 0.0 : downstream.junction;
   const double position = binding_.empty() ? nextPosition_ : downstream.position;
-  return std::min(s.junction, reachableSpeed(speed, position - s.position, weakest(s.dynamics, downstream.dynamics)));
+  return cappedReach(s.junction, speed, position - s.position, weakest(s.dynamics, downstream.dynamics));
 }
 
 void Planner::commitOldest() {
@@ -221,7 +229,7 @@ void Planner::commitOldest() {
   forwardDynamics_ = weakest(forwardDynamics_, s.dynamics);
   const double planned = hasNext ? plannedEntry(1) : 0.0;  // the machine stops at the end of the program
   const double cap = hasNext ? at(1).junction : 0.0;
-  const double exit = std::min(planned, reachableSpeed(forwardSpeed_, end - forwardPosition_, forwardDynamics_));
+  const double exit = cappedReach(planned, forwardSpeed_, end - forwardPosition_, forwardDynamics_);
   const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12);
   if (pinned) {
     forwardSpeed_ = exit;

@@ -5,11 +5,6 @@
 
 namespace hsm::kinematics {
 
-double changeTime(double v0, double v1, const Dynamics& d) { return speedChangeTime(std::abs(v1 - v0), d); }
-
-double changeDistance(double v0, double v1, const Dynamics& d) {
-  return 0.5 * (v0 + v1) * changeTime(v0, v1, d);
-}
 
 double reachableSpeed(double v0, double distance, const Dynamics& d) {
   if (distance <= 0.0) return v0;

@@ -6,10 +6,18 @@
 
 namespace hsm::kinematics {
 
-double changeTime(double v0, double v1, const Dynamics& d);
-double changeDistance(double v0, double v1, const Dynamics& d);
+inline double changeTime(double v0, double v1, const Dynamics& d) { return speedChangeTime(std::abs(v1 - v0), d); }
+inline double changeDistance(double v0, double v1, const Dynamics& d) { return 0.5 * (v0 + v1) * changeTime(v0, v1, d); }
 // The highest speed reachable from v0 (accelerating, or decelerating backwards) within `distance` mm.
 double reachableSpeed(double v0, double distance, const Dynamics& d);
+// Whether v is reachable from v0 within `distance`, and min(v, reachableSpeed(v0, distance, d)): both
+// without solving the cubic of reachableSpeed when v is within reach (the planner's usual case).
+inline bool withinReach(double v, double v0, double distance, const Dynamics& d) {
+  return v <= v0 || changeDistance(v0, v, d) <= distance;
+}
+inline double cappedReach(double v, double v0, double distance, const Dynamics& d) {
+  return withinReach(v, v0, distance, d) ? v : reachableSpeed(v0, distance, d);
+}
 
 // The profile of one block: from v0 up to the peak, cruise at the peak, down to v1.
 struct BlockProfile {

@@ -11,13 +11,16 @@ constexpr size_t kLongestRun = 100000;  // blocks; a longer run is cut (memory s
 constexpr double kSlack = 1e-9;         // relative: a profile this much above a limit still respects it
 }  // namespace
 
-double timeAtDistance(const BlockProfile& p, double distance, const Dynamics& d) {
+double timeAtDistance(const BlockProfile& p, double distance, const Dynamics& d, double since, double sinceDistance,
+                      double sinceSpeed) {
   const double up = changeDistance(p.v0, p.peak, d);
   if (distance <= 0.0) return 0.0;
   if (distance >= up && distance <= up + p.peak * p.cruiseTime)
     return p.accelTime + (distance - up) / p.peak;  // the cruise: linear
-  double lo = 0.0, hi = p.time;
-  double t = std::clamp(distance / std::max(0.5 * (p.v0 + p.peak), 1e-12), lo, hi);
+  const bool hinted = sinceSpeed > 1e-12 && sinceDistance <= distance;
+  double lo = hinted ? since : 0.0, hi = p.time;
+  double t = std::clamp(hinted ? since + (distance - sinceDistance) / sinceSpeed
+                               : distance / std::max(0.5 * (p.v0 + p.peak), 1e-12), lo, hi);
   for (int i = 0; i < 60; ++i) {
     const ProfileState s = stateAt(p, t, d);
     const double error = s.distance - distance;
@@ -112,9 +115,11 @@ void RunTimer::emitFrom(const BlockProfile& p, const Dynamics& d, size_t first, 
   for (size_t k = first; k < last; ++k) {
     const Segment& s = run_[k].segment;
     const double end = offset + s.length;
-    const double after = k + 1 == last ? p.time : timeAtDistance(p, end, d);
+    const double after = k + 1 == last ? p.time : timeAtDistance(p, end, d, before, offset, entry);
     const double exit = k + 1 == last ? p.v1 : stateAt(p, after, d).speed;
-    const double peak = stateAt(p, timeAtDistance(p, std::clamp(peakFrom, offset, end), d), d).speed;
+    // The speed rises to the peak at peakFrom and never rises again: a block's fastest point is its exit
+    // before it, its entry after it, the peak across it.
+    const double peak = end <= peakFrom ? exit : offset >= peakFrom ? entry : p.peak;
     emit_(s, {entry, exit, std::max({peak, entry, exit}), std::min(entry, exit), after - before});
     offset = end;
     before = after;

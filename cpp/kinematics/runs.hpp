@@ -45,6 +45,9 @@ private:
 };
 
 // Time at which a profile has covered `distance` (Newton on the distance, guarded by bisection).
-double timeAtDistance(const BlockProfile& profile, double distance, const Dynamics& dynamics);
+// The time at which the profile has covered `distance`. A known earlier point (time `since`, at `speed`)
+// starts Newton next to the answer: consecutive short blocks then cost one or two steps each.
+double timeAtDistance(const BlockProfile& profile, double distance, const Dynamics& dynamics, double since = 0.0,
+                      double sinceDistance = 0.0, double sinceSpeed = -1.0);
 
 }  // namespace hsm::kinematics::detail
