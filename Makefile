@@ -9,7 +9,7 @@ PYTHON := /usr/bin/python3
 ASAN_DIR ?= build-asan
 FUZZ_SECONDS ?= 60
 
-.PHONY: all deps configure build link test test-cpp test-python test-gui test-asan fuzz demo bench clean
+.PHONY: all deps configure build link test test-cpp test-python test-gui test-asan test-oracle fuzz demo bench clean
 
 all: build
 
@@ -49,6 +49,13 @@ test-asan: $(ASAN_DIR)/CMakeCache.txt
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/cpp/lsan.supp \
 	  ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
+
+# LinuxCNC 2.9 as an oracle for the feed-rate simulator (docs/oracle.md), not part of `make test`: runs each
+# program of tests/oracle/programs/ in a headless LinuxCNC simulation (installs linuxcnc-uspace if missing;
+# real time, about 2 min) and in hsm-feedsim with the same limits; prints the table of times and writes it
+# to $(BUILD_DIR)/oracle/ (oracle.md, oracle.csv). Exit code 0 unless LinuxCNC or hsm-feedsim failed.
+test-oracle: build
+	$(PYTHON) tests/oracle/run_oracle.py --out $(BUILD_DIR)/oracle
 
 # Each harness for FUZZ_SECONDS (default 60) on its corpus; new inputs are added to tests/fuzz/corpus/.
 fuzz: $(ASAN_DIR)/CMakeCache.txt

@@ -16,16 +16,8 @@ constexpr double kTangentCosine = 1.0 - 1e-12;  // junctions straighter than thi
 // LinuxCNC 2.9 splits the acceleration on arcs and blends: 0.866·a normal, 0.5·a tangential (0.866² + 0.5² = 1).
 constexpr double kLinuxCncNormalShare = 0.866;
 constexpr double kLinuxCncTangentShare = 0.5;
-constexpr double kLinuxCncKinkShare = 0.2165;  // a kink φ in one cycle T is taken while v·φ/T ≤ 0.2165·a
-
-// A corner of deflection φ in the half-angle terms its blends need, from cos φ alone (no acos, cos, tan:
-// they were a tenth of the simulation's time).
-struct Corner {
-  double cosHalf, sinHalf, tanHalf, sinPhi;
-  explicit Corner(double cosine)
-      : cosHalf(std::sqrt(0.5 * (1.0 + cosine))), sinHalf(std::sqrt(0.5 * (1.0 - cosine))),
-        tanHalf(sinHalf / cosHalf), sinPhi(2.0 * sinHalf * cosHalf) {}
-};
+constexpr double kLinuxCncKinkRatio = 0.1;
+const double kLinuxCncReversal = std::cos(178.0 * M_PI / 180.0);  // ARC_BLEND_KINK_RATIO: a kink's share of the axis acceleration
 
 // Radius of the arc that rounds a corner within `tolerance` of the corner point, using at most half of each
 // block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
@@ -73,8 +65,13 @@ Segment Planner::prepare(const Block& block, long source) const {
     rapidVelocity = weakest(m.rapidVelocity);
     Dynamics normal = s.dynamics;
     if (linuxcnc) {
+      // LinuxCNC keeps 0.866·a across the arc, and along it what the arc's top speed leaves
+      // (pmCircleActualMaxVel): a·sqrt(1 − (v_max²/R / a)²) with v_max the machine's speed on the arc, so half
+      // of a on arcs tight enough that the top speed is the curvature's.
       normal.acceleration *= kLinuxCncNormalShare;
-      s.dynamics.acceleration *= kLinuxCncTangentShare;
+      const double top = std::min(velocity, std::sqrt(normal.acceleration * block.radius));
+      const double centripetal = std::min(top * top / block.radius, normal.acceleration) / s.dynamics.acceleration;
+      s.dynamics.acceleration *= std::sqrt(std::max(0.0, 1.0 - centripetal * centripetal));
     }
     curvatureLimit = curvatureSpeed(block.radius, normal);
   } else {
@@ -109,7 +106,8 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
     j.speed = limit;
     return j;
   }
-  if (cosine <= -1.0 + 1e-9) return j;  // the path turns back
+  // The path turns back (LinuxCNC stops at reversals within 2°, even in G64).
+  if (cosine <= (m.controller == ControllerKind::LinuxCNC ? kLinuxCncReversal : -1.0 + 1e-9)) return j;
   const Corner corner(cosine);
   const double shorter = std::min(before.length, after.length);
   Dynamics d = before.dynamics;
@@ -131,21 +129,9 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
       v = std::min(v, j.adjacentCap);
       break;
     }
-    case ControllerKind::LinuxCNC: {
-      const double tolerance = before.block.pathMode == PathMode::Rounding ? before.block.tolerance : kInfinity;
-      const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
-                                   projectedLimit(m.maxAcceleration, after.startTangent));
-      // The blend arc is a curve in the plane of the two blocks: its normal acceleration may point anywhere
-      // across the path, so it counts on the axes' limits within that plane, whatever the blocks' direction.
-      const Eigen::Vector3d binormal = before.endTangent.cross(after.startTangent);
-      const double across = binormal.norm() > 1e-12 ? inPlaneLimit(m.maxAcceleration, binormal.normalized()) : full;
-      const double radius = blendRadius(corner, tolerance, shorter);
-      const double blend = std::sqrt(kLinuxCncNormalShare * across * radius);
-      j.blend = radius * corner.tanHalf;  // the tangent length the arc takes from each block
-      const double kink = kLinuxCncKinkShare * full * m.interpolationCycle / std::acos(cosine);
-      v = std::max(blend, kink);
+    case ControllerKind::LinuxCNC:
+      v = linuxCncCorner(before, after, corner, cosine, limit, j);
       break;
-    }
     case ControllerKind::Grbl: {
       const double full = std::min(projectedLimit(m.maxAcceleration, before.endTangent),
                                    projectedLimit(m.maxAcceleration, after.startTangent));
@@ -157,27 +143,128 @@ Planner::Junction Planner::junction(const Segment& before, const Segment& after)
   return j;
 }
 
+// LinuxCNC 2.9's corner (tp.c tpSetupTangent, blendmath.c blendComputeParameters, as the oracle measured it).
+// A kink that takes less than a tenth of the axis limits in one cycle is passed as tangent (both blocks give
+// up that share of their acceleration). Otherwise a tangent blend arc, within the tolerance (G64 P, or a
+// quarter of the shorter block without P) and half of each block, planned for the requested speed and at
+// least as large as an equivalent parabolic blend would run; or the kink's own speed where that is faster.
+double Planner::linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
+                               double limit, Junction& j) const {
+  const MachineModel& m = machine_;
+  const double k = linuxCncKink(before, after, limit);
+  if (k < kLinuxCncKinkRatio) {
+    j.kinkShare = k;
+    return limit;
+  }
+  const double shorter = std::min(before.block.length(), after.block.length());
+  const double tolerance = before.block.pathMode == PathMode::Rounding ? before.block.tolerance : 0.25 * shorter;
+  // The arc is a curve in the plane of the two blocks: its normal acceleration may point anywhere across the
+  // path, so it counts on the axes' limits within that plane, whatever the blocks' direction.
+  const Eigen::Vector3d binormal = before.endTangent.cross(after.startTangent);
+  const double full = std::min(before.dynamics.acceleration, after.dynamics.acceleration);
+  const double across = binormal.norm() > 1e-12 ? inPlaneLimit(m.maxAcceleration, binormal.normalized()) : full;
+  const double normal = kLinuxCncNormalShare * across;
+  const double phi = std::atan2(corner.sinPhi, cosine);
+  const double half = std::min(std::min(before.length, 0.5 * before.block.length()), 0.5 * after.length);
+  const double geometric = blendRadius(corner, tolerance, 2.0 * half);
+  const double plan = std::min(std::sqrt(normal * geometric), limit);
+  const double kink = limit * kLinuxCncKinkRatio / k;
+  // No arc where the kink is faster, nor between blocks too short to last a servo cycle at the programmed
+  // feed: the oracle shows LinuxCNC passing chains of such chords (G64 P… Q0) at the kink's speed.
+  const double cycleFeed = std::min(before.programmed, after.programmed) * m.interpolationCycle;
+  if (kink >= plan || std::min(before.block.length(), after.block.length()) < cycleFeed) {
+    j.parabolic = true;  // the blend stays parabolic: both blocks plan with half their acceleration
+    return kink;
+  }
+  const double parabolic = 0.5 * across;  // the blend a parabolic one would make: as long as its time at plan
+  const double sweep = std::min(std::sqrt(2.0 * parabolic * geometric * corner.tanHalf), plan) / parabolic * plan;
+  const double radius = std::max(plan * plan / normal, std::min(sweep / phi, geometric));
+  j.trim = radius * corner.tanHalf;
+  j.arcLength = radius * phi;
+  j.arcAcceleration = kLinuxCncTangentShare * across;
+  return plan;
+}
+
+// The share k of the axis limits that turning from `before` to `after` within one cycle T at v takes:
+// max_i (v/T + a)·|Δu_i| / a_i (tp.c tpSetupTangent).
+double Planner::linuxCncKink(const Segment& before, const Segment& after, double v) const {
+  const Eigen::Vector3d turn = (after.startTangent - before.endTangent).cwiseAbs();
+  const double surge = v / machine_.interpolationCycle + std::min(before.dynamics.acceleration, after.dynamics.acceleration);
+  double k = 0.0;
+  for (int i = 0; i < 3; ++i) k = std::max(k, surge * turn[i] / machine_.maxAcceleration[i]);
+  return k;
+}
+
+// LinuxCNC's exact stop at a corner (G61): it rates the corner as a kink and takes a tenth of the
+// acceleration of both blocks for it (once per block), then stops there for one servo cycle.
+void Planner::linuxCncExactStop(Segment& before, Segment& after) const {
+  const double cosine = before.endTangent.dot(after.startTangent);
+  if (cosine >= kTangentCosine) return;
+  if (linuxCncKink(before, after, std::min(before.cruise, after.cruise)) < kLinuxCncKinkRatio) return;
+  for (Segment* s : {&before, &after})
+    if (!s->kinkScaled) {
+      s->dynamics.acceleration *= 1.0 - kLinuxCncKinkRatio;
+      s->kinkScaled = true;
+    }
+  before.restAfter = machine_.interpolationCycle;
+}
+
 void Planner::add(const Block& block, long source) {
   Segment segment = prepare(block, source);
   if (!(segment.length > 0.0) || !(segment.cruise > 0.0)) return;  // nothing to move
   // A block waits here until its successor is known: the junction between them may lower both cruises.
   if (havePending_) {
+    if (machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode == PathMode::ExactStop)
+      linuxCncExactStop(pending_, segment);
     const Junction j = junction(pending_, segment);
-    // A block whose blend arcs take all of it (half at each end, both at most half of it) has no straight
-    // part left: it runs at its blends' speed. Otherwise it cruises between them, however short the blends.
-    if (j.blend > 0.0 && pending_.blendStart + j.blend >= pending_.length * (1.0 - 1e-9))
-      pending_.cruise = std::min(pending_.cruise, std::max(pending_.blendStartSpeed, j.speed));
-    segment.blendStart = j.blend;
-    segment.blendStartSpeed = j.speed;
+    pending_.dynamics.acceleration *= 1.0 - j.kinkShare;
+    segment.dynamics.acceleration *= 1.0 - j.kinkShare;
+    if (j.parabolic)
+      for (Segment* s : {&pending_, &segment})
+        if (!s->parabolic) {
+          s->dynamics.acceleration *= kLinuxCncTangentShare;
+          s->parabolic = true;
+        }
     pending_.cruise = std::min(pending_.cruise, j.adjacentCap);
     segment.cruise = std::min(segment.cruise, j.adjacentCap);
     pending_.junction = std::min(pending_.junction, pending_.cruise);
     segment.junction = std::min({j.speed, segment.cruise, pending_.cruise});
-    if (count_ == ring_.size()) commitOldest();
-    push(std::move(pending_));
+    if (j.trim > 0.0) {
+      // The arc takes the corner: both blocks end or start where it is tangent to them, and a block the
+      // arcs take whole is gone (LinuxCNC consumes it).
+      pending_.length -= j.trim;
+      segment.length -= j.trim;
+      Segment arc = blendArc(pending_, segment, j);
+      if (pending_.length > 1e-9) {
+        if (count_ == ring_.size()) commitOldest();
+        push(std::move(pending_));
+      }
+      if (count_ == ring_.size()) commitOldest();
+      push(std::move(arc));
+    } else {
+      if (count_ == ring_.size()) commitOldest();
+      push(std::move(pending_));
+    }
   }
   pending_ = std::move(segment);
   havePending_ = true;
+}
+
+// LinuxCNC's blend arc between `before` and `after`, as a segment of its own: it runs at its planned speed
+// (and lasts a servo cycle at least), with its share of the acceleration along it.
+Segment Planner::blendArc(const Segment& before, const Segment& after, const Junction& j) const {
+  Segment arc = before;
+  arc.length = j.arcLength;
+  arc.block.motion = Motion::Linear;  // drawn and traced as its chord (within the tolerance of the arc)
+  arc.block.start = before.block.end - j.trim * before.endTangent;
+  arc.block.end = after.block.start + j.trim * after.startTangent;
+  arc.startTangent = before.endTangent;
+  arc.endTangent = after.startTangent;
+  arc.dynamics = {j.arcAcceleration, kInfinity, false};
+  arc.cruise = std::min(j.speed, j.arcLength / machine_.interpolationCycle);
+  arc.junction = std::min(j.speed, arc.cruise);
+  arc.restAfter = 0.0;
+  return arc;
 }
 
 Dynamics weakest(const Dynamics& a, const Dynamics& b) {
@@ -247,9 +334,9 @@ void Planner::finish() {
   if (havePending_) {
     // LinuxCNC keeps a parabolic end on the last line of a blending mode (no next block to blend it with
     // by an arc), and a parabolic blend halves the line's acceleration (tp.c, tpGetScaledAccel).
-    const bool parabolicEnd = machine_.controller == ControllerKind::LinuxCNC && !pending_.block.isArc() &&
-                              pending_.block.pathMode != PathMode::ExactStop;
-    if (parabolicEnd) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
+    const bool parabolicEnd =
+        machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode != PathMode::ExactStop;
+    if (parabolicEnd && !pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
     if (count_ == ring_.size()) commitOldest();
     push(std::move(pending_));
     havePending_ = false;

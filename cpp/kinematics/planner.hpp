@@ -12,6 +12,7 @@
 #include "kinematics/machine.hpp"
 #include "kinematics/profile.hpp"
 
+#include <cmath>
 #include <deque>
 #include <functional>
 #include <limits>
@@ -29,10 +30,21 @@ struct Segment {
   Dynamics dynamics;
   double position = 0.0;    // mm: distance along the program at the start of the block
   double entry = 0.0;       // entry speed, final once the block before it is committed
-  double blendStart = 0.0;  // mm of the block a blend arc at its start takes (LinuxCNC), and that arc's speed
-  double blendStartSpeed = 0.0;
+  bool kinkScaled = false;  // LinuxCNC G61: the acceleration already lost its kink share
+  bool parabolic = false;   // LinuxCNC: a parabolic blend at one of its ends halved its acceleration
+  double restAfter = 0.0;   // s at rest after the block (LinuxCNC: a servo cycle at each exact stop)
   Eigen::Vector3d startTangent, endTangent;
 };
+
+// A corner of deflection φ in the half-angle terms its blends need, from cos φ alone (no acos, cos, tan:
+// they were a tenth of the simulation's time).
+struct Corner {
+  double cosHalf, sinHalf, tanHalf, sinPhi;
+  explicit Corner(double cosine)
+      : cosHalf(std::sqrt(0.5 * (1.0 + cosine))), sinHalf(std::sqrt(0.5 * (1.0 - cosine))),
+        tanHalf(sinHalf / cosHalf), sinPhi(2.0 * sinHalf * cosHalf) {}
+};
+
 
 // The weaker of two dynamics: a run over blocks of different directions obeys the weakest of them.
 Dynamics weakest(const Dynamics& a, const Dynamics& b);
@@ -51,11 +63,20 @@ private:
     double speed = 0.0;                                          // the most the junction allows
     double adjacentCap = std::numeric_limits<double>::infinity();  // the most both blocks allow when the
                                                                  // junction is really a curve (short blocks)
-    double blend = 0.0;  // mm of each block a tangent blend arc takes (LinuxCNC: R·tan(φ/2)), 0 for none
+    // LinuxCNC's blend arc, a segment of its own between the blocks: the tangent length R·tan(φ/2) it takes
+    // from each block (0: no arc), its length R·φ and its acceleration along the path.
+    double trim = 0.0, arcLength = 0.0, arcAcceleration = 0.0;
+    double kinkShare = 0.0;  // LinuxCNC tangent kink: the share of acceleration both blocks give up for it
+    bool parabolic = false;  // LinuxCNC: no arc could be made; a parabolic blend halves both accelerations
   };
   Segment prepare(const Block& block, long source) const;
   Junction junction(const Segment& before, const Segment& after) const;
+  double linuxCncKink(const Segment& before, const Segment& after, double v) const;
+  void linuxCncExactStop(Segment& before, Segment& after) const;
+  double linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
+                        double limit, Junction& j) const;
   void push(Segment segment);
+  Segment blendArc(const Segment& before, const Segment& after, const Junction& j) const;
   void commitOldest();
   double plannedEntry(size_t i);
   Segment& at(size_t i) { return ring_[(head_ + i) % ring_.size()]; }

@@ -54,7 +54,7 @@ void RunTimer::single(size_t k) {
     // A block cut out of a run in the middle of a longer change of speed: the change does not start and end
     // in it, so it passes with the acceleration it has, about constant over so short a block.
     const double time = 2.0 * s.length / (m.entry + m.exit);
-    emit_(s, {m.entry, m.exit, std::max(m.entry, m.exit), std::min(m.entry, m.exit), time});
+    emit_(s, {m.entry, m.exit, std::max(m.entry, m.exit), std::min(m.entry, m.exit), time + s.restAfter});
     if (tracePeriod_ > 0.0) {
       const double a = (m.exit - m.entry) / time;
       for (double t = nextSample_; t < clock_ + time; t += tracePeriod_, nextSample_ = t) {
@@ -62,13 +62,13 @@ void RunTimer::single(size_t k) {
         sample_(t, m.entry + a * dt, s.block.pointAt(m.entry * dt + 0.5 * a * dt * dt));
       }
     }
-    clock_ += time;
+    clock_ += time + s.restAfter;
     return;
   }
   const BlockProfile p = blockProfile(s.length, m.entry, m.exit, s.cruise, s.dynamics);
   if (tracePeriod_ > 0.0) trace(p, s.dynamics, k, k + 1);
-  emit_(s, {p.v0, p.v1, p.peak, std::min(p.v0, p.v1), p.time});
-  clock_ += p.time;
+  emit_(s, {p.v0, p.v1, p.peak, std::min(p.v0, p.v1), p.time + s.restAfter});
+  clock_ += p.time + s.restAfter;
 }
 
 void RunTimer::time(size_t first, size_t last) {
@@ -120,7 +120,8 @@ void RunTimer::emitFrom(const BlockProfile& p, const Dynamics& d, size_t first, 
     // The speed rises to the peak at peakFrom and never rises again: a block's fastest point is its exit
     // before it, its entry after it, the peak across it.
     const double peak = end <= peakFrom ? exit : offset >= peakFrom ? entry : p.peak;
-    emit_(s, {entry, exit, std::max({peak, entry, exit}), std::min(entry, exit), after - before});
+    emit_(s, {entry, exit, std::max({peak, entry, exit}), std::min(entry, exit), after - before + s.restAfter});
+    clock_ += s.restAfter;
     offset = end;
     before = after;
     entry = exit;

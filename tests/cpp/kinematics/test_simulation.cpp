@@ -298,3 +298,62 @@ TEST(Simulation, MovesRunAsTheBlocksOfTheirGcode) {
   bad(2, 1) = 2e9;
   EXPECT_THROW(movesToBlocks(bad, 100.0), hsm::InputError);
 }
+
+// LinuxCNC 2.9 against closed forms derived from its planner (and checked with the LinuxCNC oracle,
+// docs/oracle.md): X/Y a = 2500 mm/s², servo cycle 1 ms.
+TEST(LinuxCnc, NaiveCamMergesCollinearChordsWithinQ) {
+  const MachineModel m = preset("linuxcnc-2.9");
+  std::string chords;
+  for (int i = 1; i <= 1000; ++i) chords += "X" + std::to_string(0.05 * i) + "\n";
+  // Merged: lines of 101 chords (5.05 mm), cruising at F; the last one brakes at a/2 (its parabolic end):
+  // 50/100 + 100/(2·2500) + 100/(2·1250) = 0.56 s.
+  const auto merged = run("G64 P0.01\nG1 F6000\n" + chords, m, false).summary;
+  EXPECT_NEAR(merged.totalTime, 0.56, 1e-6);
+  EXPECT_EQ(merged.blockCount, 10);
+  // Q0: every 0.05 mm chord lasts a servo cycle at least: 50 mm/s, twice as long.
+  const auto single = run("G64 P0.01 Q0\nG1 F6000\n" + chords, m, false).summary;
+  EXPECT_EQ(single.blockCount, 1000);
+  EXPECT_GT(single.totalTime, 1.0);
+  // A zigzag 0.02 mm off the line stays unmerged within Q 0.01, and merges within Q 0.03.
+  std::string zigzag;
+  for (int i = 1; i <= 100; ++i) zigzag += "X" + std::to_string(0.5 * i) + (i % 2 ? " Y0.02\n" : " Y0\n");
+  EXPECT_EQ(run("G64 P0.01\nG1 F6000\n" + zigzag, m, false).summary.blockCount, 100);
+  EXPECT_LT(run("G64 P0.03\nG1 F6000\n" + zigzag, m, false).summary.blockCount, 5);
+}
+
+TEST(LinuxCnc, BlendArcsTakeTheCornerAndLinesTheFullAcceleration) {
+  const MachineModel m = preset("linuxcnc-2.9");
+  // G64 square of 50 mm: blend arcs planned for F (R = max(v²/(0.866·a), the parabolic-equivalent blend:
+  // 8 mm over φ = π/2) = 5.09 mm), 2.18 mm shorter per corner; full a to start, a/2 at the end:
+  // 193.45/100 + 0.02 + 0.04 = 1.9945 s (LinuxCNC measured 1.994 s).
+  const std::string square = "G1 F6000 X50\nY50\nX0\nY0\n";
+  EXPECT_NEAR(run("G64\n" + square, m, false).summary.totalTime, 1.9945, 2e-4);
+  // G61: rest to rest on each side at 0.9·a (each corner is a kink), and a servo cycle at rest per stop:
+  // 4 × (0.5 + 100/2250) + 3 × 0.001 = 2.1808 s (LinuxCNC 2.179 s).
+  EXPECT_NEAR(run("G61\n" + square, m, false).summary.totalTime, 4 * (0.5 + 100.0 / 2250.0) + 0.003, 1e-9);
+}
+
+TEST(LinuxCnc, ALongSideSlowsOnlyNearTheCornerItBlends) {
+  const MachineModel m = preset("linuxcnc-2.9");
+  // G64 without P: a 60 mm side turning 135° into a 2.83 mm step-over. The blend is held to a quarter of the
+  // shorter block (0.707 mm: R = 0.439 mm, sqrt(0.866·2500·0.439) = 30.8 mm/s), and only near the corner.
+  const auto r = run("G64\nG1 F6000 X60\nX58 Y2\nX0\n", m);
+  ASSERT_GE(r.blocks.size(), 3u);
+  EXPECT_NEAR(r.blocks[0].exitFeed, std::sqrt(0.866 * 2500.0 * 0.707 * std::cos(M_PI * 67.5 / 180) /
+                                              (1 - std::cos(M_PI * 67.5 / 180))), 0.05);
+  EXPECT_GT(r.blocks[0].meanFeed, 0.85 * 100.0);  // it cruises at F until it brakes (capped by the blend: 31)
+}
+
+TEST(LinuxCnc, AChordedCircleRunsAtOneSpeedInEveryDirection) {
+  const MachineModel m = preset("linuxcnc-2.9");
+  std::string circle = "G0 X20 Y0\nG64\nG1 F6000\n";
+  for (int i = 1; i <= 720; ++i)
+    circle += "X" + std::to_string(20 * std::cos(i * M_PI / 360)) + " Y" + std::to_string(20 * std::sin(i * M_PI / 360)) + "\n";
+  const auto r = run(circle, m);
+  double low = 1e9, high = 0.0;
+  for (size_t i = 100; i + 100 < r.blocks.size(); ++i) {
+    low = std::min(low, r.blocks[i].meanFeed);
+    high = std::max(high, r.blocks[i].meanFeed);
+  }
+  EXPECT_LT(high / low, 1.01) << low * 60 << " to " << high * 60 << " mm/min";
+}

@@ -1,0 +1,162 @@
+#!/usr/bin/python3
+"""Writes the G-code programs of the LinuxCNC oracle (docs/oracle.md) into tests/oracle/programs/.
+
+Every program is in mm, G21 G90 G17, absolute, starts where the machine is after homing (X0 Y0 Z0) and ends
+with M2. The programs are what a CAM system or a person would write; none is tuned to what either planner
+does well. Run it again after changing a program here: `python3 tests/oracle/make_programs.py`.
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROGRAMS = os.path.join(HERE, "programs")
+
+
+def fmt(value):
+    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def move(code, x=None, y=None, z=None, **words):
+    parts = [code]
+    for name, value in (("X", x), ("Y", y), ("Z", z)):
+        if value is not None:
+            parts.append(name + fmt(value))
+    for name, value in words.items():
+        parts.append(name + fmt(value))
+    return " ".join(parts)
+
+
+def program(title, mode, feed, body):
+    """The common frame: a comment, units and plane, the path control mode, the feed, the moves, M2."""
+    return [f"({title})", "G21 G90 G17", mode, f"F{feed}"] + body + ["M2"]
+
+
+def line():
+    return [move("G1", x=100)]
+
+
+def square(side=50.0):
+    return [move("G1", x=side), move("G1", y=side), move("G1", x=0), move("G1", y=0)]
+
+
+def circle(radius, turns):
+    """Full circles through the start point (centre at X=radius), four clockwise quarter arcs each, R format."""
+    quarter = [(radius, radius), (2 * radius, 0), (radius, -radius), (0, 0)]
+    return [move("G2", x=x, y=y, R=radius) for _ in range(turns) for x, y in quarter]
+
+
+def chord_circle(radius, chords):
+    """One circle through the start point (centre at X=radius), clockwise, as straight chords."""
+    body = []
+    for i in range(1, chords + 1):
+        angle = math.pi - 2 * math.pi * i / chords  # clockwise from the start point at 180 degrees
+        body.append(move("G1", x=radius + radius * math.cos(angle), y=radius * math.sin(angle)))
+    return body
+
+
+def pocket(length=60.0, width=30.0, step=2.0):
+    """A zig-zag clearing a parallelogram pocket: long sides along X, each ending in a 135 degree turn into a
+    short step-over (2 mm in Y, 2 mm back in X: 2.83 mm long), which joins the next long side at 45 degrees."""
+    body, x, y, direction = [], 0.0, 0.0, 1
+    passes = int(round(width / step)) + 1
+    for k in range(passes):
+        x += direction * length
+        body.append(move("G1", x=x, y=y))
+        if k == passes - 1:
+            break
+        x -= direction * step
+        y += step
+        body.append(move("G1", x=x, y=y))
+        direction = -direction
+    return body
+
+
+def raster(passes=20, length=60.0, step=1.0):
+    """A zig-zag: passes along X, each joined to the next by a 1 mm step in Y (two 90 degree turns)."""
+    body, x, y = [], 0.0, 0.0
+    for k in range(passes):
+        x = length if k % 2 == 0 else 0.0
+        body.append(move("G1", x=x, y=y))
+        if k < passes - 1:
+            y += step
+            body.append(move("G1", x=x, y=y))
+    return body
+
+
+def spiral(chord=0.05, r_start=20.0, r_end=5.0, turns=3, depth=3.0):
+    """A conical 3D spiral: the radius shrinks from r_start to r_end while Z goes down by depth over the turns,
+    as 0.05 mm chords (the points are spaced by arc length). Starts with a straight approach from X0 Y0 Z0."""
+    samples = 200000
+    total = 2 * math.pi * turns
+
+    def point(t):
+        s = t / total
+        r = r_start + (r_end - r_start) * s
+        return (r * math.cos(t), r * math.sin(t), -depth * s)
+
+    body = [move("G1", *point(0.0))]
+    previous = point(0.0)
+    walked = 0.0
+    for i in range(1, samples + 1):
+        p = point(total * i / samples)
+        walked += math.dist(p, previous)
+        previous = p
+        if walked >= chord or i == samples:
+            body.append(move("G1", *p))
+            walked = 0.0
+    return body
+
+
+def sine(chord=0.5, length=100.0, amplitude=5.0, wavelength=25.0):
+    """A freeform chain: y = A sin(2 pi x / wavelength) over 0..length as 0.5 mm chords (by arc length)."""
+    samples = 100000
+    body, previous, walked = [], (0.0, 0.0), 0.0
+    for i in range(1, samples + 1):
+        x = length * i / samples
+        p = (x, amplitude * math.sin(2 * math.pi * x / wavelength))
+        walked += math.dist(p, previous)
+        previous = p
+        if walked >= chord or i == samples:
+            body.append(move("G1", *p))
+            walked = 0.0
+    return body
+
+
+def all_programs():
+    pocket_title = "pocket 60 x 30 mm zig-zag, 2 mm step-overs at 135 degrees"
+    return {
+        "01_line_g61": program("100 mm line, exact stop", "G61", 6000, line()),
+        "02_line_g64": program("100 mm line, blending", "G64", 6000, line()),
+        "03_square_g61": program("50 mm square, exact stop", "G61", 6000, square()),
+        "04_square_g64": program("50 mm square, blending without tolerance", "G64", 6000, square()),
+        "05_circle_r2": program("3 circles R 2 mm as G2 quarter arcs, R format", "G64", 6000, circle(2.0, 3)),
+        "06_circle_r20": program("1 circle R 20 mm as G2 quarter arcs, R format", "G64", 6000, circle(20.0, 1)),
+        "07_chords720_r20": program("circle R 20 mm as 720 chords", "G64", 4000, chord_circle(20.0, 720)),
+        "08_pocket_g61": program(pocket_title + ", exact stop", "G61", 6000, pocket()),
+        "09_pocket_g64": program(pocket_title + ", blending without tolerance", "G64", 6000, pocket()),
+        "10_pocket_g64_p001_q001": program(pocket_title + ", G64 P0.01 Q0.01", "G64 P0.01 Q0.01", 6000, pocket()),
+        "11_raster_g64": program("raster: 20 passes 60 mm, 1 mm apart", "G64", 4000, raster()),
+        "12_spiral_p001": program("3D conical spiral of 0.05 mm chords, Q defaults to P", "G64 P0.01", 6000,
+                                  spiral()),
+        "13_spiral_p001_q0": program("3D conical spiral of 0.05 mm chords, naive CAM off", "G64 P0.01 Q0", 6000,
+                                     spiral()),
+        "14_sine_g64": program("sine wave A 5 mm, wavelength 25 mm, 0.5 mm chords", "G64", 6000, sine()),
+        "15_sine_g64_p001": program("sine wave A 5 mm, wavelength 25 mm, 0.5 mm chords", "G64 P0.01", 6000,
+                                    sine()),
+    }
+
+
+def main():
+    os.makedirs(PROGRAMS, exist_ok=True)
+    for name, lines in all_programs().items():
+        path = os.path.join(PROGRAMS, name + ".ngc")
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        print(f"{path}: {len(lines)} lines")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
