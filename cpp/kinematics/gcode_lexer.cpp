@@ -4,6 +4,7 @@
 
 #include <fast_float/fast_float.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -60,10 +61,16 @@ void LineSource::refill() {
 void Line::parse(std::string_view raw, long number) {
   wordCount = 0;
   keywords.clear();
-  upper.assign(raw);
-  for (char& c : upper) c = toUpper(c);
-  const char* p = upper.data();
-  const char* end = p + upper.size();
+  // Words and keywords are read in capitals: a line that has lower-case letters is copied in capitals
+  // first (CAM writes capitals: most lines are read where they are, without a copy).
+  const char* p = raw.data();
+  const char* end = p + raw.size();
+  if (std::any_of(p, end, [](char c) { return c >= 'a' && c <= 'z'; })) {
+    upper.assign(raw);
+    for (char& c : upper) c = toUpper(c);
+    p = upper.data();
+    end = p + upper.size();
+  }
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
   if (p < end && *p == '/') ++p;  // block delete: the block runs (the switch is off)
   while (p < end) {

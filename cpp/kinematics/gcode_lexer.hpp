@@ -45,7 +45,7 @@ struct Word {
 };
 
 struct Keyword {
-  std::string_view name;       // upper-cased copy lives in Line::upper
+  std::string_view name;       // into the line as read, or into Line::upper
   std::string_view arguments;  // inside ( ), for calls
   bool hasValue = false;       // NAME=value
   double value = 0.0;
@@ -57,7 +57,7 @@ public:
   std::array<Word, 64> words{};
   int wordCount = 0;
   std::vector<Keyword> keywords;
-  std::string upper;  // upper-cased copy of the line: keywords point into it
+  std::string upper;  // the line in capitals, when it had lower-case letters: words then point into it
 
   // Splits `raw` into words and keywords; throws ParseError on malformed text.
   void parse(std::string_view raw, long number);

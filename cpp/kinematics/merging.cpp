@@ -1,10 +1,13 @@
 #include "kinematics/merging.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace hsm::kinematics {
 
 namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 bool sameMotion(const Block& a, const Block& b) {
   return a.motion == Motion::Linear && b.motion == Motion::Linear && a.feed == b.feed && a.pathMode == b.pathMode &&
          a.tolerance == b.tolerance && a.mergeTolerance == b.mergeTolerance && a.compressor == b.compressor &&
@@ -32,10 +35,6 @@ bool BlockMerger::linuxCncLinkable(const Block& block) const {
   return true;
 }
 
-bool BlockMerger::compressible(const Block& block) const {
-  return block.motion == Motion::Linear && block.compressor && block.length() <= machine_.compressorPathLimit;
-}
-
 void BlockMerger::add(const Block& block) {
   const bool linuxcnc = machine_.controller == ControllerKind::LinuxCNC;
   if (linuxcnc) {
@@ -46,12 +45,14 @@ void BlockMerger::add(const Block& block) {
     return;
   }
   if (machine_.controller != ControllerKind::Siemens840D) return out_(block);
-  const bool fits = compressible(block) && (held_.empty() || (sameMotion(held_.front(), block) &&
-                                                              heldLength_ + block.length() <= machine_.compressorPathLimit));
+  const double length = block.motion == Motion::Linear && block.compressor ? block.length() : kInfinity;
+  const bool compressible = length <= machine_.compressorPathLimit;
+  const bool fits = compressible && (held_.empty() || (sameMotion(held_.front(), block) &&
+                                                       heldLength_ + length <= machine_.compressorPathLimit));
   if (!fits) flush();
-  if (!compressible(block)) return out_(block);
+  if (!compressible) return out_(block);
   held_.push_back(block);
-  heldLength_ += block.length();
+  heldLength_ += length;
 }
 
 void BlockMerger::flush() {

@@ -36,7 +36,6 @@ public:
 
 private:
   bool linuxCncLinkable(const Block& block) const;
-  bool compressible(const Block& block) const;
   void flush();
 
   const MachineModel& machine_;
