@@ -1,0 +1,187 @@
+#include "roughing/roughing.hpp"
+#include "roughing/slicing.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+
+#include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace hsm::roughing {
+
+std::string strategyName(Strategy s) {
+  switch (s) {
+    case Strategy::PlanesParallelToFace: return "S1 planes parallel to a crossable face";
+    case Strategy::CoaxialCylinders: return "S2 coaxial cylinders";
+    case Strategy::SetupPlanes: return "S3 planes of the setup direction";
+    case Strategy::StockOffsets: return "S4 offsets of the stock skin";
+    case Strategy::HubOffsets: return "S5 offsets of the hub";
+  }
+  return "?";
+}
+
+namespace {
+
+double volumeOf(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(shape, props);
+  return props.Mass();
+}
+
+// The largest face (1-based) of the largest surface group of the solid that passes `keep`, 0 if none.
+template <class Keep>
+int largestFace(const RemovalSolid& s, Keep&& keep) {
+  int best = 0;
+  double bestArea = 0.0;
+  for (size_t i = 0; i < s.faceClasses.size(); ++i) {
+    if (!keep(s.faceClasses[i], s.faceKinds[i])) continue;
+    const double area = s.groupArea(s.faceGroups[i]);
+    if (best == 0 || area > bestArea * (1.0 + 1e-9) ||
+        (area >= bestArea * (1.0 - 1e-9) && s.faceGroups[i] == s.faceGroups[best - 1] && s.faceAreas[i] > s.faceAreas[best - 1])) {
+      best = static_cast<int>(i) + 1;
+      bestArea = area;
+    }
+  }
+  return best;
+}
+
+int referenceFace(const RemovalSolid& s, Strategy strategy) {
+  switch (strategy) {
+    case Strategy::PlanesParallelToFace: {
+      const int f = largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Plane; });
+      if (f == 0) throw InputError("S1 needs a planar crossable face (an inlet plane, a stock top) and this volume has none: use S3");
+      return f;
+    }
+    case Strategy::CoaxialCylinders: {
+      const int f = largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Cylinder; });
+      if (f == 0)
+        throw InputError("S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3 or S4");
+      return f;
+    }
+    case Strategy::StockOffsets: {
+      int f = largestFace(s, [](FaceClass c, SurfaceKind k) {
+        return c == FaceClass::Crossable && k != SurfaceKind::Plane && k != SurfaceKind::Cylinder;
+      });
+      if (f == 0) f = largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::Crossable; });
+      if (f == 0) throw InputError("S4 needs a crossable face (the stock skin) and this volume has none");
+      return f;
+    }
+    case Strategy::HubOffsets: {
+      const int f = largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::FacingCrossable; });
+      if (f == 0)
+        throw InputError("S5 needs a face of the part that faces a crossable face (a hub, a floor) and this volume has "
+                         "none: use S1 to S4");
+      return f;
+    }
+    case Strategy::SetupPlanes: return 0;
+  }
+  return 0;
+}
+
+TopoDS_Face faceOf(const RemovalSolid& s, int index) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(s.solid, TopAbs_FACE, faces);
+  return TopoDS::Face(faces(index));
+}
+
+}  // namespace
+
+Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strategy strategy,
+                    const PartitionSettings& settings) {
+  if (solid.solid.IsNull()) throw InputError("the volume to remove is empty: compute it from a stock and a part first");
+  if (!(settings.step > 0.0) || !std::isfinite(settings.step))
+    throw InputError("step " + number(settings.step) + " mm must be positive: the axial engagement, e.g. 8 mm for a Ø8 tool");
+  Partition result;
+  result.strategy = strategy;
+  result.step = settings.step;
+  result.referenceFace = referenceFace(solid, strategy);
+  ProgressReporter reporter(settings.progress, "partition");
+
+  // The slicing family: a depth measure over space and the surface at each depth.
+  std::unique_ptr<SlicingFamily> family;
+  if (strategy == Strategy::SetupPlanes) {
+    const auto [direction, reach] = setupDirection(solid, part, settings);
+    result.setupDirection = direction;
+    result.setupReach = reach;
+    family = planesAlong(solid.solid, -direction);  // from the side the tool comes from, inwards
+  } else {
+    family = familyOf(solid.solid, faceOf(solid, result.referenceFace), strategy);
+  }
+  const auto [low, high] = family->depthRange(solid.solid);
+  const double extent = high - low;
+  if (!(extent > 0.0)) throw ComputationError("the volume has no extent along the slicing surfaces");
+  if (settings.step > extent)
+    throw InputError("step " + number(settings.step) + " mm is larger than the volume's extent of " + number(extent) +
+                     " mm along the slicing surfaces: nothing to slice; use a step up to " + number(extent) + " mm");
+  const double slices = std::ceil(extent / settings.step - 1e-9);
+  if (slices > kMaxSlices)
+    throw InputError("step " + number(settings.step) + " mm gives " + number(slices) + " slices (more than " +
+                     std::to_string(kMaxSlices) + "): use a step of at least " + number(extent / kMaxSlices) + " mm");
+  const int count = static_cast<int>(slices);
+
+  // All the cutting surfaces at once (BRepAlgoAPI_Splitter), each sized beyond the volume.
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(solid.solid);
+  for (int k = 1; k < count; ++k) tools.Append(family->surfaceAt(low + k * settings.step));
+  reporter(0.2);
+  TopoDS_Shape pieces = solid.solid;
+  if (!tools.IsEmpty()) {
+    BRepAlgoAPI_Splitter splitter;
+    splitter.SetArguments(arguments);
+    splitter.SetTools(tools);
+    splitter.Build();
+    if (!splitter.IsDone() || splitter.HasErrors())
+      throw ComputationError("OCCT could not split the volume by the " + strategyName(strategy) + " surfaces");
+    pieces = splitter.Shape();
+  }
+  reporter(0.7);
+
+  // Each piece to the slice its inside point lies in; a slice's pieces as one compound.
+  std::map<int, std::vector<TopoDS_Shape>> bySlice;
+  for (TopExp_Explorer it(pieces, TopAbs_SOLID); it.More(); it.Next()) {
+    const double depth = family->depth(insidePoint(it.Current()));
+    const int slice = std::clamp(static_cast<int>(std::floor((depth - low) / settings.step)), 0, count - 1);
+    bySlice[slice].push_back(it.Current());
+  }
+  for (auto& [slice, shapes] : bySlice) {
+    SubVolume sub;
+    sub.slice = slice;
+    if (shapes.size() == 1) {
+      sub.shape = shapes.front();
+    } else {
+      TopoDS_Compound compound;
+      BRep_Builder builder;
+      builder.MakeCompound(compound);
+      for (const TopoDS_Shape& s : shapes) builder.Add(compound, s);
+      sub.shape = compound;
+    }
+    for (const TopoDS_Shape& s : shapes)
+      if (!BRepCheck_Analyzer(s).IsValid())
+        throw ComputationError("slice " + std::to_string(slice) + " of " + strategyName(strategy) + " is not a valid solid");
+    sub.volume = volumeOf(sub.shape);
+    sub.surface = family->surfaceDescription(low + slice * settings.step, result.referenceFace);
+    family->axisField(sub.shape, low + slice * settings.step, sub.axisPoints, sub.axisDirections);
+    result.volume += sub.volume;
+    result.subVolumes.push_back(std::move(sub));
+  }
+  if (std::abs(result.volume - solid.volume) > kVolumeTolerance * solid.volume)
+    throw ComputationError("the sub-volumes of " + strategyName(strategy) + " add up to " + number(result.volume) +
+                           " mm³, not the volume's " + number(solid.volume) + " mm³: the split lost material");
+  reporter(1.0);
+  return result;
+}
+
+}  // namespace hsm::roughing

@@ -1,0 +1,380 @@
+#include "roughing/slicing.hpp"
+
+#include "common/error.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLProp_SLProps.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomConvert.hxx>
+#include <GeomLib.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pln.hxx>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hsm::roughing {
+
+namespace {
+
+Eigen::Vector3d toEigen(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+gp_Pnt toPoint(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+
+struct Box {
+  Eigen::Vector3d centre;
+  double size;  // diagonal
+};
+
+Box boxOf(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  return {{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)}, std::hypot(x1 - x0, y1 - y0, z1 - z0)};
+}
+
+// The face's normal at the middle of its parameter box, pointing into the solid it bounds.
+Eigen::Vector3d inwardNormal(const TopoDS_Face& face, double u, double v) {
+  BRepAdaptor_Surface surface(face);
+  BRepLProp_SLProps props(surface, u, v, 1, 1e-9);
+  gp_Dir n = props.Normal();
+  if (face.Orientation() != TopAbs_REVERSED) n.Reverse();  // the face's own normal points out of the solid
+  return {n.X(), n.Y(), n.Z()};
+}
+
+Eigen::Vector3d centreInward(const TopoDS_Face& face, Eigen::Vector3d& point) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
+  point = toEigen(BRepAdaptor_Surface(face).Value(u, v).XYZ());
+  return inwardNormal(face, u, v);
+}
+
+class PlaneFamily : public SlicingFamily {
+public:
+  PlaneFamily(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal, const Box& box)
+      : origin_(origin), normal_(normal.normalized()), box_(box) {}
+  double depth(const gp_Pnt& p) const override { return normal_.dot(toEigen(p.XYZ()) - origin_); }
+  TopoDS_Shape surfaceAt(double d) const override {
+    const Eigen::Vector3d centre = box_.centre + (d - depth(toPoint(box_.centre))) * normal_;
+    const double h = box_.size;
+    return BRepBuilderAPI_MakeFace(gp_Pln(toPoint(centre), gp_Dir(normal_.x(), normal_.y(), normal_.z())), -h, h, -h, h).Face();
+  }
+  SlicingSurface surfaceDescription(double d, int reference) const override {
+    SlicingSurface s;
+    s.kind = SurfaceKind::Plane;
+    s.origin = origin_ + d * normal_;
+    s.direction = normal_;
+    s.referenceFace = reference;
+    s.offset = d;
+    return s;
+  }
+
+private:
+  Eigen::Vector3d origin_, normal_;
+  Box box_;
+};
+
+class CylinderFamily : public SlicingFamily {
+public:
+  // Depth grows inwards (towards the axis) when `inward` is true.
+  CylinderFamily(const gp_Ax1& axis, double radius, bool inward, const Box& box)
+      : point_(toEigen(axis.Location().XYZ())), axis_(toEigen(axis.Direction().XYZ())), radius_(radius),
+        sign_(inward ? 1.0 : -1.0), box_(box) {}
+  double depth(const gp_Pnt& p) const override { return sign_ * (radius_ - radial(toEigen(p.XYZ())).norm()); }
+  TopoDS_Shape surfaceAt(double d) const override {
+    const double r = radius_ - sign_ * d;
+    if (!(r > 1e-6)) throw InputError("the coaxial cylinders reach the axis: use a larger step or another strategy");
+    const double along = axis_.dot(box_.centre - point_);
+    const gp_Ax3 frame(toPoint(point_ + (along - box_.size) * axis_), gp_Dir(axis_.x(), axis_.y(), axis_.z()));
+    Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(frame, r);
+    return BRepBuilderAPI_MakeFace(cylinder, 0.0, 2.0 * M_PI, 0.0, 2.0 * box_.size, 1e-7).Face();
+  }
+  SlicingSurface surfaceDescription(double d, int reference) const override {
+    SlicingSurface s;
+    s.kind = SurfaceKind::Cylinder;
+    s.origin = point_;
+    s.direction = axis_;
+    s.radius = radius_ - sign_ * d;
+    s.referenceFace = reference;
+    s.offset = d;
+    return s;
+  }
+
+private:
+  Eigen::Vector3d radial(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d w = p - point_;
+    return w - axis_.dot(w) * axis_;
+  }
+  Eigen::Vector3d point_, axis_;
+  double radius_, sign_;
+  Box box_;
+};
+
+// Offsets of a surface (of revolution, or any other): depth is the distance to the reference surface on the
+// volume's side; the surface at a depth is the reference surface offset by it, extended beyond the volume.
+class OffsetFamily : public SlicingFamily {
+public:
+  OffsetFamily(const TopoDS_Face& reference, const Box& box) : box_(box) {
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(reference);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(reference, u0, u1, v0, v1);
+    Eigen::Vector3d point;
+    const Eigen::Vector3d inward = centreInward(reference, point);
+    gp_Pnt p;
+    gp_Vec du, dv;
+    surface->D1(0.5 * (u0 + u1), 0.5 * (v0 + v1), p, du, dv);
+    const gp_Vec n = du.Crossed(dv);
+    sign_ = (n.X() * inward.x() + n.Y() * inward.y() + n.Z() * inward.z()) > 0 ? 1.0 : -1.0;
+    extended_ = extend(surface, u0, u1, v0, v1, box.size);
+  }
+  double depth(const gp_Pnt& p) const override {
+    GeomAPI_ProjectPointOnSurf projection(p, extended_);
+    if (projection.NbPoints() == 0) return std::numeric_limits<double>::infinity();
+    return projection.LowerDistance();
+  }
+  TopoDS_Shape surfaceAt(double d) const override {
+    Handle(Geom_Surface) offset = d == 0.0 ? extended_ : Handle(Geom_Surface)(new Geom_OffsetSurface(extended_, sign_ * d));
+    return BRepBuilderAPI_MakeFace(offset, 1e-7).Face();
+  }
+  SlicingSurface surfaceDescription(double d, int reference) const override {
+    SlicingSurface s;
+    s.kind = SurfaceKind::Other;
+    s.referenceFace = reference;
+    s.offset = d;
+    return s;
+  }
+
+private:
+  // The face's surface over its trimmed range, as a B-spline extended by `length` on every side (a surface of
+  // revolution keeps its full turn).
+  static Handle(Geom_Surface) extend(const Handle(Geom_Surface)& surface, double u0, double u1, double v0, double v1,
+                                     double length) {
+    Handle(Geom_Surface) basis = surface;
+    if (surface->IsKind(STANDARD_TYPE(Geom_RectangularTrimmedSurface)))
+      basis = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)->BasisSurface();
+    Handle(Geom_BSplineSurface) spline =
+        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1));
+    const bool closedU = surface->IsUPeriodic() || std::abs(u1 - u0 - 2.0 * M_PI) < 1e-6;
+    for (const Standard_Boolean inU : {Standard_True, Standard_False}) {
+      if (inU && closedU) continue;
+      for (const Standard_Boolean after : {Standard_True, Standard_False}) {
+        Handle(Geom_BoundedSurface) bounded = spline;
+        GeomLib::ExtendSurfByLength(bounded, length, 1, inU, after);
+        spline = Handle(Geom_BSplineSurface)::DownCast(bounded);
+      }
+    }
+    return spline;
+  }
+  Handle(Geom_Surface) extended_;
+  double sign_ = 1.0;
+  Box box_;
+};
+
+// Offsets of a surface of revolution: exact, as the revolved offsets of its meridian. The depth of a point is
+// its distance to the meridian in its meridian plane.
+class RevolutionFamily : public SlicingFamily {
+public:
+  RevolutionFamily(const TopoDS_Face& reference, const gp_Ax1& axis, const Box& box)
+      : axisPoint_(toEigen(axis.Location().XYZ())), axis_(toEigen(axis.Direction().XYZ())), box_(box) {
+    e1_ = axis_.unitOrthogonal();
+    // The meridian: the surface along v at the face's middle u, over the surface's whole v range.
+    BRepAdaptor_Surface surface(reference, Standard_False);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(reference, u0, u1, v0, v1);
+    const double vFirst = std::isfinite(surface.FirstVParameter()) ? surface.FirstVParameter() : v0;
+    const double vLast = std::isfinite(surface.LastVParameter()) ? surface.LastVParameter() : v1;
+    const int n = 81;
+    for (int i = 0; i < n; ++i) meridian_.push_back(plane(toEigen(surface.Value(0.5 * (u0 + u1), vFirst + (vLast - vFirst) * i / (n - 1)).XYZ())));
+    // The side of the volume: the face's inward normal at its centre, in the meridian plane.
+    Eigen::Vector3d centre;
+    const Eigen::Vector3d inward = centreInward(reference, centre);
+    const Eigen::Vector2d c = plane(centre);
+    const Eigen::Vector2d towards = plane(centre + 1e-3 * box.size * inward) - c;
+    const size_t k = nearest(c);
+    sign_ = normalAt(k).dot(towards) >= 0.0 ? 1.0 : -1.0;
+  }
+  double depth(const gp_Pnt& p) const override {
+    const Eigen::Vector2d q = plane(toEigen(p.XYZ()));
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i + 1 < meridian_.size(); ++i) {
+      const Eigen::Vector2d a = meridian_[i], m = meridian_[i + 1] - a;
+      const double t = std::clamp(m.dot(q - a) / std::max(m.squaredNorm(), 1e-300), 0.0, 1.0);
+      best = std::min(best, (q - (a + t * m)).squaredNorm());
+    }
+    return std::sqrt(best);
+  }
+  TopoDS_Shape surfaceAt(double d) const override {
+    // The offset meridian, extended along its end tangents beyond the volume, revolved about the axis.
+    std::vector<Eigen::Vector2d> points;
+    for (size_t i = 0; i < meridian_.size(); ++i) points.push_back(meridian_[i] + sign_ * d * normalAt(i));
+    const Eigen::Vector2d first = (points[0] - points[1]).normalized(), last = (points.back() - points[points.size() - 2]).normalized();
+    Handle(TColgp_HArray1OfPnt) poles = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()) + 2);
+    auto at = [&](const Eigen::Vector2d& q) {
+      return toPoint(axisPoint_ + q.y() * axis_ + std::max(q.x(), 1e-3) * e1_);  // (ρ, z) in the plane of e1
+    };
+    poles->SetValue(1, at(points.front() + box_.size * first));
+    for (size_t i = 0; i < points.size(); ++i) poles->SetValue(static_cast<int>(i) + 2, at(points[i]));
+    poles->SetValue(static_cast<int>(points.size()) + 2, at(points.back() + box_.size * last));
+    GeomAPI_PointsToBSpline fit(poles->Array1(), 3, 5, GeomAbs_C2, 1e-4);
+    const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(fit.Curve()).Edge();
+    return BRepPrimAPI_MakeRevol(edge, gp_Ax1(toPoint(axisPoint_), gp_Dir(axis_.x(), axis_.y(), axis_.z())), 2.0 * M_PI).Shape();
+  }
+  SlicingSurface surfaceDescription(double d, int reference) const override {
+    SlicingSurface s;
+    s.kind = SurfaceKind::Revolution;
+    s.origin = axisPoint_;
+    s.direction = axis_;
+    s.referenceFace = reference;
+    s.offset = d;
+    return s;
+  }
+
+private:
+  Eigen::Vector2d plane(const Eigen::Vector3d& p) const {  // (ρ, z) about the axis
+    const Eigen::Vector3d w = p - axisPoint_;
+    const double z = axis_.dot(w);
+    return {(w - z * axis_).norm(), z};
+  }
+  size_t nearest(const Eigen::Vector2d& q) const {
+    size_t best = 0;
+    for (size_t i = 1; i < meridian_.size(); ++i)
+      if ((meridian_[i] - q).squaredNorm() < (meridian_[best] - q).squaredNorm()) best = i;
+    return best;
+  }
+  Eigen::Vector2d normalAt(size_t i) const {  // a unit normal of the meridian polyline at point i
+    const Eigen::Vector2d t = meridian_[std::min(i + 1, meridian_.size() - 1)] - meridian_[i > 0 ? i - 1 : 0];
+    return Eigen::Vector2d(-t.y(), t.x()).normalized();
+  }
+  Eigen::Vector3d axisPoint_, axis_, e1_;
+  std::vector<Eigen::Vector2d> meridian_;
+  double sign_ = 1.0;
+  Box box_;
+};
+
+}  // namespace
+
+std::pair<double, double> SlicingFamily::depthRange(const TopoDS_Shape& solid) const {
+  const Box box = boxOf(solid);
+  BRepMesh_IncrementalMesh(solid, 1e-3 * box.size, Standard_False, 0.2, Standard_False);
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location);
+    if (mesh.IsNull()) continue;
+    for (int i = 1; i <= mesh->NbNodes(); ++i) {
+      const double d = depth(mesh->Node(i).Transformed(location.Transformation()));
+      low = std::min(low, d);
+      high = std::max(high, d);
+    }
+  }
+  if (!std::isfinite(low) || !std::isfinite(high)) throw ComputationError("the volume could not be meshed to measure it");
+  return {low, high};
+}
+
+void SlicingFamily::axisField(const TopoDS_Shape& slice, double d, std::vector<Eigen::Vector3d>& points,
+                              std::vector<Eigen::Vector3d>& directions) const {
+  // Mesh nodes of the slice that lie on its slicing surface, at most about 50, with the depth's gradient
+  // reversed there: the tool axis points out of the volume, towards the reference surface.
+  const Box box = boxOf(slice);
+  BRepMesh_IncrementalMesh(slice, 2e-3 * box.size, Standard_False, 0.3, Standard_False);
+  std::vector<Eigen::Vector3d> on;
+  for (TopExp_Explorer it(slice, TopAbs_FACE); it.More(); it.Next()) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location);
+    if (mesh.IsNull()) continue;
+    for (int i = 1; i <= mesh->NbNodes(); ++i) {
+      const gp_Pnt p = mesh->Node(i).Transformed(location.Transformation());
+      if (std::abs(depth(p) - d) < 1e-4 * std::max(1.0, box.size)) on.push_back(toEigen(p.XYZ()));
+    }
+  }
+  const size_t stride = std::max<size_t>(1, on.size() / 50);
+  const double h = 1e-3 * std::max(1.0, box.size);
+  for (size_t i = 0; i < on.size(); i += stride) {
+    Eigen::Vector3d gradient;
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      e[k] = h;
+      gradient[k] = (depth(toPoint(on[i] + e)) - depth(toPoint(on[i] - e))) / (2.0 * h);
+    }
+    if (!(gradient.norm() > 1e-12) || !gradient.allFinite()) continue;
+    points.push_back(on[i]);
+    directions.push_back(-gradient.normalized());
+  }
+}
+
+std::unique_ptr<SlicingFamily> planesAlong(const TopoDS_Shape& solid, const Eigen::Vector3d& normal) {
+  const Box box = boxOf(solid);
+  return std::make_unique<PlaneFamily>(box.centre, normal, box);
+}
+
+std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_Face& reference, Strategy strategy) {
+  const Box box = boxOf(solid);
+  Eigen::Vector3d point;
+  const Eigen::Vector3d inward = centreInward(reference, point);
+  const BRepAdaptor_Surface surface(reference);
+  const bool plane = surface.GetType() == GeomAbs_Plane, cylinder = surface.GetType() == GeomAbs_Cylinder;
+  if (strategy == Strategy::PlanesParallelToFace || plane) return std::make_unique<PlaneFamily>(point, inward, box);
+  if (strategy == Strategy::CoaxialCylinders || cylinder) {
+    const gp_Cylinder c = surface.Cylinder();
+    const Eigen::Vector3d axisPoint = toEigen(c.Axis().Location().XYZ()), axis = toEigen(c.Axis().Direction().XYZ());
+    Eigen::Vector3d radial = point - axisPoint;
+    radial -= axis.dot(radial) * axis;
+    return std::make_unique<CylinderFamily>(c.Axis(), c.Radius(), inward.dot(radial) < 0.0, box);
+  }
+  if (surface.GetType() == GeomAbs_SurfaceOfRevolution)
+    return std::make_unique<RevolutionFamily>(reference, surface.AxeOfRevolution(), box);
+  if (surface.GetType() == GeomAbs_Cone) return std::make_unique<RevolutionFamily>(reference, surface.Cone().Axis(), box);
+  return std::make_unique<OffsetFamily>(reference, box);
+}
+
+gp_Pnt insidePoint(const TopoDS_Shape& solid) {
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(solid, props);
+  const gp_Pnt centre = props.CentreOfMass();
+  BRepClass3d_SolidClassifier classifier(solid, centre, 1e-7);
+  if (classifier.State() == TopAbs_IN) return centre;
+  // Not convex: along lines through the centre, the middle of the first stretch inside.
+  for (const gp_Dir& direction : {gp::DX(), gp::DY(), gp::DZ()}) {
+    IntCurvesFace_ShapeIntersector rays;
+    rays.Load(solid, 1e-7);
+    rays.Perform(gp_Lin(centre, direction), -1e12, 1e12);
+    if (!rays.IsDone() || rays.NbPnt() < 2) continue;
+    std::vector<double> at;
+    for (int i = 1; i <= rays.NbPnt(); ++i) at.push_back(rays.WParameter(i));
+    std::sort(at.begin(), at.end());
+    for (size_t i = 0; i + 1 < at.size(); ++i) {
+      const gp_Pnt middle = centre.Translated(0.5 * (at[i] + at[i + 1]) * gp_Vec(direction));
+      if (BRepClass3d_SolidClassifier(solid, middle, 1e-7).State() == TopAbs_IN) return middle;
+    }
+  }
+  return centre;
+}
+
+}  // namespace hsm::roughing

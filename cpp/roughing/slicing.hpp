@@ -1,0 +1,41 @@
+// The families of slicing surfaces of the partition (internal): a depth over space, and the surface of each
+// depth as a face large enough to cross the whole volume.
+#pragma once
+
+#include "roughing/roughing.hpp"
+
+#include <TopoDS_Face.hxx>
+#include <gp_Pnt.hxx>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace hsm::roughing {
+
+class SlicingFamily {
+public:
+  virtual ~SlicingFamily() = default;
+  // Depth of a point: distance from the reference surface, growing into the volume.
+  virtual double depth(const gp_Pnt& point) const = 0;
+  // The surface at `depth`, as a face beyond the volume in every direction.
+  virtual TopoDS_Shape surfaceAt(double depth) const = 0;
+  virtual SlicingSurface surfaceDescription(double depth, int referenceFace) const = 0;
+  // The tool axis (the surface's normal, towards the volume's outside) at sample points of the surface at
+  // `depth` within the slice.
+  virtual void axisField(const TopoDS_Shape& slice, double depth, std::vector<Eigen::Vector3d>& points,
+                         std::vector<Eigen::Vector3d>& directions) const;
+
+  // Least and largest depth over the solid (its mesh nodes, within a fine deflection).
+  std::pair<double, double> depthRange(const TopoDS_Shape& solid) const;
+};
+
+// Planes normal to `normal` (depth along it).
+std::unique_ptr<SlicingFamily> planesAlong(const TopoDS_Shape& solid, const Eigen::Vector3d& normal);
+// The family of a strategy following the reference face of the solid (S1, S2, S4, S5).
+std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_Face& reference, Strategy strategy);
+
+// A point inside a solid (its centre of mass when inside, else a point found along a line through it).
+gp_Pnt insidePoint(const TopoDS_Shape& solid);
+
+}  // namespace hsm::roughing
