@@ -39,4 +39,10 @@ private:
   std::chrono::steady_clock::time_point last_;
 };
 
+// A part [from, to] of a computation's progress as a callback of its own (none stays none).
+inline ProgressCallback progressPart(const ProgressCallback& callback, double from, double to) {
+  if (!callback) return {};
+  return [callback, from, to](double done) { return callback(from + (to - from) * done); };
+}
+
 }  // namespace hsm

@@ -2,6 +2,7 @@
 #include "roughing/slicing.hpp"
 
 #include "common/error.hpp"
+#include "common/occt_progress.hpp"
 #include "common/text.hpp"
 
 #include <BRepAlgoAPI_Splitter.hxx>
@@ -113,7 +114,9 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   // The slicing family: a depth measure over space and the surface at each depth.
   std::unique_ptr<SlicingFamily> family;
   if (strategy == Strategy::SetupPlanes) {
-    const auto [direction, reach] = setupDirection(solid, part, settings);
+    PartitionSettings search = settings;
+    search.progress = progressPart(settings.progress, 0.0, 0.15);
+    const auto [direction, reach] = setupDirection(solid, part, search);
     result.setupDirection = direction;
     result.setupReach = reach;
     family = planesAlong(solid.solid, -direction);  // from the side the tool comes from, inwards
@@ -136,13 +139,15 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   TopTools_ListOfShape arguments, tools;
   arguments.Append(solid.solid);
   for (int k = 1; k < count; ++k) tools.Append(family->surfaceAt(low + k * settings.step));
-  reporter(0.2);
+  reporter(0.19);  // the surfaces are built; OCCT's splitter reports 0.2 to 0.7
   TopoDS_Shape pieces = solid.solid;
   if (!tools.IsEmpty()) {
     BRepAlgoAPI_Splitter splitter;
     splitter.SetArguments(arguments);
     splitter.SetTools(tools);
-    splitter.Build();
+    Handle(OcctProgress) occtProgress = new OcctProgress(settings.progress, 0.2, 0.7);
+    splitter.Build(occtProgress->Start());
+    if (occtProgress->cancelled()) throw Cancelled("partition");
     if (!splitter.IsDone() || splitter.HasErrors())
       throw ComputationError("OCCT could not split the volume by the " + strategyName(strategy) + " surfaces");
     pieces = splitter.Shape();

@@ -82,8 +82,12 @@ inline constexpr int kMaxSlices = 2000;
 
 // stock − part. InputError for a part or stock that is not a closed valid solid, a stock that does not contain
 // the part, nothing to remove; ComputationError when the boolean fails (also silently: volumes that do not add
-// up, an invalid result) even with a fuzzy value.
-VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& part);
+// up, an invalid result) even with a fuzzy value. Cancelled when `progress` returns false.
+VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& part, const ProgressCallback& progress = {});
+
+// What is wrong with a boolean's result that should be solids of `expected` mm³ (no solid, invalid, another
+// volume: a cut that fails silently returns its input), or empty when nothing is: every boolean's check.
+std::string cutProblem(const TopoDS_Shape& result, double expected);
 
 enum class Strategy {
   PlanesParallelToFace = 1,   // S1

@@ -224,7 +224,10 @@ std::pair<Eigen::Vector3d, double> setupDirection(const RemovalSolid& solid, con
   for (const Eigen::Vector3d& seed : sides.seeds)
     if (seed.dot(sides.mean) > -1e-9) directions.push_back(seed);
   std::vector<Candidate> ranked;
-  for (;;) {
+  ProgressReporter reporter(settings.progress, "setup direction search");
+  const int passes = 1 + static_cast<int>(std::ceil(std::log2(std::max(1.0, spacing / finest)) - 1e-9));
+  for (int pass = 0;; ++pass) {
+    reporter(double(pass) / passes);
     std::vector<double> share(directions.size(), 0.0);
     parallelSlices(static_cast<long>(directions.size()), 0, 2, [&](long from, long to) {
       for (long i = from; i < to; ++i)
@@ -248,6 +251,7 @@ std::pair<Eigen::Vector3d, double> setupDirection(const RemovalSolid& solid, con
     }
     ranked.resize(std::min(ranked.size(), kCentres * 4));
   }
+  reporter(1.0);
   return {ranked.front().direction, ranked.front().share};
 }
 

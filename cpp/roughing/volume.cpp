@@ -1,6 +1,7 @@
 #include "roughing/roughing.hpp"
 
 #include "common/error.hpp"
+#include "common/occt_progress.hpp"
 #include "common/text.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
@@ -220,33 +221,27 @@ RemovalSolid classify(const TopoDS_Solid& solid, const TopTools_MapOfShape& from
   return r;
 }
 
-// The cut, checked: a valid result whose volume is the stock's less the part's within kVolumeTolerance.
-// OCCT's booleans can fail silently (a result that is its input, IsDone true); `why` says what failed.
 bool checkedCut(BRepAlgoAPI_Cut& cut, double expected, std::string& why) {
   if (!cut.IsDone() || cut.HasErrors()) {
     why = "the boolean cut reported an error";
     return false;
   }
-  const TopoDS_Shape& result = cut.Shape();
-  if (result.IsNull() || !TopExp_Explorer(result, TopAbs_SOLID).More()) {
-    why = "the cut gave no solid";
-    return false;
-  }
-  if (!BRepCheck_Analyzer(result).IsValid()) {
-    why = "the cut gave an invalid solid (BRepCheck)";
-    return false;
-  }
-  const double volume = solidVolume(result);
-  if (std::abs(volume - expected) > kVolumeTolerance * std::max(expected, 1.0) + 1e-9 * expected) {
-    why = "the cut's volume " + number(volume) + " mm³ is not the stock's less the part's (" + number(expected) + " mm³)";
-    return false;
-  }
-  return true;
+  why = cutProblem(cut.Shape(), expected);
+  return why.empty();
 }
 
 }  // namespace
 
-VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& part) {
+std::string cutProblem(const TopoDS_Shape& result, double expected) {
+  if (result.IsNull() || !TopExp_Explorer(result, TopAbs_SOLID).More()) return "the cut gave no solid";
+  if (!BRepCheck_Analyzer(result).IsValid()) return "the cut gave an invalid solid (BRepCheck)";
+  const double volume = solidVolume(result);
+  if (std::abs(volume - expected) > kVolumeTolerance * std::max(expected, 1.0))
+    return "the cut's volume " + number(volume) + " mm³ is not the stock's less the part's (" + number(expected) + " mm³)";
+  return {};
+}
+
+VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& part, const ProgressCallback& progress) {
   VolumeToRemove v;
   v.partVolume = checkedSolid(part, "part");
   v.stockVolume = checkedSolid(stock, "stock");
@@ -274,7 +269,9 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
   if (expected <= kVolumeTolerance * v.stockVolume)
     throw InputError("the stock is the part (nothing to remove: " + number(expected) + " mm³): pick the blank, not the part");
   std::string why;
-  BRepAlgoAPI_Cut cut(stock, part);
+  Handle(OcctProgress) cutProgress = new OcctProgress(progress, 0.1, 0.6);
+  BRepAlgoAPI_Cut cut(stock, part, cutProgress->Start());
+  if (cutProgress->cancelled()) throw Cancelled("stock − part");
   BRepAlgoAPI_Cut fuzzy;
   BRepAlgoAPI_Cut* done = &cut;
   if (!checkedCut(cut, expected, why)) {
@@ -285,7 +282,9 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
     fuzzy.SetArguments(arguments);
     fuzzy.SetTools(tools);
     fuzzy.SetFuzzyValue(kFuzzyValue);
-    fuzzy.Build();
+    Handle(OcctProgress) fuzzyProgress = new OcctProgress(progress, 0.6, 0.8);
+    fuzzy.Build(fuzzyProgress->Start());
+    if (fuzzyProgress->cancelled()) throw Cancelled("stock − part");
     if (!checkedCut(fuzzy, expected, why))
       throw ComputationError("stock − part failed: " + first + "; again with a fuzzy value of " + number(kFuzzyValue) +
                              " mm: " + why + ". Check both solids (Part ▸ Check geometry)");
@@ -318,8 +317,13 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
       if (onStock.State() == TopAbs_ON) fromStock.Add(it.Current());
     }
   }
-  for (TopExp_Explorer it(unify.Shape(), TopAbs_SOLID); it.More(); it.Next())
+  ProgressReporter reporter(progress, "stock − part");
+  reporter(0.8);
+  for (TopExp_Explorer it(unify.Shape(), TopAbs_SOLID); it.More(); it.Next()) {
     v.solids.push_back(classify(TopoDS::Solid(it.Current()), fromStock));
+    reporter(0.8 + 0.02 * static_cast<double>(v.solids.size()));
+  }
+  reporter(1.0);
   std::sort(v.solids.begin(), v.solids.end(), [](const RemovalSolid& a, const RemovalSolid& b) { return a.volume > b.volume; });
   for (const RemovalSolid& s : v.solids) v.volume += s.volume;
   return v;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace hsm;
@@ -93,6 +94,14 @@ TEST(Roughing, BadInputsAreRefusedWithTheirFix) {
   EXPECT_THROW(volumeToRemove(TopoDS_Shape(), slot().part), InputError);
 }
 
+TEST(Roughing, ACutThatFailsSilentlyIsCaught) {
+  // OCCT's silent failure: IsDone, and the result is the stock itself.
+  const double expected = slantedSlotVolume({});
+  EXPECT_NE(cutProblem(slot().stock, expected).find("not the stock's less the part's"), std::string::npos);
+  EXPECT_NE(cutProblem(TopoDS_Shape(), expected).find("no solid"), std::string::npos);
+  EXPECT_EQ(cutProblem(slotVolume().solids.front().solid, expected), "");
+}
+
 TEST(Roughing, TheImpellersChannelsHaveThePapersSixFaces) {
   const PartAndStock wheel = impeller();
   const VolumeToRemove v = volumeToRemove(wheel.stock, wheel.part);
@@ -111,4 +120,23 @@ TEST(Roughing, TheImpellersChannelsHaveThePapersSixFaces) {
     EXPECT_NEAR(p.volume, channel.volume, 1e-6 * channel.volume) << strategyName(strategy);
     EXPECT_GE(p.subVolumes.size(), 2u) << strategyName(strategy);
   }
+}
+
+TEST(Roughing, LongWorkReportsProgressAndCanBeCancelled) {
+  const RemovalSolid& s = slotVolume().solids.front();
+  std::vector<double> seen;
+  PartitionSettings settings{2.0};
+  settings.progress = [&](double done) { seen.push_back(done); return true; };
+  partition(s, slot().part, Strategy::PlanesParallelToFace, settings);
+  ASSERT_GE(seen.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.back(), 1.0);
+  // OCCT's splitter reports from 0.2 to 0.7 (our own reports are outside), and stops when asked.
+  EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double d) { return d >= 0.2 && d < 0.7; }));
+  settings.progress = [](double done) { return !(done >= 0.2 && done < 0.7); };
+  EXPECT_THROW(partition(s, slot().part, Strategy::PlanesParallelToFace, settings), Cancelled);
+  settings.progress = [](double) { return false; };
+  EXPECT_THROW(partition(s, slot().part, Strategy::PlanesParallelToFace, settings), Cancelled);
+  EXPECT_THROW(partition(s, slot().part, Strategy::SetupPlanes, settings), Cancelled);
+  EXPECT_THROW(volumeToRemove(slot().stock, slot().part, [](double) { return false; }), Cancelled);
 }
