@@ -23,4 +23,5 @@ void bindCurvenet(pybind11::module_& module);
 void bindKinematics(pybind11::module_& module);
 void bindToolpath(pybind11::module_& module);
 void bindDirection(pybind11::module_& module);
+void bindRoughing(pybind11::module_& module);
 }

@@ -62,4 +62,5 @@ PYBIND11_MODULE(_core, module) {
   hsm::bindings::bindKinematics(module);
   hsm::bindings::bindToolpath(module);
   hsm::bindings::bindDirection(module);
+  hsm::bindings::bindRoughing(module);
 }

@@ -1,0 +1,102 @@
+"""5-axis roughing by partition of the volume to remove (the roughing paper, §3), part 1: the volume, its faces,
+its sub-volumes. The rules and the choices where the paper is silent are in cpp/roughing/roughing.hpp.
+
+    wheel = hsmplanner.roughing.impeller(blades=7)
+    volume = hsmplanner.roughing.volume_to_remove(wheel.stock_brep, wheel.part_brep)
+    channel = volume.solids[0]                      # one per inter-blade channel, largest first
+    [c.name for c in channel.face_classes]          # crossable / facing_crossable / not_crossable
+    result = hsmplanner.roughing.partition(channel, wheel.part_brep, "S5", step=8.0)
+    [(s.slice, s.volume) for s in result.sub_volumes]
+
+Shapes are FreeCAD Part shapes or BREP text; results carry BREP text (`brep`) and plain attributes.
+"""
+from . import _core
+from .core_settings import core_settings, enum_value
+from .geometry import as_brep
+
+FaceClass = _core.roughing.FaceClass
+Strategy = _core.roughing.Strategy
+SurfaceKind = _core.roughing.SurfaceKind
+
+STRATEGY_LABELS = {
+    "S1": "S1 planes parallel to the inlet face (3 axes)",
+    "S2": "S2 coaxial cylinders about the outlet face (4 axes)",
+    "S3": "S3 planes of a computed setup (3+2 axes)",
+    "S4": "S4 offsets of the stock skin (5 axes)",
+    "S5": "S5 offsets of the hub / floor (5 axes)",
+}
+
+
+def strategy(value):
+    """A Strategy from itself, its name ('S4'), its number (4) or a label of STRATEGY_LABELS."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        value = "S%d" % value
+    if isinstance(value, str):
+        value = value.strip().split(" ")[0].upper()
+    return enum_value(Strategy, value, "strategy")
+
+
+def volume_to_remove(stock, part, progress=None):
+    """stock − part (OCCT booleans, checked: volumes within 1e-6, validity, one fuzzy retry): a VolumeToRemove
+    whose solids (one per region) carry their faces' classes. ValueError for bad inputs (not closed valid
+    solids, a stock that does not hold the part, nothing to remove); RuntimeError when the boolean fails."""
+    return _core.roughing.volume_to_remove(as_brep(stock), as_brep(part), progress)
+
+
+def _settings(step=None, setup_resolution_deg=None, setup_grid=None):
+    return core_settings(_core.roughing.PartitionSettings, step=None if step is None else float(step),
+                         setup_resolution_deg=None if setup_resolution_deg is None else float(setup_resolution_deg),
+                         setup_grid=None if setup_grid is None else float(setup_grid))
+
+
+def _solid(volume):
+    """A RemovalSolid from itself, or the largest solid of a VolumeToRemove."""
+    if isinstance(volume, _core.roughing.VolumeToRemove):
+        if not volume.solids:
+            raise ValueError("the volume to remove has no solid")
+        return volume.solids[0]
+    if not isinstance(volume, _core.roughing.RemovalSolid):
+        raise TypeError("expected a RemovalSolid (volume_to_remove(...).solids[i]) or a VolumeToRemove, got %s"
+                        % type(volume).__name__)
+    return volume
+
+
+def partition(volume, part, strategy_name="S5", step=None, setup_resolution_deg=None, setup_grid=None,
+              progress=None):
+    """The solid (a RemovalSolid, or a VolumeToRemove's largest) cut by one of the five slicings, `step` mm
+    apart (default: the core's 8 mm, 100 % of a Ø8 tool): a Partition whose sub_volumes carry their volume,
+    BREP, slicing surface and tool axis field. ValueError for a step ≤ 0 or beyond the volume, or a strategy
+    whose reference face this volume lacks."""
+    return _core.roughing.partition(_solid(volume), as_brep(part), strategy(strategy_name),
+                                    _settings(step, setup_resolution_deg, setup_grid), progress)
+
+
+def setup_direction(volume, part, resolution_deg=None, grid=None, progress=None):
+    """(unit direction, reached share): the fixed tool axis from which a straight tool reaches the most of the
+    volume without crossing the part (S3's setup)."""
+    direction, share = _core.roughing.setup_direction(_solid(volume), as_brep(part),
+                                                      _settings(None, resolution_deg, grid), progress)
+    return tuple(float(x) for x in direction), float(share)
+
+
+def reachable_share(volume, part, direction, grid=None):
+    """Share (0..1) of the volume a straight tool along `direction` (towards the spindle) reaches."""
+    return _core.roughing.reachable_share(_solid(volume), as_brep(part), [float(x) for x in direction],
+                                          _settings(None, None, grid))
+
+
+def slanted_slot_block(**parameters):
+    """The slanted slot test part (PartAndStock: part_brep, stock_brep); parameters of SlantedSlotParameters
+    (length, width, height, slot_width, slot_depth, tilt_deg), mm and degrees."""
+    return _core.roughing.slanted_slot_block(core_settings(_core.roughing.SlantedSlotParameters, **parameters))
+
+
+def slanted_slot_volume(**parameters):
+    """The slanted slot's volume to remove in closed form, mm³."""
+    return _core.roughing.slanted_slot_volume(core_settings(_core.roughing.SlantedSlotParameters, **parameters))
+
+
+def impeller(**parameters):
+    """The radial compressor impeller test part (PartAndStock); parameters of ImpellerParameters (blades,
+    hub_inlet_radius, outlet_radius, height, channel_height, lean_deg, wrap_deg, thickness, base_thickness)."""
+    return _core.roughing.impeller(core_settings(_core.roughing.ImpellerParameters, **parameters))
