@@ -75,6 +75,7 @@ bench: build
 	scripts/run-freecadcmd.sh tests/bench/bench_preview.py
 	$(BUILD_DIR)/bin/bench_dropcutter
 	$(BUILD_DIR)/bin/bench_direction
+	$(BUILD_DIR)/bin/bench_roughing
 	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
 
 clean:

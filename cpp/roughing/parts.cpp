@@ -13,9 +13,9 @@
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
-#include <GeomAPI_Interpolate.hxx>
+#include <Geom_Ellipse.hxx>
+#include <gp_Elips.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
-#include <TColgp_HArray1OfPnt.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <gp_Ax2.hxx>
 
@@ -36,13 +36,17 @@ TopoDS_Shape unified(const TopoDS_Shape& shape) {
   return unify.Shape();
 }
 
-// An edge through points of the meridian (r, z) → (x = r, y = 0, z), from t0 to t1.
-TopoDS_Edge meridianEdge(const std::function<gp_Pnt(double)>& at, double t0, double t1, int samples = 40) {
-  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, samples);
-  for (int i = 0; i < samples; ++i) points->SetValue(i + 1, at(t0 + (t1 - t0) * i / (samples - 1)));
-  GeomAPI_Interpolate interpolate(points, Standard_False, 1e-9);
-  interpolate.Perform();
-  return BRepBuilderAPI_MakeEdge(interpolate.Curve()).Edge();
+// The quarter ellipse of the meridian plane y = 0 about `centre`, x = centre − a·cos t, z = centre − b·sin t
+// for t in [0, π/2], as an exact arc (its surface of revolution is exact, and cheaper for the booleans than an
+// interpolated curve's).
+TopoDS_Edge meridianArc(const gp_Pnt& centre, double a, double b) {
+  if (a >= b) {  // major axis along −X: P(u) = C + a·cos u·(−X) + b·sin u·(−Z), u = t
+    const gp_Elips ellipse(gp_Ax2(centre, -gp::DY(), -gp::DX()), a, b);
+    return BRepBuilderAPI_MakeEdge(new Geom_Ellipse(ellipse), 0.0, 0.5 * M_PI).Edge();
+  }
+  // major axis along −Z: P(u) = C + b·cos u·(−Z) + a·sin u·(−X), u = π/2 − t
+  const gp_Elips ellipse(gp_Ax2(centre, gp::DY(), -gp::DZ()), b, a);
+  return BRepBuilderAPI_MakeEdge(new Geom_Ellipse(ellipse), 0.0, 0.5 * M_PI).Edge();
 }
 
 // The solid of revolution about Z of the region bounded by the polyline `before`, the meridian curve from its
@@ -108,10 +112,10 @@ PartAndStock impeller(const ImpellerParameters& p) {
   const double base = -p.baseThickness, half = 0.5 * M_PI;
   // The blank: inlet plane, shroud (its skin), outlet cylinder, base, about the axis.
   const TopoDS_Shape blank =
-      revolved({gp_Pnt(0, 0, base), gp_Pnt(p.outletRadius, 0, base), shroud(half)}, meridianEdge(shroud, half, 0.0),
+      revolved({gp_Pnt(0, 0, base), gp_Pnt(p.outletRadius, 0, base), shroud(half)}, meridianArc(gp_Pnt(p.outletRadius, 0.0, p.height), a - h, b - h),
                {shroud(0.0), gp_Pnt(0, 0, p.height)});
   const TopoDS_Shape hubBody =
-      revolved({gp_Pnt(0, 0, base), gp_Pnt(p.outletRadius, 0, base), hub(half)}, meridianEdge(hub, half, 0.0),
+      revolved({gp_Pnt(0, 0, base), gp_Pnt(p.outletRadius, 0, base), hub(half)}, meridianArc(gp_Pnt(p.outletRadius, 0.0, p.height), a, b),
                {hub(0.0), gp_Pnt(0, 0, p.height)});
   // Blades: sections across the channel (hub to beyond the shroud) at stations along the flow, each a thin
   // quadrilateral at the angle θ(t, s) = θ_k + wrap·t/(π/2) + lean·s, lofted into a solid.
@@ -119,8 +123,8 @@ PartAndStock impeller(const ImpellerParameters& p) {
   const double lean = p.leanDeg * M_PI / 180.0, wrap = p.wrapDeg * M_PI / 180.0;
   for (int k = 0; k < p.blades; ++k) {
     BRepOffsetAPI_ThruSections loft(Standard_True, Standard_False, 1e-6);
-    for (int i = 0; i <= 10; ++i) {
-      const double t = -0.15 + (half + 0.3) * i / 10.0;
+    for (int i = 0; i <= 6; ++i) {
+      const double t = -0.15 + (half + 0.3) * i / 6.0;
       const gp_Pnt hp = hub(t), sp = shroud(t);
       auto corner = [&](double s, double side) {
         const double r = hp.X() + s * (sp.X() - hp.X()), z = hp.Z() + s * (sp.Z() - hp.Z());

@@ -102,6 +102,7 @@ struct PartitionSettings {
   double step = 8.0;                    // mm between slicing surfaces (axial engagement)
   double setupResolutionDeg = 5.0;      // S3: directions searched every … degrees
   double setupGrid = 2.0;               // S3: spacing of the points of the volume, mm
+  int threads = 0;                      // S3's search: threads (0: all cores)
   ProgressCallback progress;
 };
 

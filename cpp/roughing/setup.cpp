@@ -229,7 +229,7 @@ std::pair<Eigen::Vector3d, double> setupDirection(const RemovalSolid& solid, con
   for (int pass = 0;; ++pass) {
     reporter(double(pass) / passes);
     std::vector<double> share(directions.size(), 0.0);
-    parallelSlices(static_cast<long>(directions.size()), 0, 2, [&](long from, long to) {
+    parallelSlices(static_cast<long>(directions.size()), settings.threads, 2, [&](long from, long to) {
       for (long i = from; i < to; ++i)
         share[static_cast<size_t>(i)] = reachShare(mesh, points, directions[static_cast<size_t>(i)], settings.setupGrid);
     });

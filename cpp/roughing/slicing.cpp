@@ -1,10 +1,12 @@
 #include "roughing/slicing.hpp"
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
@@ -204,12 +206,16 @@ public:
   RevolutionFamily(const TopoDS_Face& reference, const gp_Ax1& axis, const Box& box)
       : axisPoint_(toEigen(axis.Location().XYZ())), axis_(toEigen(axis.Direction().XYZ())), box_(box) {
     e1_ = axis_.unitOrthogonal();
-    // The meridian: the surface along v at the face's middle u, over the surface's whole v range.
+    // The meridian: the surface along v at the face's middle u, over the surface's v range where it is a
+    // bounded curve (a B-spline's, beyond the face), else over the face's (a periodic meridian, an ellipse's
+    // whole turn, would loop): the ends are extended along their tangents below.
     BRepAdaptor_Surface surface(reference, Standard_False);
     double u0, u1, v0, v1;
     BRepTools::UVBounds(reference, u0, u1, v0, v1);
-    const double vFirst = std::isfinite(surface.FirstVParameter()) ? surface.FirstVParameter() : v0;
-    const double vLast = std::isfinite(surface.LastVParameter()) ? surface.LastVParameter() : v1;
+    const bool whole = !surface.IsVPeriodic() && std::isfinite(surface.FirstVParameter()) &&
+                       std::isfinite(surface.LastVParameter()) && !surface.IsVClosed();
+    const double vFirst = whole ? surface.FirstVParameter() : v0;
+    const double vLast = whole ? surface.LastVParameter() : v1;
     const int n = 81;
     for (int i = 0; i < n; ++i) meridian_.push_back(plane(toEigen(surface.Value(0.5 * (u0 + u1), vFirst + (vLast - vFirst) * i / (n - 1)).XYZ())));
     // The side of the volume: the face's inward normal at its centre, in the meridian plane.
@@ -231,20 +237,37 @@ public:
     return std::sqrt(best);
   }
   TopoDS_Shape surfaceAt(double d) const override {
-    // The offset meridian, extended along its end tangents beyond the volume, revolved about the axis.
+    // The offset meridian, fitted through the offset points, with straight extensions along its end
+    // tangents beyond the volume (edges of their own: a fit through far-off points would swing, even across
+    // the axis), revolved about the axis.
     std::vector<Eigen::Vector2d> points;
     for (size_t i = 0; i < meridian_.size(); ++i) points.push_back(meridian_[i] + sign_ * d * normalAt(i));
     const Eigen::Vector2d first = (points[0] - points[1]).normalized(), last = (points.back() - points[points.size() - 2]).normalized();
-    Handle(TColgp_HArray1OfPnt) poles = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()) + 2);
     auto at = [&](const Eigen::Vector2d& q) {
       return toPoint(axisPoint_ + q.y() * axis_ + std::max(q.x(), 1e-3) * e1_);  // (ρ, z) in the plane of e1
     };
-    poles->SetValue(1, at(points.front() + box_.size * first));
-    for (size_t i = 0; i < points.size(); ++i) poles->SetValue(static_cast<int>(i) + 2, at(points[i]));
-    poles->SetValue(static_cast<int>(points.size()) + 2, at(points.back() + box_.size * last));
+    // An extension stops at the axis: a meridian that reaches it closes the surface there.
+    auto extended = [&](const Eigen::Vector2d& end, const Eigen::Vector2d& along) {
+      const double length = along.x() < -1e-9 ? std::min(box_.size, (end.x() - 1e-3) / -along.x()) : box_.size;
+      return end + length * along;
+    };
+    Handle(TColgp_HArray1OfPnt) poles = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()));
+    for (size_t i = 0; i < points.size(); ++i) poles->SetValue(static_cast<int>(i) + 1, at(points[i]));
     GeomAPI_PointsToBSpline fit(poles->Array1(), 3, 5, GeomAbs_C2, 1e-4);
-    const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(fit.Curve()).Edge();
-    return BRepPrimAPI_MakeRevol(edge, gp_Ax1(toPoint(axisPoint_), gp_Dir(axis_.x(), axis_.y(), axis_.z())), 2.0 * M_PI).Shape();
+    if (!fit.IsDone())
+      throw ComputationError("the offset of the surface of revolution by " + number(d) + " mm could not be fitted: "
+                             "use a smaller step");
+    BRepBuilderAPI_MakeWire meridian;
+    const gp_Pnt start = fit.Curve()->StartPoint(), end = fit.Curve()->EndPoint();
+    const gp_Pnt before = at(extended(points.front(), first)), after = at(extended(points.back(), last));
+    if (before.Distance(start) > 1e-6) meridian.Add(BRepBuilderAPI_MakeEdge(before, start).Edge());
+    meridian.Add(BRepBuilderAPI_MakeEdge(fit.Curve()).Edge());
+    if (after.Distance(end) > 1e-6) meridian.Add(BRepBuilderAPI_MakeEdge(end, after).Edge());
+    if (!meridian.IsDone()) throw ComputationError("the offset meridian at " + number(d) + " mm is degenerate: use another step");
+    BRepPrimAPI_MakeRevol revolve(meridian.Wire(), gp_Ax1(toPoint(axisPoint_), gp_Dir(axis_.x(), axis_.y(), axis_.z())), 2.0 * M_PI);
+    if (!revolve.IsDone())
+      throw ComputationError("the offset meridian at " + number(d) + " mm could not be revolved: use another step");
+    return revolve.Shape();
   }
   SlicingSurface surfaceDescription(double d, int reference) const override {
     SlicingSurface s;

@@ -140,15 +140,13 @@ std::vector<std::vector<bool>> neighbourGroups(const TopoDS_Shape& solid, const 
 // 5 × 5 grid of its parameters (the points on the face), more than half first meet a crossable face across the
 // volume, not a neighbour (a wall opening onto the skin sees the skin past their common edge: it does not face
 // it), whose normal is within 45° of opposite to the ray (not a grazing exit).
-bool seesCrossable(const TopoDS_Shape& solid, const TopoDS_Face& face, const TopTools_IndexedMapOfShape& faces,
+bool seesCrossable(IntCurvesFace_ShapeIntersector& rays, const TopoDS_Face& face, const TopTools_IndexedMapOfShape& faces,
                    const std::vector<FaceClass>& classes, const std::vector<int>& groups,
                    const std::vector<bool>& neighbour) {
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
   BRepAdaptor_Surface surface(face);
   BRepTopAdaptor_FClass2d inside(face, 1e-7);
-  IntCurvesFace_ShapeIntersector rays;
-  rays.Load(solid, 1e-7);
   int seen = 0, crossable = 0;
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j) {
@@ -207,12 +205,14 @@ RemovalSolid classify(const TopoDS_Solid& solid, const TopTools_MapOfShape& from
   }
   // A part's surface is facing_crossable when most of its largest face sees a crossable face.
   const std::vector<std::vector<bool>> neighbours = neighbourGroups(solid, faces, r.faceGroups, r.groupCount());
+  IntCurvesFace_ShapeIntersector rays;  // loaded once: it prepares every face of the solid
+  rays.Load(solid, 1e-7);
   for (int g = 0; g < r.groupCount(); ++g) {
     int largest = 0;
     for (int i = 1; i <= faces.Extent(); ++i)
       if (r.faceGroups[i - 1] == g && (largest == 0 || r.faceAreas[i - 1] > r.faceAreas[largest - 1])) largest = i;
     if (r.faceClasses[largest - 1] == FaceClass::Crossable) continue;
-    if (!seesCrossable(solid, TopoDS::Face(faces(largest)), faces, r.faceClasses, r.faceGroups,
+    if (!seesCrossable(rays, TopoDS::Face(faces(largest)), faces, r.faceClasses, r.faceGroups,
                        neighbours[static_cast<size_t>(g)]))
       continue;
     for (int i = 1; i <= faces.Extent(); ++i)

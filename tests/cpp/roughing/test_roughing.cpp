@@ -2,6 +2,13 @@
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_Surface.hxx>
+#include <TopoDS.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +28,26 @@ int count(const RemovalSolid& s, FaceClass c) {
       ++n;
     }
   return n;
+}
+
+// Each slice starts where it should: the nearest point of slice k to the reference face is k·step away (the
+// slicing surfaces are offsets of it, not just any cut that keeps the volume).
+void expectOffsetLayers(const RemovalSolid& s, const Partition& p, double tolerance) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(s.solid, TopAbs_FACE, faces);
+  ASSERT_GT(p.referenceFace, 0);
+  // The reference surface untrimmed (a slab far from the inlet annulus is k·step from its plane, not from the
+  // annulus), within ±1000 mm where it is unbounded.
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(faces(p.referenceFace)));
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  auto bounded = [](double x) { return std::clamp(x, -1e3, 1e3); };
+  const TopoDS_Face reference = BRepBuilderAPI_MakeFace(surface, bounded(u0), bounded(u1), bounded(v0), bounded(v1), 1e-7);
+  for (const SubVolume& sub : p.subVolumes) {
+    BRepExtrema_DistShapeShape distance(sub.shape, reference);
+    ASSERT_TRUE(distance.IsDone());
+    EXPECT_NEAR(distance.Value(), sub.slice * p.step, tolerance) << strategyName(p.strategy) << " slice " << sub.slice;
+  }
 }
 
 const PartAndStock& slot() {
@@ -56,10 +83,12 @@ TEST(Roughing, PlanesGiveSlabsThatAddUpToTheVolume) {
   EXPECT_NEAR(planes.subVolumes.front().surface.direction.z(), -1.0, 1e-9);
   ASSERT_FALSE(planes.subVolumes.front().axisDirections.empty());
   EXPECT_NEAR(planes.subVolumes.front().axisDirections.front().z(), 1.0, 1e-6);  // the tool axis points up, out
+  expectOffsetLayers(s, planes, 1e-6);
   // S5 from the floor along the slot's axis: 24 + 8·tan 30° = 28.62 mm: 4 slabs.
   const Partition floor = partition(s, slot().part, Strategy::HubOffsets, {4.0});
   EXPECT_EQ(floor.subVolumes.size(), 8u);  // ceil(28.62 / 4)
   EXPECT_NEAR(floor.volume, s.volume, 1e-6 * s.volume);
+  expectOffsetLayers(s, floor, 1e-6);
 }
 
 TEST(Roughing, TheSetupDirectionOfTheSlantedSlotIsItsAxis) {
@@ -119,6 +148,8 @@ TEST(Roughing, TheImpellersChannelsHaveThePapersSixFaces) {
     const Partition p = partition(channel, wheel.part, strategy, {4.0});
     EXPECT_NEAR(p.volume, channel.volume, 1e-6 * channel.volume) << strategyName(strategy);
     EXPECT_GE(p.subVolumes.size(), 2u) << strategyName(strategy);
+    // Offsets of surfaces of revolution are revolved offsets of a fitted meridian: within 0.02 mm.
+    expectOffsetLayers(channel, p, strategy == Strategy::PlanesParallelToFace ? 1e-6 : 0.02);
   }
 }
 
