@@ -179,6 +179,10 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
     sub.volume = volumeOf(sub.shape);
     sub.surface = family->surfaceDescription(low + slice * settings.step, result.referenceFace);
     family->axisField(sub.shape, low + slice * settings.step, sub.axisPoints, sub.axisDirections);
+    // The field points towards the reference surface: out through a crossable one (S1, S2, S4), but S5's
+    // reference is the floor, and the tool stands on the other side of the slice, away from it.
+    if (strategy == Strategy::HubOffsets)
+      for (Eigen::Vector3d& axis : sub.axisDirections) axis = -axis;
     result.volume += sub.volume;
     result.subVolumes.push_back(std::move(sub));
   }

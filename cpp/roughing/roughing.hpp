@@ -124,7 +124,8 @@ struct SubVolume {
   int slice = 0;           // 0 at the reference surface, then inwards
   SlicingSurface surface;  // the surface at the slice's start
   // The tool axis on the surface: constant for planes (the normal), radial for cylinders, the surface normal
-  // for offsets — given as unit vectors at sample points of the slice's surface.
+  // for offsets — unit vectors towards the spindle (out through the crossable reference face for S1, S2, S4,
+  // away from the floor for S5, along the setup direction for S3) at sample points of the slice's surface.
   std::vector<Eigen::Vector3d> axisPoints, axisDirections;
 };
 

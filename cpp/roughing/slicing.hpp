@@ -21,8 +21,8 @@ public:
   // The surface at `depth`, as a face beyond the volume in every direction.
   virtual TopoDS_Shape surfaceAt(double depth) const = 0;
   virtual SlicingSurface surfaceDescription(double depth, int referenceFace) const = 0;
-  // The tool axis (the surface's normal, towards the volume's outside) at sample points of the surface at
-  // `depth` within the slice.
+  // The surface's unit normal towards the reference surface (out of the volume when the reference is
+  // crossable; the partition turns it for S5) at sample points of the surface at `depth` within the slice.
   virtual void axisField(const TopoDS_Shape& slice, double depth, std::vector<Eigen::Vector3d>& points,
                          std::vector<Eigen::Vector3d>& directions) const;
 

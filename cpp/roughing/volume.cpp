@@ -257,15 +257,30 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
       TopLoc_Location location;
       const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location);
       if (mesh.IsNull()) continue;
-      for (int i = 1; i <= mesh->NbNodes(); i += std::max(1, mesh->NbNodes() / 200)) {
-        inStock.Perform(mesh->Node(i).Transformed(location.Transformation()), 1e-4 * size);
-        if (inStock.State() == TopAbs_OUT)
-          throw InputError("the stock does not contain the part (a point of the part lies outside it): pick a larger "
-                           "stock, or check that the two are placed together");
+      auto outside = [&](const gp_Pnt& point, double tolerance) {
+        inStock.Perform(point.Transformed(location.Transformation()), tolerance);
+        return inStock.State() == TopAbs_OUT;
+      };
+      // Nodes, and on planes the centres of triangles (a box's face has nodes at its corners only, which may
+      // all lie on a smaller stock; a curved face has nodes inside it, and its triangles' centres leave it).
+      bool out = false;
+      for (int i = 1; i <= mesh->NbNodes() && !out; i += std::max(1, mesh->NbNodes() / 200))
+        out = outside(mesh->Node(i), 1e-4 * size);
+      const bool planar = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType() == GeomAbs_Plane;
+      for (int i = 1; planar && i <= mesh->NbTriangles() && !out; i += std::max(1, mesh->NbTriangles() / 200)) {
+        int a, b, c;
+        mesh->Triangle(i).Get(a, b, c);
+        out = outside(gp_Pnt((mesh->Node(a).XYZ() + mesh->Node(b).XYZ() + mesh->Node(c).XYZ()) / 3.0), 1e-4 * size);
       }
+      if (out)
+        throw InputError("the stock does not contain the part (a point of the part lies outside it): pick a larger "
+                         "stock, or check that the two are placed together");
     }
   }
   const double expected = v.stockVolume - v.partVolume;
+  if (expected < -kVolumeTolerance * v.stockVolume)
+    throw InputError("the stock (" + number(v.stockVolume) + " mm³) is smaller than the part (" + number(v.partVolume) +
+                     " mm³): it does not contain the part; pick the blank as the stock and the finished part as the part");
   if (expected <= kVolumeTolerance * v.stockVolume)
     throw InputError("the stock is the part (nothing to remove: " + number(expected) + " mm³): pick the blank, not the part");
   std::string why;

@@ -89,6 +89,9 @@ TEST(Roughing, PlanesGiveSlabsThatAddUpToTheVolume) {
   EXPECT_EQ(floor.subVolumes.size(), 8u);  // ceil(28.62 / 4)
   EXPECT_NEAR(floor.volume, s.volume, 1e-6 * s.volume);
   expectOffsetLayers(s, floor, 1e-6);
+  // The tool axis stands on the floor, along the slot's axis, away from the floor.
+  ASSERT_FALSE(floor.subVolumes.back().axisDirections.empty());
+  EXPECT_NEAR(floor.subVolumes.back().axisDirections.front().dot(Eigen::Vector3d(0.5, 0.0, std::sqrt(0.75))), 1.0, 1e-6);
 }
 
 TEST(Roughing, TheSetupDirectionOfTheSlantedSlotIsItsAxis) {

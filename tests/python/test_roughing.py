@@ -1,0 +1,170 @@
+"""5-axis roughing part 1 through the Python API (hsmplanner.roughing): the slanted slot's closed-form volume and
+face classes, the slicings and their tool axes, S3's setup direction, results as plain attributes and BREP that
+FreeCAD reads back as valid solids, progress and cancellation, and the issue's bad inputs."""
+import math
+import unittest
+
+import Part
+
+import hsmplanner
+from hsmplanner import roughing
+
+
+def shape_of(brep):
+    shape = Part.Shape()
+    shape.importBrepFromString(brep)
+    return shape
+
+
+def surfaces_of_class(solid, name):
+    """The paper's faces (surfaces: B-rep faces of one surface count once) of a class."""
+    return len({group for group, c in zip(solid.face_groups, solid.face_classes) if c.name == name})
+
+
+class SlantedSlot(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.shapes = roughing.slanted_slot_block()
+        cls.part = shape_of(cls.shapes.part_brep)
+        cls.stock = shape_of(cls.shapes.stock_brep)
+        cls.volume = roughing.volume_to_remove(cls.stock, cls.part)  # FreeCAD shapes are taken as they are
+        cls.solid = cls.volume.solids[0]
+
+    def test_volume_is_the_closed_form_and_freecad_reads_it_back(self):
+        expected = roughing.slanted_slot_volume()
+        self.assertEqual(expected, 16.0 * 24.0 * 40.0)
+        self.assertAlmostEqual(self.volume.volume, expected, delta=1e-6 * expected)
+        self.assertAlmostEqual(self.volume.stock_volume - self.volume.part_volume, expected, delta=1e-6 * expected)
+        self.assertFalse(self.volume.fuzzy_retry)
+        shape = shape_of(self.volume.brep)
+        self.assertTrue(shape.isValid())
+        self.assertEqual(len(shape.Solids), 1)
+        self.assertAlmostEqual(shape.Volume, expected, delta=1e-6 * expected)
+        # The volume and the part fill the stock: their union is the stock's volume.
+        self.assertAlmostEqual(shape.fuse(self.part).Volume, self.stock.Volume, delta=1e-6 * self.stock.Volume)
+
+    def test_face_classes_by_surface(self):
+        self.assertEqual(len(self.solid.face_classes), len(shape_of(self.solid.brep).Faces))
+        self.assertEqual(surfaces_of_class(self.solid, "crossable"), 3)
+        self.assertEqual(surfaces_of_class(self.solid, "facing_crossable"), 1)
+        self.assertEqual(surfaces_of_class(self.solid, "not_crossable"), 2)
+        # The floor faces the mouth: its face is normal to the slot's axis, 30° from Z.
+        floor = shape_of(self.solid.brep).Faces[list(self.solid.face_classes).index(roughing.FaceClass.facing_crossable)]
+        normal = floor.normalAt(*floor.Surface.parameter(floor.CenterOfMass))
+        self.assertAlmostEqual(abs(normal.z), math.cos(math.radians(30.0)), places=6)
+
+    def test_planes_from_the_mouth(self):
+        result = roughing.partition(self.solid, self.part, "S1", step=8.0)
+        self.assertEqual(result.strategy, roughing.Strategy.S1)
+        self.assertEqual(len(result.sub_volumes), 4)  # ceil(24.78 / 8)
+        self.assertAlmostEqual(sum(s.volume for s in result.sub_volumes), self.solid.volume, delta=1e-6 * self.solid.volume)
+        for k, sub in enumerate(result.sub_volumes):
+            self.assertEqual(sub.slice, k)
+            shape = shape_of(sub.brep)
+            self.assertTrue(shape.isValid())
+            self.assertAlmostEqual(shape.Volume, sub.volume, delta=1e-6 * sub.volume)
+            # A slab k lies between 30 − 8k and 30 − 8(k + 1) in Z.
+            self.assertLessEqual(shape.BoundBox.ZMax, 30.0 - 8.0 * k + 1e-6)
+            self.assertGreaterEqual(shape.BoundBox.ZMin, 30.0 - 8.0 * (k + 1) - 1e-6)
+            self.assertTrue(all(abs(d[2] - 1.0) < 1e-9 for d in sub.axis_directions))
+
+    def test_floor_offsets_follow_the_axis(self):
+        result = roughing.partition(self.volume, self.part, roughing.Strategy.S5, step=4.0)
+        self.assertEqual(len(result.sub_volumes), 8)  # ceil((24 + 8·tan 30°) / 4)
+        axis = (math.sin(math.radians(30.0)), 0.0, math.cos(math.radians(30.0)))
+        for sub in result.sub_volumes:
+            for d in sub.axis_directions:
+                self.assertAlmostEqual(sum(a * b for a, b in zip(d, axis)), 1.0, places=6)
+
+    def test_the_setup_direction_is_the_slots_axis(self):
+        direction, reach = roughing.setup_direction(self.solid, self.part, grid=1.5)
+        self.assertGreater(direction[0] * 0.5 + direction[2] * math.cos(math.radians(30.0)), math.cos(math.radians(6.0)))
+        self.assertGreater(reach, 0.97)
+        self.assertLess(roughing.reachable_share(self.solid, self.part, (0, 0, 1), grid=1.5), 0.75)
+        result = roughing.partition(self.solid, self.part, "S3", step=8.0, setup_grid=1.5)
+        self.assertAlmostEqual(sum(s.volume for s in result.sub_volumes), self.solid.volume, delta=1e-6 * self.solid.volume)
+        self.assertEqual(result.reference_face, 0)
+        self.assertGreater(result.setup_reach, 0.97)
+
+    def test_progress_and_cancel(self):
+        seen = []
+        roughing.partition(self.solid, self.part, "S1", step=2.0, progress=lambda done: seen.append(done))
+        self.assertEqual(seen[-1], 1.0)
+        self.assertEqual(seen, sorted(seen))
+        with self.assertRaises(hsmplanner.Cancelled):
+            roughing.partition(self.solid, self.part, "S1", step=2.0, progress=lambda done: False)
+        with self.assertRaises(hsmplanner.Cancelled):
+            roughing.volume_to_remove(self.stock, self.part, progress=lambda done: False)
+
+    def test_bad_inputs_name_the_input_and_the_fix(self):
+        cases = [
+            (lambda: roughing.partition(self.solid, self.part, "S2"), ValueError, "needs a cylindrical crossable face"),
+            (lambda: roughing.partition(self.solid, self.part, "S1", step=0), ValueError, "step 0 mm must be positive"),
+            (lambda: roughing.partition(self.solid, self.part, "S1", step=-1), ValueError, "must be positive"),
+            (lambda: roughing.partition(self.solid, self.part, "S1", step=100), ValueError, "use a step up to"),
+            (lambda: roughing.partition(self.solid, self.part, "S1", step=1e-3), ValueError, "use a step of at least"),
+            (lambda: roughing.partition(self.solid, self.part, "S7"), ValueError, "use one of S1, S2, S3, S4, S5"),
+            (lambda: roughing.partition(self.solid, self.part, "S3", setup_grid=0), ValueError, "setup grid 0 mm"),
+            (lambda: roughing.partition(self.solid, self.part, "S3", setup_grid=1e-3), ValueError, "coarser grid"),
+            (lambda: roughing.partition(self.solid, self.part, "S3", setup_resolution_deg=0.01), ValueError,
+             "resolution 0.01°"),
+            (lambda: roughing.volume_to_remove(self.part, self.part), ValueError, "nothing to remove"),
+            (lambda: roughing.volume_to_remove(self.part, self.stock), ValueError, "does not contain the part"),
+            (lambda: roughing.volume_to_remove(self.stock, self.part.Faces[0]), ValueError, "part"),
+            (lambda: roughing.volume_to_remove(self.stock, Part.Shape()), ValueError, "shape is null"),
+            (lambda: roughing.volume_to_remove(self.stock, "not a brep"), ValueError, "BREP"),
+            (lambda: roughing.reachable_share(self.solid, self.part, (0, 0, 0)), ValueError, "non-zero"),
+            (lambda: roughing.slanted_slot_block(slot_depth=40), ValueError, "does not fit in the block"),
+            (lambda: roughing.impeller(blades=1), ValueError, "give 2 to 24 blades"),
+            (lambda: roughing.impeller(channel_height=50), ValueError, "channel height"),
+        ]
+        for call, error, words in cases:
+            with self.assertRaises(error) as caught:
+                call()
+            self.assertIn(words, str(caught.exception))
+
+    def test_a_stock_beside_the_part_and_an_open_shell(self):
+        beside = self.stock.copy()
+        beside.translate(FreeCAD_vector(200.0, 0.0, 0.0))
+        with self.assertRaises(ValueError) as caught:
+            roughing.volume_to_remove(beside, self.part)
+        self.assertIn("does not contain the part", str(caught.exception))
+        shell = Part.Shell(self.part.Faces[:-1])  # one face missing: not closed
+        with self.assertRaises(ValueError) as caught:
+            roughing.volume_to_remove(self.stock, shell)
+        self.assertIn("part", str(caught.exception))
+
+
+def FreeCAD_vector(x, y, z):
+    import FreeCAD
+
+    return FreeCAD.Vector(x, y, z)
+
+
+class Impeller(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.wheel = roughing.impeller()
+        cls.volume = roughing.volume_to_remove(cls.wheel.stock_brep, cls.wheel.part_brep)
+
+    def test_one_channel_per_blade_with_the_papers_six_faces(self):
+        self.assertEqual(len(self.volume.solids), 7)
+        for channel in self.volume.solids:
+            self.assertEqual(channel.group_count, 6)
+            self.assertEqual([surfaces_of_class(channel, name) for name in ("crossable", "facing_crossable", "not_crossable")],
+                             [3, 1, 2])
+
+    def test_s2_cylinders_about_the_outlet_and_their_radial_axes(self):
+        channel = self.volume.solids[0]
+        result = roughing.partition(channel, self.wheel.part_brep, "S2", step=8.0)
+        self.assertAlmostEqual(result.volume, channel.volume, delta=1e-6 * channel.volume)
+        outlet_radius = 50.0
+        for sub in result.sub_volumes:
+            self.assertEqual(sub.surface.kind, roughing.SurfaceKind.cylinder)
+            self.assertAlmostEqual(sub.surface.radius, outlet_radius - 8.0 * sub.slice, places=6)
+            for point, axis in zip(sub.axis_points, sub.axis_directions):
+                radial = (point[0], point[1])
+                norm = math.hypot(*radial)
+                # The tool axis is radial, pointing out through the outlet.
+                self.assertAlmostEqual((axis[0] * radial[0] + axis[1] * radial[1]) / norm, 1.0, places=6)
+                self.assertAlmostEqual(axis[2], 0.0, places=9)
