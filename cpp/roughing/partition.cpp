@@ -100,6 +100,8 @@ TopoDS_Face faceOf(const RemovalSolid& s, int index) {
 
 }  // namespace
 
+constexpr double kSliverMm = 0.01;
+
 Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strategy strategy,
                     const PartitionSettings& settings) {
   if (solid.solid.IsNull()) throw InputError("the volume to remove is empty: compute it from a stock and a part first");
@@ -129,7 +131,9 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   if (settings.step > extent)
     throw InputError("step " + number(settings.step) + " mm is larger than the volume's extent of " + number(extent) +
                      " mm along the slicing surfaces: nothing to slice; use a step up to " + number(extent) + " mm");
-  const double slices = std::ceil(extent / settings.step - 1e-9);
+  // A last layer thinner than kSliverMm is the depth's measuring error (offset meridians are polylines), not
+  // material: it goes with the layer above.
+  const double slices = std::max(1.0, std::ceil((extent - kSliverMm) / settings.step));
   if (slices > kMaxSlices)
     throw InputError("step " + number(settings.step) + " mm gives " + number(slices) + " slices (more than " +
                      std::to_string(kMaxSlices) + "): use a step of at least " + number(extent / kMaxSlices) + " mm");

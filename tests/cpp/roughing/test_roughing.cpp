@@ -153,6 +153,9 @@ TEST(Roughing, TheImpellersChannelsHaveThePapersSixFaces) {
     EXPECT_GE(p.subVolumes.size(), 2u) << strategyName(strategy);
     // Offsets of surfaces of revolution are revolved offsets of a fitted meridian: within 0.02 mm.
     expectOffsetLayers(channel, p, strategy == Strategy::PlanesParallelToFace ? 1e-6 : 0.02);
+    for (const SubVolume& sub : p.subVolumes) EXPECT_GT(sub.volume, 1.0) << strategyName(strategy);  // no sliver
+    // The hub and the shroud are concentric arcs 12 mm apart: three layers of 4 mm either way.
+    if (strategy == Strategy::StockOffsets || strategy == Strategy::HubOffsets) EXPECT_EQ(p.subVolumes.size(), 3u);
   }
 }
 
