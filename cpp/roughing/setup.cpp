@@ -8,10 +8,10 @@
 #include "common/parallel.hpp"
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
+#include "roughing/rays.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <gp_Lin.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepTools.hxx>
@@ -45,16 +45,14 @@ std::vector<Eigen::Vector3d> gridPoints(const TopoDS_Shape& solid, double spacin
     throw InputError("a setup grid of " + number(spacing) + " mm over this volume has " + number(cells) +
                      " cells: use a coarser grid (at least " +
                      number(spacing * std::cbrt(cells / (50.0 * kMaxPoints))) + " mm)");
-  IntCurvesFace_ShapeIntersector lines;
-  lines.Load(solid, 1e-7);
+  const RayCaster lines(solid, 1e-7);
   std::vector<Eigen::Vector3d> points;
   for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
     for (double y = y0 + 0.5 * spacing; y < y1; y += spacing) {
-      lines.Perform(gp_Lin(gp_Pnt(x, y, z0 - 1.0), gp::DZ()), 0.0, z1 - z0 + 2.0);
-      if (!lines.IsDone() || lines.NbPnt() < 2) continue;
       std::vector<double> hits;
-      for (int i = 1; i <= lines.NbPnt(); ++i) hits.push_back(z0 - 1.0 + lines.WParameter(i));
-      std::sort(hits.begin(), hits.end());
+      for (const RayHit& hit : lines.all(gp_Lin(gp_Pnt(x, y, z0 - 1.0), gp::DZ()), 0.0, z1 - z0 + 2.0))
+        hits.push_back(z0 - 1.0 + hit.w);
+      if (hits.size() < 2) continue;
       for (size_t k = 0; k + 1 < hits.size(); k += 2)
         for (double z = z0 + 0.5 * spacing; z < z1; z += spacing)
           if (z > hits[k] && z < hits[k + 1]) points.emplace_back(x, y, z);

@@ -1,5 +1,7 @@
 #include "roughing/slicing.hpp"
 
+#include "roughing/rays.hpp"
+
 #include "common/error.hpp"
 #include "common/text.hpp"
 
@@ -27,7 +29,6 @@
 #include <Geom_OffsetSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
@@ -384,14 +385,11 @@ gp_Pnt insidePoint(const TopoDS_Shape& solid) {
   BRepClass3d_SolidClassifier classifier(solid, centre, 1e-7);
   if (classifier.State() == TopAbs_IN) return centre;
   // Not convex: along lines through the centre, the middle of the first stretch inside.
+  const RayCaster rays(solid, 1e-7);
   for (const gp_Dir& direction : {gp::DX(), gp::DY(), gp::DZ()}) {
-    IntCurvesFace_ShapeIntersector rays;
-    rays.Load(solid, 1e-7);
-    rays.Perform(gp_Lin(centre, direction), -1e12, 1e12);
-    if (!rays.IsDone() || rays.NbPnt() < 2) continue;
     std::vector<double> at;
-    for (int i = 1; i <= rays.NbPnt(); ++i) at.push_back(rays.WParameter(i));
-    std::sort(at.begin(), at.end());
+    for (const RayHit& hit : rays.all(gp_Lin(centre, direction), -1e12, 1e12)) at.push_back(hit.w);
+    if (at.size() < 2) continue;
     for (size_t i = 0; i + 1 < at.size(); ++i) {
       const gp_Pnt middle = centre.Translated(0.5 * (at[i] + at[i + 1]) * gp_Vec(direction));
       if (BRepClass3d_SolidClassifier(solid, middle, 1e-7).State() == TopAbs_IN) return middle;

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/occt_progress.hpp"
 #include "common/text.hpp"
+#include "roughing/rays.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
@@ -19,7 +20,6 @@
 #include <gp_Pnt2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -140,7 +140,7 @@ std::vector<std::vector<bool>> neighbourGroups(const TopoDS_Shape& solid, const 
 // 5 × 5 grid of its parameters (the points on the face), more than half first meet a crossable face across the
 // volume, not a neighbour (a wall opening onto the skin sees the skin past their common edge: it does not face
 // it), whose normal is within 45° of opposite to the ray (not a grazing exit).
-bool seesCrossable(IntCurvesFace_ShapeIntersector& rays, const TopoDS_Face& face, const TopTools_IndexedMapOfShape& faces,
+bool seesCrossable(const RayCaster& rays, const TopoDS_Face& face, const TopTools_IndexedMapOfShape& faces,
                    const std::vector<FaceClass>& classes, const std::vector<int>& groups,
                    const std::vector<bool>& neighbour) {
   double u0, u1, v0, v1;
@@ -156,14 +156,14 @@ bool seesCrossable(IntCurvesFace_ShapeIntersector& rays, const TopoDS_Face& face
       if (!props.IsNormalDefined()) continue;
       gp_Dir inward = props.Normal();
       if (face.Orientation() != TopAbs_REVERSED) inward.Reverse();
-      rays.PerformNearest(gp_Lin(props.Value(), inward), 1e-6, 1e12);
-      if (!rays.IsDone() || rays.NbPnt() == 0) continue;
-      const int hit = faces.FindIndex(rays.Face(1));
+      const RayHit first = rays.nearest(gp_Lin(props.Value(), inward), 1e-6, 1e12);
+      if (first.face < 0) continue;
+      const int hit = faces.FindIndex(rays.faces()[static_cast<size_t>(first.face)]);
       ++seen;
       if (hit == 0 || classes[hit - 1] != FaceClass::Crossable || neighbour[static_cast<size_t>(groups[hit - 1])]) continue;
       const TopoDS_Face& exit = TopoDS::Face(faces(hit));
       BRepAdaptor_Surface exitSurface(exit);
-      BRepLProp_SLProps exitProps(exitSurface, rays.UParameter(1), rays.VParameter(1), 1, 1e-9);
+      BRepLProp_SLProps exitProps(exitSurface, first.u, first.v, 1, 1e-9);
       if (!exitProps.IsNormalDefined()) continue;
       gp_Dir exitOutward = exitProps.Normal();
       if (exit.Orientation() == TopAbs_REVERSED) exitOutward.Reverse();
@@ -205,8 +205,7 @@ RemovalSolid classify(const TopoDS_Solid& solid, const TopTools_MapOfShape& from
   }
   // A part's surface is facing_crossable when most of its largest face sees a crossable face.
   const std::vector<std::vector<bool>> neighbours = neighbourGroups(solid, faces, r.faceGroups, r.groupCount());
-  IntCurvesFace_ShapeIntersector rays;  // loaded once: it prepares every face of the solid
-  rays.Load(solid, 1e-7);
+  const RayCaster rays(solid, 1e-7);  // made once: it prepares every face of the solid
   for (int g = 0; g < r.groupCount(); ++g) {
     int largest = 0;
     for (int i = 1; i <= faces.Extent(); ++i)
