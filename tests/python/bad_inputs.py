@@ -226,6 +226,60 @@ CASES = [
           "result == (0.001, 1.0)"),
     holds("a master feature of zero length is invalid, with a message, and the document lives",
           "m = new_master(); m.Length = 0; m.recompute(); result = m.isValid()", "result is False"),
+    # --- 5-axis roughing: the test parts and the Roughing volume (one line, the object stays valid) ----------
+    raises("slanted slot deeper than the block", "from hsmplanner.app import roughing_parts\n"
+           "s, _ = roughing_parts.create_slanted_slot_block(new_document()); s.SlotDepth = 40; status_error(s)",
+           "ValueError", "does not fit in the block: make it smaller or the block larger"),
+    holds("slanted slot tilted 75° is clamped to 59°", "from hsmplanner.app import roughing_parts\n"
+          "s, _ = roughing_parts.create_slanted_slot_block(new_document()); s.Tilt = 75; result = s.Tilt.Value",
+          "result == 59.0"),
+    raises("impeller blades too thick for the inlet", "from hsmplanner.app import roughing_parts\n"
+           "d = new_document(); w = d.addObject('Part::FeaturePython', 'W'); roughing_parts.Impeller(w); "
+           "w.Thickness = 30; status_error(w)", "ValueError", "the blades are too thick for the inlet"),
+    holds("impeller of 100 blades is clamped to 24", "from hsmplanner.app import roughing_parts\n"
+          "d = new_document(); w = d.addObject('Part::FeaturePython', 'W'); roughing_parts.Impeller(w); "
+          "w.Blades = 100; result = w.Blades", "result == 24"),
+    raises("roughing volume without a part", "o = new_slot_roughing(); o.Part = None; roughing_error(o)", "ValueError",
+           "Part is not set: link the part"),
+    raises("roughing volume whose stock is the part", "o = new_slot_roughing(); o.Stock = o.Part; roughing_error(o)",
+           "ValueError", "Part and Stock are both SlantedSlotBlock: link the blank"),
+    raises("roughing volume of a sheet (not a closed solid)",
+           "o = new_slot_roughing(); o.Part = new_solid(Part.makePlane(50, 50, FreeCAD.Vector(10, -5, 10)), "
+           "document=o.Document); roughing_error(o)", "ValueError", "the part holds no solid"),
+    raises("roughing volume of an open shell made a solid",
+           "o = new_slot_roughing(); box = Part.makeBox(5, 5, 5, FreeCAD.Vector(5, 5, 5))\n"
+           "o.Part = new_solid(Part.Solid(Part.Shell(box.Faces[:5])), document=o.Document); roughing_error(o)",
+           "ValueError", "the part is not a valid solid"),
+    raises("roughing volume in a stock that does not contain the part",
+           "o = new_slot_roughing(); o.Stock = new_solid(Part.makeBox(10, 10, 10), document=o.Document)\n"
+           "roughing_error(o)",
+           "ValueError", "the stock does not contain the part"),
+    raises("roughing volume in a stock beside the part",
+           "o = new_slot_roughing(); o.Stock = new_solid(Part.makeBox(10, 10, 10, FreeCAD.Vector(500, 0, 0)), "
+           "document=o.Document); roughing_error(o)", "ValueError", "the stock"),
+    holds("roughing volume Step 0 is clamped to 0.5 mm and computes",
+          "o = new_slot_roughing(); o.Step = 0; roughing_error(o); result = (o.Step.Value, o.SubVolumeCount)",
+          "result == (0.5, 50)"),
+    holds("roughing volume Step nan is clamped",
+          "o = new_slot_roughing(); o.Step = float('nan'); result = o.Step.Value", "result == 0.5"),
+    raises("roughing volume Step 1e9 (beyond the volume)", "o = new_slot_roughing(); o.Step = 1e9; roughing_error(o)",
+           "ValueError", "step 500 mm is larger than the volume's extent"),
+    raises("roughing volume S2 on the slot (no cylindrical crossable face)",
+           "o = new_slot_roughing(Strategy='S2'); roughing_error(o)", "ValueError",
+           "S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3 or S4"),
+    raises("roughing volume S1 between two spheres (no planar crossable face)",
+           "d = new_document(); from hsmplanner.app import roughing_object\n"
+           "o = roughing_object.create(new_solid(Part.makeSphere(10), 'Ball', d), "
+           "new_solid(Part.makeSphere(20), 'Blank', d), Strategy='S1'); roughing_error(o)", "ValueError",
+           "S1 needs a planar crossable face"),
+    raises("roughing volume Region 5 of 1", "o = new_slot_roughing(); o.Region = 5; roughing_error(o)", "ValueError",
+           "Region 5: the volume to remove has 1 region: give 1 to 1"),
+    holds("roughing volume Region -1 is clamped to all regions", "o = new_slot_roughing(); o.Region = -1; "
+          "roughing_error(o); result = (o.Region, o.SubVolumeCount)", "result == (0, 4)"),
+    raises("roughing volume S3 on a grid of 0.25 mm", "o = new_slot_roughing(Strategy='S3'); o.SetupGrid = 0.25; "
+           "roughing_error(o)", "ValueError", "use a coarser grid"),
+    holds("roughing volume cancelled keeps its previous result and stays valid", "result = cancelled_roughing()",
+          "result == (True, True, True)"),
 ]
 
 

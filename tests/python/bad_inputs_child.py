@@ -1,5 +1,6 @@
 """Child of tests/python/bad_inputs.py: runs the cases given in $HSM_BAD_INPUT_CASES (JSON, freecadcmd), one
 JSON line per case. Its memory is limited, so that a runaway case fails instead of taking the machine."""
+import contextlib
 import json
 import math
 import os
@@ -8,6 +9,7 @@ import resource
 import sys
 import tempfile
 import traceback
+from unittest import mock
 
 import FreeCAD
 import numpy as np
@@ -144,6 +146,53 @@ def new_custom(job):
     op.Gcode = ["G0 X0 Y0 Z5", "G1 Z-1 F0", "G1 X10"]
     job.Document.recompute()
     return op
+
+
+def new_slot_roughing(**properties):
+    """A roughing volume of the slanted slot block in its stock, computed (S1 unless told)."""
+    from hsmplanner.app import roughing_object, roughing_parts
+    part, stock = roughing_parts.create_slanted_slot_block(new_document())
+    properties.setdefault("Strategy", "S1")
+    obj = roughing_object.create(part, stock, **properties)
+    obj.Document.recompute()
+    return obj
+
+
+def new_solid(shape, name="Solid", document=None):
+    """A Part::Feature holding `shape` in the document (a new one by default)."""
+    obj = (document or new_document()).addObject("Part::Feature", name)
+    obj.Shape = shape
+    return obj
+
+
+def roughing_error(obj):
+    """Recomputes the roughing volume and raises its error as the Report view's one line says it; checks that
+    the object stays valid with no result left that looks valid (RuntimeError otherwise)."""
+    obj.Document.recompute()
+    if not obj.isValid():
+        raise RuntimeError("the roughing volume is marked invalid: %s" % obj.getStatusString())
+    if obj.Proxy.error is None:
+        return obj
+    if obj.Volume != 0.0 or not obj.Shape.isNull() or obj.SubVolumeCount:
+        raise RuntimeError("a failed roughing volume kept a result")
+    raise ValueError(obj.Proxy.error)
+
+
+@contextlib.contextmanager
+def cancelling_progress(label):
+    """freecad_progress as the GUI's with Cancel pressed at once."""
+    yield lambda done: False
+
+
+def cancelled_roughing():
+    """A roughing volume recomputed with Cancel pressed: (cancelled, still valid, its previous sub-volumes kept)."""
+    from hsmplanner.app import roughing_object
+    obj = new_slot_roughing()
+    before = list(obj.SubVolumes)
+    obj.Strategy = roughing_object.strategy_label("S5")
+    with mock.patch.object(roughing_object, "freecad_progress", cancelling_progress):
+        obj.Document.recompute()
+    return obj.Proxy.cancelled, obj.isValid(), list(obj.SubVolumes) == before and len(before) == 4
 
 
 def run(case):

@@ -1,4 +1,5 @@
-"""Colours of HSM Planner views: the roles of curves and the elementary areas."""
+"""Colours of HSM Planner views: the roles of curves, the elementary areas, the roughing volume."""
+from hsmplanner.plots import palette as _PALETTE
 
 CURVE_COLORS = {
     "boundary": (0.10, 0.10, 0.10),
@@ -16,3 +17,14 @@ AREA_PALETTE = [
 
 def area_color(index):
     return AREA_PALETTE[index % len(AREA_PALETTE)]
+
+
+# Roughing volume: the faces' classes, and the sub-volumes in alternating colours by slice: the PNG
+# pictures' colours (hsmplanner.plots.palette), in FaceColorIndex order.
+FACE_CLASS_COLORS = [_PALETTE.FACE_CLASS_COLORS[name] for name in ("crossable", "facing_crossable", "not_crossable")]
+FACE_CLASS_LABELS = ["crossable", "facing crossable", "not crossable"]
+FACE_CLASS_TIPS = ["stock skin: the tool may pass through it",
+                   "a face of the part that sees the stock skin (a hub, a slot's floor): slices may follow it",
+                   "any other face of the part (blade sides, slot walls)"]
+SLICE_COLORS = list(_PALETTE.SLICE_COLORS)
+SLICE_LABELS = ["even slices (0, 2, …)", "odd slices (1, 3, …)"]

@@ -5,7 +5,8 @@ import FreeCADGui
 from hsmplanner.resources import icon
 
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
-                 "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis"]
+                 "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "Separator",
+                 "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume"]
 
 
 class CommandMasterBottomFeature:
@@ -137,11 +138,131 @@ class CommandMachiningDirection:
         return obj
 
 
+class _CommandRoughingTestPart:
+    """Add a test part of 5-axis roughing and its stock to the document. The stock is hidden (its faces lie on
+    the part's): Space shows it, as a wireframe."""
+
+    NAME, MENU, TIP = "", "", ""
+
+    def GetResources(self):
+        return {"Pixmap": icon(self.NAME), "MenuText": self.MENU, "ToolTip": self.TIP}
+
+    def IsActive(self):
+        return True
+
+    def create(self, document):
+        raise NotImplementedError
+
+    def Activated(self):
+        from PySide2 import QtCore, QtWidgets
+
+        from hsmplanner.gui.view_providers import ViewProviderTestPartStock
+
+        document = FreeCAD.ActiveDocument or FreeCAD.newDocument("HSMPlanner")
+        document.openTransaction("Add %s" % self.MENU.lower())
+        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)  # the impeller takes seconds
+        try:
+            part, stock = self.create(document)
+            ViewProviderTestPartStock(stock.ViewObject)
+            stock.ViewObject.DisplayMode = "Wireframe"
+            stock.ViewObject.LineColor = (0.35, 0.35, 0.35)
+            stock.ViewObject.Visibility = False
+        finally:
+            QtWidgets.QApplication.restoreOverrideCursor()
+            document.commitTransaction()
+        FreeCADGui.SendMsgToActiveView("ViewFit")
+        FreeCADGui.activeDocument().activeView().viewIsometric()
+        return part, stock
+
+
+class CommandSlantedSlotBlock(_CommandRoughingTestPart):
+    NAME, MENU = "SlantedSlotBlock", "Slanted slot block"
+    TIP = ("Add the roughing test part: a block with a slot tilted from Z (a tool along Z cannot reach under its "
+           "overhang), and its stock")
+
+    def create(self, document):
+        from hsmplanner.app import roughing_parts
+        from hsmplanner.gui.view_providers import ViewProviderSlantedSlotBlock
+
+        part, stock = roughing_parts.create_slanted_slot_block(document)
+        ViewProviderSlantedSlotBlock(part.ViewObject)
+        return part, stock
+
+
+class CommandImpeller(_CommandRoughingTestPart):
+    NAME, MENU = "Impeller", "Impeller"
+    TIP = ("Add the roughing paper's test part: a radial compressor impeller (7 undercut channels) and its blank; "
+           "takes a few seconds")
+
+    def create(self, document):
+        from hsmplanner.app import roughing_parts
+        from hsmplanner.gui.view_providers import ViewProviderImpeller
+
+        part, stock = roughing_parts.create_impeller(document)
+        ViewProviderImpeller(part.ViewObject)
+        return part, stock
+
+
+class CommandRoughingVolume:
+    """The volume to remove between the selected stock and part, its faces classed, and its partition."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("RoughingVolume"),
+            "MenuText": "Roughing volume",
+            "ToolTip": "The volume to remove (stock − part), its faces coloured crossable / facing crossable / not "
+                       "crossable, cut into sub-volumes by one of the five slicings of 5-axis roughing; select the "
+                       "part and its stock first (two solids), or choose them in the panel",
+        }
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from hsmplanner.app import roughing_object
+        from hsmplanner.gui.view_providers import ViewProviderRoughingVolume
+
+        document = FreeCAD.ActiveDocument
+        picked = [o for o in FreeCADGui.Selection.getSelection()
+                  if roughing_object.has_solid(o) or roughing_object.is_job(o)]
+        part = stock = None
+        if len(picked) == 2:
+            part, stock = roughing_object.part_and_stock(*picked)
+        elif len(picked) == 1:
+            part = picked[0]
+        document.openTransaction("Roughing volume")
+        obj = roughing_object.create(part, stock, document=document, recompute=False)
+        view_provider = ViewProviderRoughingVolume(obj.ViewObject)
+        if len(picked) == 2:
+            try:
+                document.recompute()
+            finally:
+                document.commitTransaction()
+            if not obj.VolumeShape.isNull():
+                show_result(obj)
+            return obj
+        view_provider.created = True
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        return obj
+
+
+def show_result(obj):
+    """The volume over the part: its stock hidden (it would hide everything)."""
+    from hsmplanner.app.roughing_object import is_job, job_stock
+
+    stock = job_stock(obj.Stock) if is_job(obj.Stock) else obj.Stock
+    if stock is not None and stock.ViewObject is not None:
+        stock.ViewObject.Visibility = False
+
+
 def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
     FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())
     FreeCADGui.addCommand("HSM_FeedRateAnalysis", CommandFeedRateAnalysis())
     FreeCADGui.addCommand("HSM_MachiningDirection", CommandMachiningDirection())
+    FreeCADGui.addCommand("HSM_SlantedSlotBlock", CommandSlantedSlotBlock())
+    FreeCADGui.addCommand("HSM_Impeller", CommandImpeller())
+    FreeCADGui.addCommand("HSM_RoughingVolume", CommandRoughingVolume())
     from hsmplanner.gui import finishing_ops_gui
 
     finishing_ops_gui.register_commands()

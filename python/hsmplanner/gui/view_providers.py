@@ -192,3 +192,152 @@ class ViewProviderMachiningDirection(_AnalysisViewProvider):
         from .direction_panel import DirectionPanel
 
         return DirectionPanel(obj)
+
+
+class ViewProviderSlantedSlotBlock(_StatelessViewProvider):
+    ICON = "SlantedSlotBlock"
+
+
+class ViewProviderImpeller(_StatelessViewProvider):
+    ICON = "Impeller"
+
+
+class ViewProviderTestPartStock(_StatelessViewProvider):
+    """The blank of a roughing test part; its command shows it as a wireframe, so that the part shows."""
+
+    ICON = "TestPartStock"
+
+
+def _linked_deflection(obj):
+    """The display deflection of a linked object (a Job's stock for a Job), 0 when it has no view."""
+    if obj is None:
+        return 0.0
+    from hsmplanner.app.roughing_object import job_stock, is_job
+
+    if is_job(obj):
+        obj = job_stock(obj)
+    if obj is None or getattr(obj, "ViewObject", None) is None or obj.Shape.isNull():
+        return 0.0
+    return display_deflection(obj)
+
+
+class ViewProviderRoughingVolume(_StatelessViewProvider):
+    """The volume to remove, its faces coloured by class (or its sub-volumes by slice), a little transparent and
+    inset from the part's coincident faces (gui/roughing_view.py says why), with a legend; edited in its task
+    panel. FreeCAD's own display modes show the same colours (DiffuseColor)."""
+
+    ICON = "RoughingVolume"
+    MODE = "Roughing"
+    TRANSPARENCY = 30
+
+    def __init__(self, view_object):
+        super().__init__(view_object)
+        view_object.Transparency = self.TRANSPARENCY
+
+    def attach(self, view_object):
+        from pivy import coin
+
+        super().attach(view_object)
+        self.root = coin.SoSeparator()
+        view_object.addDisplayMode(self.root, self.MODE)
+
+    def getDisplayModes(self, view_object):
+        return [self.MODE]
+
+    def getDefaultDisplayMode(self):
+        return self.MODE
+
+    def setDisplayMode(self, mode):
+        return mode
+
+    def updateData(self, obj, prop):
+        # execute sets FaceColorIndex last, after Shape; an undo or a reopened file may set them in any order
+        if prop == "FaceColorIndex" or (prop == "Shape" and "Recompute" not in obj.State):
+            self.redraw(obj)
+
+    def onChanged(self, view_object, prop):
+        if prop in ("Transparency", "Deviation") and getattr(self, "Object", None) is not None \
+                and not getattr(self, "drawing", False):
+            self.redraw(self.Object)
+
+    def inset(self, obj):
+        """How far the faces are drawn inside the volume: more than its own and the part's and the stock's
+        tessellation deflections (mm)."""
+        return 1.5 * max(display_deflection(obj), _linked_deflection(getattr(obj, "Part", None)),
+                         _linked_deflection(getattr(obj, "Stock", None)), 0.01)
+
+    def redraw(self, obj):
+        root = getattr(self, "root", None)
+        if root is None or getattr(self, "drawing", False):
+            return
+        self.drawing = True  # FreeCAD may echo DiffuseColor into Transparency: no redraw from within
+        try:
+            self.draw(obj, root)
+        finally:
+            self.drawing = False
+
+    def draw(self, obj, root):
+        import FreeCAD
+
+        from hsmplanner.app.roughing_object import SUB_VOLUMES, shown_display
+
+        from .roughing_view import palette, volume_node
+
+        root.removeAllChildren()
+        self.drawn, self.triangle_faces = None, []
+        shape, codes = obj.Shape, list(obj.FaceColorIndex)
+        if shape.isNull() or len(shape.Faces) != len(codes) or obj.ViewObject is None:
+            return  # nothing computed, or mid-recompute: the properties do not match yet
+        local = shape.copy()
+        local.Placement = FreeCAD.Placement()  # the view's own transform places it
+        sub_volumes = shown_display(obj) == SUB_VOLUMES
+        transparency = obj.ViewObject.Transparency / 100.0
+        node, self.triangle_faces = volume_node(local, codes, sub_volumes, display_deflection(obj), self.inset(obj),
+                                                transparency)
+        if node is not None:
+            root.addChild(node)
+        self.colour_faces(obj, codes, sub_volumes, transparency)
+        colors, labels = palette(sub_volumes)
+        self.drawn = dict(colors=[tuple(c) for c in colors], labels=list(labels),  # what is drawn, for tests
+                          faces=[tuple(colors[code % len(colors)]) for code in codes])
+
+    def getElement(self, detail):
+        """The face picked in the Roughing mode: our faces are triangles (FreeCAD would name the triangle's
+        number); '' elsewhere, so that FreeCAD names what its own modes picked."""
+        from pivy import coin
+
+        faces = getattr(self, "triangle_faces", [])
+        view = getattr(getattr(self, "Object", None), "ViewObject", None)
+        if view is None or view.DisplayMode != self.MODE or not detail.isOfType(coin.SoFaceDetail.getClassTypeId()):
+            return ""
+        index = coin.cast(detail, "SoFaceDetail").getFaceIndex()
+        return "Face%d" % (int(faces[index]) + 1) if 0 <= index < len(faces) else ""
+
+    @staticmethod
+    def colour_faces(obj, codes, sub_volumes, transparency):
+        """The same colours in FreeCAD's own display modes (Flat Lines, Shaded)."""
+        from .roughing_view import palette
+
+        colors, _ = palette(sub_volumes)
+        obj.ViewObject.DiffuseColor = [tuple(colors[code % len(colors)]) + (transparency,) for code in codes]
+
+    def doubleClicked(self, view_object):
+        import FreeCADGui
+
+        FreeCADGui.ActiveDocument.setEdit(view_object.Object.Name)
+        return True
+
+    def setEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        from .roughing_panel import RoughingPanel
+
+        FreeCADGui.Control.showDialog(RoughingPanel(view_object.Object, created=getattr(self, "created", False)))
+        self.created = False
+        return True
+
+    def unsetEdit(self, view_object, mode=0):
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True

@@ -7,17 +7,10 @@ import numpy as np
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from .common import new_figure
+from .palette import FACE_CLASS_COLORS, SLICE_COLORS
 
-# The face classes' colours, the same in these pictures and in the 3D view (gui/colors.py reads them).
-FACE_CLASS_COLORS = {
-    "crossable": (0.30, 0.69, 0.29),         # green: the tool may pass
-    "facing_crossable": (0.22, 0.49, 0.72),  # blue: the floor the slicing may follow
-    "not_crossable": (0.89, 0.10, 0.11),     # red: the part's walls
-}
 FACE_CLASS_LABELS = {"crossable": "crossable (stock skin)", "facing_crossable": "facing crossable (hub, floor)",
                      "not_crossable": "not crossable (blade sides, walls)"}
-# Sub-volumes alternate between two colours, slice by slice.
-SLICE_COLORS = ((0.96, 0.62, 0.16), (0.40, 0.55, 0.85))
 
 
 def slice_color(index):

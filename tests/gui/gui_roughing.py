@@ -1,0 +1,329 @@
+"""GUI test: the slanted slot block and the impeller with their stocks, the Roughing volume from two selected
+solids (faces coloured by class, the legend), its panel (strategy, sub-volumes in alternating colours, Cancel
+restores, a bad input shown), Esc on a long partition keeps the previous result, and the colours after the
+document is saved and reopened."""
+import colorsys
+import os
+import sys
+import tempfile
+
+import FreeCAD
+import FreeCADGui as Gui
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import OUT, GuiRun  # noqa: E402
+
+run = GuiRun()
+state = {}
+SLOT_VOLUME = 15360.0
+# hue bands (degrees) of the face classes' colours and of the slices' (hsmplanner.gui.colors)
+# (blends with the grey part and the white background keep a colour's hue; blends of two colours do not)
+CLASS_HUES = {"crossable": (200, 235), "facing crossable": (95, 165), "not crossable": (-30, 30)}
+SLICE_HUES = {"even slices": (20, 50), "odd slices": (170, 205)}
+
+
+def panel():
+    from hsmplanner.gui import roughing_panel
+
+    return roughing_panel.RoughingPanel.active
+
+
+def roughing_node(obj):
+    """The view provider's scene of the volume (None when nothing is drawn)."""
+    root = getattr(obj.ViewObject.Proxy, "root", None)
+    return root.getChild(0) if root is not None and root.getNumChildren() else None
+
+
+def drawn_colours(obj):
+    """The colour the view provider drew each face of the Shape in (None before it drew)."""
+    drawn = getattr(obj.ViewObject.Proxy, "drawn", None)
+    return [tuple(round(c, 3) for c in colour) for colour in drawn["faces"]] if drawn else None
+
+
+def palette_of(name):
+    """The colours of hsmplanner.gui.colors.<name>, rounded as drawn_colours gives them."""
+    from hsmplanner.gui import colors
+
+    return {tuple(round(c, 3) for c in colour) for colour in getattr(colors, name)}
+
+
+def hue_counts(name, bands):
+    """Pixels of the 3D view (saved as an image, white background) in each hue band, of saturated colours."""
+    from PySide2 import QtGui
+
+    path = os.path.join(OUT, name + ".png")
+    Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
+    run.screenshots.append(path)
+    image = QtGui.QImage(path).convertToFormat(QtGui.QImage.Format_RGB32)
+    bits = image.constBits()
+    pixels = np.frombuffer(bits, dtype=np.uint8, count=image.byteCount()).reshape(image.height(), image.width(), 4)
+    model = pixels[:, : int(0.7 * image.width())]  # the legend (at the right) has a square of each colour
+    rgb = model[:, :, [2, 1, 0]].reshape(-1, 3).astype(float) / 255.0
+    saturated = rgb[(rgb.max(axis=1) - rgb.min(axis=1)) > 0.15]
+    hues = np.array([colorsys.rgb_to_hsv(*p)[0] * 360.0 for p in saturated[:: max(1, len(saturated) // 40000)]])
+    hues = np.where(hues > 330.0, hues - 360.0, hues)
+    counts = {label: int(np.sum((hues >= low) & (hues <= high))) for label, (low, high) in bands.items()}
+    run.notes.setdefault("hue pixel counts (sampled)", {})[name] = counts
+    return counts
+
+
+def show_only(*objects):
+    for obj in FreeCAD.ActiveDocument.Objects:
+        if obj.ViewObject is not None:
+            obj.ViewObject.Visibility = obj in objects
+
+
+@run.step
+def slot_block_and_its_stock(run):
+    Gui.activateWorkbench("HSMPlannerWorkbench")
+    Gui.runCommand("HSM_SlantedSlotBlock")
+    document = FreeCAD.ActiveDocument
+    run.wait_until(lambda: run.shape_built(document.getObject("SlantedSlotBlock"))
+                   and run.shape_built(document.getObject("SlantedSlotBlockStock")), 30.0,
+                   "the slot block and its stock")
+    state["part"], state["stock"] = document.getObject("SlantedSlotBlock"), document.getObject("SlantedSlotBlockStock")
+    run.check("stock hidden, drawn as a wireframe when shown", state["stock"].ViewObject.DisplayMode == "Wireframe"
+              and not state["stock"].ViewObject.Visibility, state["stock"].ViewObject.DisplayMode)
+    run.check("the icons resolve", all(os.path.isfile(o.ViewObject.Proxy.getIcon())
+                                       for o in (state["part"], state["stock"])))
+    run.screenshot("roughing_slot_block")
+
+
+@run.step
+def roughing_volume_of_two_selected_solids(run):
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(state["stock"])  # the stock first: the command tells them apart
+    Gui.Selection.addSelection(state["part"])
+    Gui.runCommand("HSM_RoughingVolume")
+    document = FreeCAD.ActiveDocument
+
+    def computed():
+        obj = document.getObject("RoughingVolume")
+        return run.valid(obj) and obj.Volume > 0 and roughing_node(obj) is not None
+
+    run.wait_until(computed, 60.0, "the roughing volume computed and drawn")
+    obj = document.getObject("RoughingVolume")
+    state["slot"] = obj
+    run.check("no panel for two selected solids", not run.task_dialog_open() and panel() is None)
+    run.check("part and stock told apart", (obj.Part, obj.Stock) == (state["part"], state["stock"]))
+    run.check("volume 15360 mm³", abs(obj.Volume - SLOT_VOLUME) <= 1e-6 * SLOT_VOLUME, str(obj.Volume))
+    run.check("stock hidden", not state["stock"].ViewObject.Visibility)
+    run.check("drawn in the roughing mode", obj.ViewObject.DisplayMode == "Roughing", obj.ViewObject.DisplayMode)
+    colours, expected = set(drawn_colours(obj)), palette_of("FACE_CLASS_COLORS")
+    run.check("the three classes' colours are drawn", colours == expected, "%s vs %s" % (colours, expected))
+    run.check("a little transparent", 0 < obj.ViewObject.Transparency <= 50, str(obj.ViewObject.Transparency))
+    run.check("FreeCAD's own modes get the colours too", len(obj.ViewObject.DiffuseColor) == len(obj.Shape.Faces))
+    Gui.Selection.clearSelection()
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("roughing_slot_classes")
+    counts = hue_counts("view3d_slot_classes", CLASS_HUES)
+    run.check("the view shows the three classes' colours", all(n > 50 for n in counts.values()), str(counts))
+    view = Gui.ActiveDocument.ActiveView
+    width, height = view.getSize()
+    picked = {info.get("Component") for x in range(0, width, 20) for y in range(0, height, 20)
+              for info in [view.getObjectInfo((x, y))] if info and info.get("Object") == obj.Name}
+    faces = {"Face%d" % (i + 1) for i in range(len(obj.Shape.Faces))}
+    run.notes["faces picked in the slot's volume"] = sorted(picked)
+    run.check("a click picks a face of the volume (not a triangle's number)", picked and picked <= faces,
+              "%s of %s" % (sorted(picked), sorted(faces)))
+
+
+@run.step
+def panel_strategy_sub_volumes_and_cancel(run):
+    obj = state["slot"]
+    Gui.ActiveDocument.setEdit(obj.Name)
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the Roughing volume panel open")
+    p = panel()
+    run.check_fits_combo_view("Roughing volume panel", p.form)
+    run.check("panel shows the volume", "15360 mm³" in p.summary.text(), p.summary.text())
+    run.check("legend of the classes", p.legend.labels == ["crossable", "facing crossable", "not crossable"],
+              str(p.legend.labels))
+    run.screenshot("roughing_panel_classes")
+    p.strategy.setCurrentIndex(1)  # S1
+    run.check("computed S1", p.compute(), p.message.text())
+    run.check("4 sub-volumes", obj.SubVolumeCount == 4, str(obj.SubVolumeCount))
+    p.display.setCurrentText("Sub-volumes")
+    run.wait_until(lambda: len(obj.Shape.Solids) == 4 and roughing_node(obj) is not None, 20.0,
+                   "the sub-volumes shown")
+    colours = set(drawn_colours(obj))
+    run.check("slices in two alternating colours", colours == palette_of("SLICE_COLORS"), str(colours))
+    run.check("legend of the slices", p.legend.labels[0].startswith("even"), str(p.legend.labels))
+    run.notes["slot S1 panel summary"] = p.summary.text()
+    run.screenshot("roughing_slot_sub_volumes")
+    counts = hue_counts("view3d_slot_sub_volumes", SLICE_HUES)
+    run.check("the view shows both slice colours", all(n > 50 for n in counts.values()), str(counts))
+    p.reject()
+    run.wait_until(lambda: not run.task_dialog_open() and panel() is None and roughing_node(obj) is not None, 20.0,
+                   "the panel closed")
+    run.check("Cancel restored the object", obj.Strategy.startswith("None") and obj.SubVolumeCount == 0
+              and obj.Display == "Face classes" and len(obj.Shape.Solids) == 1,
+              "%s %d %s" % (obj.Strategy, obj.SubVolumeCount, obj.Display))
+    run.check("and its colours", set(drawn_colours(obj)) == palette_of("FACE_CLASS_COLORS"))
+
+
+@run.step
+def bad_input_in_the_panel_and_ok(run):
+    obj = state["slot"]
+    Gui.ActiveDocument.setEdit(obj.Name)
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the panel reopened")
+    p = panel()
+    p.strategy.setCurrentIndex(2)  # S2: the slot has no cylindrical crossable face
+    run.check("S2 refused", not p.compute())
+    run.check("the message names the strategy and the fix", "S2 needs a cylindrical" in p.message.text()
+              and "use S1, S3 or S4" in p.message.text(), p.message.text())
+    run.check("the object stays valid", obj.isValid(), str(obj.State))
+    run.check("one line in the Report view", run.wait_until(
+        lambda: "RoughingVolume: S2 needs a cylindrical" in run.report_view_text(), 5.0, "the Report view's line"))
+    run.check("no traceback in the Report view", "Traceback" not in run.report_view_text())
+    run.notes["bad input message"] = p.message.text()
+    run.screenshot("roughing_panel_bad_input")
+    p.strategy.setCurrentIndex(5)  # S5
+    p.display.setCurrentText("Sub-volumes")
+    p.accept()
+    run.wait_until(lambda: not run.task_dialog_open() and obj.SubVolumeCount == 4, 30.0, "OK computed S5")
+    run.check("OK kept S5", obj.Strategy.startswith("S5") and obj.Proxy.error is None, obj.Strategy)
+
+
+@run.step
+def impeller_cancel_keeps_the_previous_result(run):
+    from PySide2 import QtCore, QtGui, QtWidgets
+
+    document = FreeCAD.ActiveDocument
+    Gui.runCommand("HSM_Impeller")
+    run.wait_until(lambda: run.shape_built(document.getObject("Impeller"))
+                   and run.shape_built(document.getObject("ImpellerStock")), 60.0, "the impeller built")
+    wheel, blank = document.getObject("Impeller"), document.getObject("ImpellerStock")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(wheel)
+    Gui.Selection.addSelection(blank)
+    Gui.runCommand("HSM_RoughingVolume")
+
+    def computed():
+        obj = document.getObject("RoughingVolume001")
+        return run.valid(obj) and obj.RegionCount == 7 and roughing_node(obj) is not None
+
+    run.wait_until(computed, 90.0, "the impeller's roughing volume computed")
+    obj = document.getObject("RoughingVolume001")
+    state["impeller"] = obj
+    run.check("7 channels of 3/1/2 surfaces", list(obj.FaceClassCounts) ==
+              ["crossable 3, facing_crossable 1, not_crossable 2"] * 7, str(list(obj.FaceClassCounts)))
+    show_only(wheel, obj)
+    Gui.Selection.clearSelection()
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("roughing_impeller_classes")
+    counts = hue_counts("view3d_impeller_classes", CLASS_HUES)
+    run.check("the impeller's view shows the three classes", all(n > 50 for n in counts.values()), str(counts))
+
+    seen = {}
+
+    def press_escape():
+        dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
+                   if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
+        seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]
+        if dialogs:
+            image = os.path.join(OUT, "roughing_progress_dialog.png")
+            dialogs[0].grab().save(image)
+            run.screenshots.append(image)
+            dialogs[0].activateWindow()  # the key goes where the user's would: the dialog's focus (Cancel)
+            QtWidgets.QApplication.processEvents()
+            target = QtWidgets.QApplication.focusWidget() or dialogs[0]
+            for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+                QtWidgets.QApplication.sendEvent(target, QtGui.QKeyEvent(kind, QtCore.Qt.Key_Escape,
+                                                                         QtCore.Qt.NoModifier))
+            seen["cancelled"] = dialogs[0].wasCanceled()
+
+    volume = obj.Volume
+    obj.Region = 0  # all seven channels, S3: seconds each
+    obj.Strategy = [s for s in obj.getEnumerationsOfProperty("Strategy") if s.startswith("S3")][0]
+    QtCore.QTimer.singleShot(1500, press_escape)
+    document.recompute()
+    run.wait_until(lambda: "dialogs" in seen, 10.0, "the timer that presses Esc")
+    run.wait_until(lambda: "touched" in [s.lower() for s in obj.State], 5.0, "the cancelled object left to recompute")
+    run.notes["escape"] = {"dialogs": seen.get("dialogs"), "state": obj.State}
+    run.check("a progress dialog shows", bool(seen.get("dialogs")), str(seen))
+    run.check("Esc cancels, the previous result stays", obj.Proxy.cancelled and obj.isValid() and obj.Volume == volume
+              and obj.SubVolumeCount == 0 and roughing_node(obj) is not None, "%s %s" % (obj.State, obj.SubVolumeCount))
+    run.check("one line says so", run.wait_until(
+        lambda: "cancelled: the previous result is kept" in run.report_view_text(), 5.0, "the Report view's line"))
+    obj.Region = 1
+    obj.Strategy = [s for s in obj.getEnumerationsOfProperty("Strategy") if s.startswith("S5")][0]
+    obj.Display = "Sub-volumes"
+    document.recompute()
+    run.wait_until(lambda: run.valid(obj) and obj.SubVolumeCount >= 2 and not obj.Proxy.cancelled, 60.0,
+                   "S5 of the largest channel computed")
+    run.check("S5 sub-volumes add up to the channel", abs(sum(obj.SubVolumes) - obj.RegionVolumes[0])
+              <= 1e-6 * obj.RegionVolumes[0], "%s %s" % (sum(obj.SubVolumes), obj.RegionVolumes[0]))
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("roughing_impeller_s5")
+
+
+@run.step
+def one_selected_part_opens_the_panel_and_cancel_removes_it(run):
+    document = FreeCAD.ActiveDocument
+    wheel, blank = document.getObject("Impeller"), document.getObject("ImpellerStock")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(wheel)
+    Gui.runCommand("HSM_RoughingVolume")
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the panel of a new roughing volume")
+    p = panel()
+    name = p.obj.Name
+    run.check("the selected part and its stock in the panel", (p.selected_part(), p.selected_stock()) == (wheel, blank),
+              "%s %s" % (p.part.currentText(), p.stock.currentText()))
+    run.check("nothing computed before Compute", p.obj.VolumeShape.isNull() and "No result yet" in p.summary.text(),
+              p.summary.text())
+    run.screenshot("roughing_panel_new")
+    p.reject()
+    run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
+    run.check("Cancel removed the new object", document.getObject(name) is None)
+
+
+@run.step
+def colours_after_saving_and_reopening(run):
+    document = FreeCAD.ActiveDocument
+    path = os.path.join(tempfile.mkdtemp(prefix="hsm-gui-"), "roughing.FCStd")
+    document.saveAs(path)
+    names = {key: state[key].Name for key in ("slot", "impeller")}
+    expected = {key: (drawn_colours(state[key]), list(state[key].ViewObject.DiffuseColor)) for key in names}
+    FreeCAD.closeDocument(document.Name)
+    document = FreeCAD.openDocument(path)
+    run.wait_until(lambda: all(roughing_node(document.getObject(name)) is not None for name in names.values()), 30.0,
+                   "the reopened roughing volumes drawn")
+    for key, name in names.items():
+        obj = document.getObject(name)
+        drawn, diffuse = drawn_colours(obj), list(obj.ViewObject.DiffuseColor)
+        run.check("%s: drawn in the colours of before saving, face by face" % key, drawn == expected[key][0],
+                  "%s vs %s" % (drawn and drawn[:4], expected[key][0][:4]))
+        run.check("%s: FreeCAD's face colours as before (within the file's 8 bits)" % key,
+                  len(diffuse) == len(expected[key][1]) and np.allclose(diffuse, expected[key][1], atol=1.0 / 255),
+                  "%s vs %s" % (diffuse[:2], expected[key][1][:2]))
+        run.check("%s: not recomputed (nothing touched)" % key, "Touched" not in obj.State, str(obj.State))
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("roughing_reopened")
+
+
+@run.step
+def a_jobs_stock_is_offered_first(run):
+    from hsmplanner.app.compat import create_job
+
+    document = FreeCAD.ActiveDocument  # the reopened one (a Job reopened prints FreeCAD 0.20's "setAttr failed")
+    part, stock, slot = (document.getObject(name) for name in ("SlantedSlotBlock", "SlantedSlotBlockStock",
+                                                               "RoughingVolume"))
+    job = create_job([part])
+    document.recompute()
+    run.wait_until(lambda: job.Stock is not None and run.shape_built(job.Stock), 30.0, "the Job and its stock")
+    job.ViewObject.Visibility = False
+    Gui.ActiveDocument.setEdit(slot.Name)
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the panel reopened")
+    p = panel()
+    run.check("the Job's stock first in the Stock list", p.stock_objects[:1] == [job.Stock]
+              and job.Label in p.stock.itemText(1), "%s" % [p.stock.itemText(i) for i in range(p.stock.count())])
+    run.check("the stock chosen is kept", p.selected_stock() == stock, p.stock.currentText())
+    p.reject()
+    run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
+
+
+run.start()
