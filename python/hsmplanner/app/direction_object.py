@@ -7,6 +7,7 @@ import FreeCAD
 
 from hsmplanner import _core, direction, feedsim
 
+from .properties import add_inputs, add_results
 from . import finishing
 
 from .progress import freecad_progress
@@ -97,15 +98,10 @@ class MachiningDirection(PropertyLimits, InMemoryResult):
     """The per-point result, the feed scan and the simulated planes are computed again after reopening."""
 
     def __init__(self, obj):
-        for prop_type, name, group, tooltip, default in _INPUTS:
-            obj.addProperty(prop_type, name, group, tooltip)
-            if default is not None:
-                setattr(obj, name, default)
+        add_inputs(obj, _INPUTS)
         obj.Machine = machine_choices()
         obj.Machine = DEFAULT_MACHINE
-        for prop_type, name, tooltip in _OUTPUTS:
-            obj.addProperty(prop_type, name, "Result", tooltip)
-            obj.setEditorMode(name, 1)
+        add_results(obj, _OUTPUTS)
         obj.addProperty("App::PropertyInteger", "Arrows", "Display", "arrows drawn on the face, at most")
         obj.Arrows = 600
         obj.Proxy = self

@@ -7,6 +7,7 @@ import FreeCAD
 from hsmplanner import feedsim
 
 from .feedrate import is_simulatable, simulate_object
+from .properties import add_results
 from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
@@ -41,9 +42,7 @@ class FeedRateAnalysis(InMemoryResult):
                         "machine JSON file, used when Machine is '%s'" % CUSTOM_MACHINE)
         obj.addProperty("App::PropertyEnumeration", "ColorBy", "Display", "what the colours of the map show")
         obj.ColorBy = COLOR_MODES
-        for prop_type, name, tooltip in _OUTPUTS:
-            obj.addProperty(prop_type, name, "Result", tooltip)
-            obj.setEditorMode(name, 1)
+        add_results(obj, _OUTPUTS)
         obj.Proxy = self
         self.result = None
 

@@ -9,6 +9,7 @@ them, are the read-only CurveShapes: a compound of one edge per curve, B1 … B2
 import FreeCAD
 import Part
 
+from .properties import add_results
 from .guide_curve_net import DEFAULT_MODE, MODES, NetParameters, build_guide_curve_net
 from .progress import freecad_progress
 from .property_limits import PropertyLimits
@@ -78,9 +79,7 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
         obj.addProperty("App::PropertyEnumeration", "Mode", "Guide curve net", "how the net is built")
         obj.Mode = list(MODES)
         obj.Mode = DEFAULT_MODE
-        for prop_type, name, tooltip in _OUTPUTS:
-            obj.addProperty(prop_type, name, "Result", tooltip)
-            obj.setEditorMode(name, 1)
+        add_results(obj, _OUTPUTS)
         obj.Proxy = self
 
     def onDocumentRestored(self, obj):

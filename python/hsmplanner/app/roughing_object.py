@@ -26,6 +26,7 @@ import hsmplanner
 from hsmplanner import roughing
 from hsmplanner._core import roughing as core
 
+from .properties import HIDDEN, add_inputs, add_results
 from .feedrate import is_job
 from .progress import freecad_progress
 from .property_limits import PropertyLimits
@@ -213,16 +214,9 @@ class RoughingVolume(PropertyLimits, NoSavedState):
     LIMITS = LIMITS
 
     def __init__(self, obj):
-        for prop_type, name, group, tooltip, default in _INPUTS:
-            obj.addProperty(prop_type, name, group, tooltip)
-            if default is not None:
-                setattr(obj, name, default)
-        for prop_type, name, tooltip in _OUTPUTS:
-            obj.addProperty(prop_type, name, "Result", tooltip)
-            obj.setEditorMode(name, 1)
-        for prop_type, name, tooltip in _STORED:
-            obj.addProperty(prop_type, name, "Result", tooltip)
-            obj.setEditorMode(name, 2)
+        add_inputs(obj, _INPUTS)
+        add_results(obj, _OUTPUTS)
+        add_results(obj, _STORED, mode=HIDDEN)
         obj.Proxy = self
         self.forget()
 

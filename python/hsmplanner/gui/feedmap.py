@@ -6,13 +6,10 @@ from pivy import coin
 from hsmplanner.plots.common import feed_colors
 from hsmplanner.plots.feedrate import block_polylines
 
+from .overlay import add_backing, add_labels, colored_quads, packed_rgba, screen_root
+
 LEGEND_STEPS = 20
 LEGEND_TICKS = 4
-
-
-def _packed(rgb):
-    r, g, b = (np.clip(np.asarray(rgb), 0, 1) * 255).astype(np.uint32).T
-    return (r << 24) | (g << 16) | (b << 8) | 0xFF
 
 
 def line_set(polylines, colors=None, width=2.0, pattern=None):
@@ -31,7 +28,7 @@ def line_set(polylines, colors=None, width=2.0, pattern=None):
         vertices.orderedRGBA.setValue(0x999999FF)
         vertices.materialBinding = coin.SoMaterialBinding.OVERALL
     else:
-        vertices.orderedRGBA.setValues(0, len(colors), [int(c) for c in _packed(colors)])
+        vertices.orderedRGBA.setValues(0, len(colors), packed_rgba(colors))
         vertices.materialBinding = coin.SoMaterialBinding.PER_FACE  # one colour per polyline (block)
     lines = coin.SoLineSet()
     lines.vertexProperty = vertices
@@ -78,49 +75,17 @@ def map_node(blocks, color_by):
 
 def legend_node(low, high, unit, title="mean reached feed", digits=0):
     """A vertical colour bar with labels at the right of the view, in normalised screen coordinates."""
-    root = coin.SoSeparator()
-    camera = coin.SoOrthographicCamera()
-    camera.viewportMapping = coin.SoCamera.LEAVE_ALONE
-    camera.position = (0.0, 0.0, 1.0)
-    camera.height = 2.0
-    light = coin.SoLightModel()
-    light.model = coin.SoLightModel.BASE_COLOR
-    root.addChild(camera)
-    root.addChild(light)
+    root = screen_root()
     x0, x1, y0, y1 = 0.86, 0.92, -0.8, 0.4  # at the right edge, below the navigation cube; labels to the left
-    vertices, colors = [], []
+    corners, colors = [], []
     for k in range(LEGEND_STEPS):
         a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS
-        vertices += [(x0, a, 0), (x1, a, 0), (x1, b, 0), (x0, b, 0)]
+        corners.append([(x0, a), (x1, a), (x1, b), (x0, b)])
         colors.append(feed_colors([(k + 0.5) / LEGEND_STEPS])[0])
-    property_ = coin.SoVertexProperty()
-    property_.vertex.setValues(0, len(vertices), vertices)
-    property_.orderedRGBA.setValues(0, len(colors), [int(c) for c in _packed(colors)])
-    property_.materialBinding = coin.SoMaterialBinding.PER_FACE
-    faces = coin.SoFaceSet()
-    faces.vertexProperty = property_
-    faces.numVertices.setValues(0, LEGEND_STEPS, [4] * LEGEND_STEPS)
-    root.addChild(faces)
-    font = coin.SoFont()
-    font.size = 13
-    root.addChild(font)
-    text_colour = coin.SoBaseColor()
-    text_colour.rgb = (1, 1, 1)
-    root.addChild(text_colour)
-    for k in range(LEGEND_TICKS + 1):  # the scale's numbers, every quarter
-        f = k / LEGEND_TICKS
-        root.addChild(_label("%g %s" % (round(low + f * (high - low), digits), unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02))
-    root.addChild(_label(title, x1, y1 + 0.06))
+    ticks = [k / LEGEND_TICKS for k in range(LEGEND_TICKS + 1)]  # the scale's numbers, every quarter
+    labels = [("%g %s" % (round(low + f * (high - low), digits), unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02)
+              for f in ticks] + [(title, x1, y1 + 0.06)]
+    add_backing(root, labels, x1, y0 - 0.03, y1 + 0.09)
+    root.addChild(colored_quads(corners, colors))
+    add_labels(root, labels)
     return root
-
-
-def _label(text, x, y):
-    group = coin.SoSeparator()
-    move = coin.SoTranslation()
-    move.translation = (x, y, 0)
-    label = coin.SoText2()
-    label.string = text
-    label.justification = coin.SoText2.RIGHT
-    group.addChild(move)
-    group.addChild(label)
-    return group

@@ -19,6 +19,7 @@ import numpy as np
 from pivy import coin
 
 from .colors import FACE_CLASS_COLORS, FACE_CLASS_LABELS, SLICE_COLORS, SLICE_LABELS
+from .overlay import add_backing, add_labels, colored_quads, packed_rgba, screen_root, unpickable
 
 WELD = 1e-6          # mm: tessellation vertices closer than this are one vertex
 OUTLINE = (0.15, 0.15, 0.15)
@@ -151,7 +152,7 @@ def volume_node(shape, codes, sub_volumes, deflection, inset, transparency):
     alpha = 1.0 - np.asarray(transparencies(transparency, sub_volumes))[palette_index]
     properties = coin.SoVertexProperty()
     properties.vertex.setValues(0, len(vertices), vertices.tolist())
-    properties.orderedRGBA.setValues(0, len(rgb), _packed(rgb, alpha))
+    properties.orderedRGBA.setValues(0, len(rgb), packed_rgba(rgb, alpha))
     properties.materialBinding = coin.SoMaterialBinding.PER_VERTEX_INDEXED
     surfaces = coin.SoSeparator()
     flat = coin.SoLightModel()
@@ -175,7 +176,7 @@ def volume_node(shape, codes, sub_volumes, deflection, inset, transparency):
     root.addChild(surfaces)
 
     edges = coin.SoSeparator()
-    edges.addChild(_unpickable())
+    edges.addChild(unpickable())
     light = coin.SoLightModel()
     light.model = coin.SoLightModel.BASE_COLOR
     colour = coin.SoBaseColor()
@@ -192,68 +193,15 @@ def volume_node(shape, codes, sub_volumes, deflection, inset, transparency):
     return root, faces
 
 
-def _unpickable():
-    style = coin.SoPickStyle()
-    style.style = coin.SoPickStyle.UNPICKABLE
-    return style
-
-
 def legend_node(colors, labels, title="Roughing volume"):
     """Coloured squares with their labels at the right of the view, below the navigation cube, in normalised
     screen coordinates (its own camera: it shows in screenshots and saved images)."""
-    root = coin.SoSeparator()
-    root.setName("HsmRoughingLegend")
-    root.addChild(_unpickable())
-    camera = coin.SoOrthographicCamera()
-    camera.viewportMapping = coin.SoCamera.LEAVE_ALONE
-    camera.position = (0.0, 0.0, 1.0)
-    camera.height = 2.0
-    light = coin.SoLightModel()
-    light.model = coin.SoLightModel.BASE_COLOR
-    root.addChild(camera)
-    root.addChild(light)
+    root = screen_root("HsmRoughingLegend")
     x0, x1, top, height, gap = 0.86, 0.92, 0.3, 0.07, 0.05
-    vertices = []
-    for k in range(len(colors)):
-        y1 = top - k * (height + gap)
-        y0 = y1 - height
-        vertices += [(x0, y0, 0), (x1, y0, 0), (x1, y1, 0), (x0, y1, 0)]
-    rgba = _packed(colors, np.ones(len(colors)))
-    properties = coin.SoVertexProperty()
-    properties.vertex.setValues(0, len(vertices), vertices)
-    properties.orderedRGBA.setValues(0, len(rgba), rgba)
-    properties.materialBinding = coin.SoMaterialBinding.PER_FACE
-    squares = coin.SoFaceSet()
-    squares.vertexProperty = properties
-    squares.numVertices.setValues(0, len(colors), [4] * len(colors))
-    root.addChild(squares)
-    font = coin.SoFont()
-    font.size = 13
-    root.addChild(font)
-    text_colour = coin.SoBaseColor()
-    text_colour.rgb = (1, 1, 1)
-    root.addChild(text_colour)
-    for k, label in enumerate(labels):
-        y = top - k * (height + gap) - 0.5 * height - 0.015
-        root.addChild(_label(label, x0 - 0.02, y))
-    root.addChild(_label(title, x1, top + 0.04))
+    rows = [top - k * (height + gap) for k in range(len(colors))]  # each square's top
+    texts = [(label, x0 - 0.02, y - 0.5 * height - 0.015) for label, y in zip(labels, rows)] + \
+        [(title, x1, top + 0.04)]
+    add_backing(root, texts, x1, rows[-1] - height, top + 0.07)
+    root.addChild(colored_quads([[(x0, y - height), (x1, y - height), (x1, y), (x0, y)] for y in rows], colors))
+    add_labels(root, texts)
     return root
-
-
-def _packed(rgb, alpha):
-    """0xRRGGBBAA of each row."""
-    r, g, b = (np.clip(np.asarray(rgb), 0, 1) * 255).round().astype(np.uint32).T
-    a = (np.clip(np.asarray(alpha), 0, 1) * 255).round().astype(np.uint32)
-    return [int(x) for x in (r << 24) | (g << 16) | (b << 8) | a]
-
-
-def _label(text, x, y):
-    group = coin.SoSeparator()
-    move = coin.SoTranslation()
-    move.translation = (x, y, 0)
-    label = coin.SoText2()
-    label.string = text
-    label.justification = coin.SoText2.RIGHT
-    group.addChild(move)
-    group.addChild(label)
-    return group
