@@ -116,25 +116,13 @@ def saved_documents_hold_no_absolute_icon_path(run):
 def escape_cancels_a_long_finishing_and_keeps_the_document(run):
     """A cusp of 0.001 mm takes seconds: its progress dialog shows, Esc stops it, the operation is marked
     cancelled, the document and its objects stay, and the next recompute works again."""
-    from PySide2 import QtCore, QtGui, QtWidgets
+    from PySide2 import QtCore
 
     op = state["planes"]
     seen = {}
 
-    def press_escape():
-        dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
-                   if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
-        seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]
-        if dialogs:
-            image = os.path.join(OUT, "finishing_progress_dialog.png")
-            dialogs[0].grab().save(image)
-            run.screenshots.append(image)
-            for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
-                QtWidgets.QApplication.sendEvent(dialogs[0], QtGui.QKeyEvent(kind, QtCore.Qt.Key_Escape,
-                                                                             QtCore.Qt.NoModifier))
-
     op.CuspHeight = 0.001
-    QtCore.QTimer.singleShot(1500, press_escape)
+    QtCore.QTimer.singleShot(1500, lambda: run.press_escape_on_progress(seen, "finishing_progress_dialog"))
     FreeCAD.ActiveDocument.recompute()
     run.wait_until(lambda: "dialogs" in seen, 10.0, "the timer that presses Esc")
     run.notes["escape"] = {"status": op.getStatusString(), "dialogs": seen.get("dialogs")}

@@ -152,6 +152,25 @@ class GuiRun:
         self.check("%s: every text inside the plots (%s)" % (name, size), not outside, str(outside[:5]))
         self.check("%s: tick labels apart (%s)" % (name, size), not crowded, str(crowded[:3]))
 
+    def press_escape_on_progress(self, seen, image_name):
+        """Called from a timer while a computation runs: records the visible progress dialogs in `seen`, saves the
+        first as `image_name`.png and presses Esc where the user's key would go (the dialog's focus, Cancel)."""
+        from PySide2 import QtGui
+        dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
+                   if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
+        seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]
+        if not dialogs:
+            return
+        image = os.path.join(OUT, image_name + ".png")
+        dialogs[0].grab().save(image)
+        self.screenshots.append(image)
+        dialogs[0].activateWindow()
+        QtWidgets.QApplication.processEvents()
+        target = QtWidgets.QApplication.focusWidget() or dialogs[0]
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtWidgets.QApplication.sendEvent(target, QtGui.QKeyEvent(kind, QtCore.Qt.Key_Escape, QtCore.Qt.NoModifier))
+        seen["cancelled"] = dialogs[0].wasCanceled()
+
     @staticmethod
     def report_view_text():
         """What FreeCAD's Report view shows (errors of recomputes land there, not on sys.stderr)."""

@@ -188,7 +188,7 @@ def bad_input_in_the_panel_and_ok(run):
 
 @run.step
 def impeller_cancel_keeps_the_previous_result(run):
-    from PySide2 import QtCore, QtGui, QtWidgets
+    from PySide2 import QtCore
 
     document = FreeCAD.ActiveDocument
     Gui.runCommand("HSM_Impeller")
@@ -218,27 +218,10 @@ def impeller_cancel_keeps_the_previous_result(run):
     run.check("the impeller's view shows the three classes", all(n > 50 for n in counts.values()), str(counts))
 
     seen = {}
-
-    def press_escape():
-        dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
-                   if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
-        seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]
-        if dialogs:
-            image = os.path.join(OUT, "roughing_progress_dialog.png")
-            dialogs[0].grab().save(image)
-            run.screenshots.append(image)
-            dialogs[0].activateWindow()  # the key goes where the user's would: the dialog's focus (Cancel)
-            QtWidgets.QApplication.processEvents()
-            target = QtWidgets.QApplication.focusWidget() or dialogs[0]
-            for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
-                QtWidgets.QApplication.sendEvent(target, QtGui.QKeyEvent(kind, QtCore.Qt.Key_Escape,
-                                                                         QtCore.Qt.NoModifier))
-            seen["cancelled"] = dialogs[0].wasCanceled()
-
     volume = obj.Volume
     obj.Region = 0  # all seven channels, S3: seconds each
     obj.Strategy = [s for s in obj.getEnumerationsOfProperty("Strategy") if s.startswith("S3")][0]
-    QtCore.QTimer.singleShot(1500, press_escape)
+    QtCore.QTimer.singleShot(1500, lambda: run.press_escape_on_progress(seen, "roughing_progress_dialog"))
     document.recompute()
     run.wait_until(lambda: "dialogs" in seen, 10.0, "the timer that presses Esc")
     run.wait_until(lambda: "touched" in [s.lower() for s in obj.State], 5.0, "the cancelled object left to recompute")

@@ -143,6 +143,7 @@ class _CommandRoughingTestPart:
     the part's): Space shows it, as a wireframe."""
 
     NAME, MENU, TIP = "", "", ""
+    BUILDER, VIEW_PROVIDER = "", ""  # names in app.roughing_parts and gui.view_providers
 
     def GetResources(self):
         return {"Pixmap": icon(self.NAME), "MenuText": self.MENU, "ToolTip": self.TIP}
@@ -151,7 +152,12 @@ class _CommandRoughingTestPart:
         return True
 
     def create(self, document):
-        raise NotImplementedError
+        from hsmplanner.app import roughing_parts
+        from hsmplanner.gui import view_providers
+
+        part, stock = getattr(roughing_parts, self.BUILDER)(document)
+        getattr(view_providers, self.VIEW_PROVIDER)(part.ViewObject)
+        return part, stock
 
     def Activated(self):
         from PySide2 import QtCore, QtWidgets
@@ -180,13 +186,7 @@ class CommandSlantedSlotBlock(_CommandRoughingTestPart):
     TIP = ("Add the roughing test part: a block with a slot tilted from Z (a tool along Z cannot reach under its "
            "overhang), and its stock")
 
-    def create(self, document):
-        from hsmplanner.app import roughing_parts
-        from hsmplanner.gui.view_providers import ViewProviderSlantedSlotBlock
-
-        part, stock = roughing_parts.create_slanted_slot_block(document)
-        ViewProviderSlantedSlotBlock(part.ViewObject)
-        return part, stock
+    BUILDER, VIEW_PROVIDER = "create_slanted_slot_block", "ViewProviderSlantedSlotBlock"
 
 
 class CommandImpeller(_CommandRoughingTestPart):
@@ -194,13 +194,7 @@ class CommandImpeller(_CommandRoughingTestPart):
     TIP = ("Add the roughing paper's test part: a radial compressor impeller (7 undercut channels) and its blank; "
            "takes a few seconds")
 
-    def create(self, document):
-        from hsmplanner.app import roughing_parts
-        from hsmplanner.gui.view_providers import ViewProviderImpeller
-
-        part, stock = roughing_parts.create_impeller(document)
-        ViewProviderImpeller(part.ViewObject)
-        return part, stock
+    BUILDER, VIEW_PROVIDER = "create_impeller", "ViewProviderImpeller"
 
 
 class CommandRoughingVolume:
