@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/text.hpp"
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -51,7 +52,80 @@ ControllerKind controllerKind(const std::string& name, const std::string& origin
 
 constexpr double kPerMinute = 1.0 / 60.0;  // mm/min -> mm/s
 constexpr double kMetres = 1000.0;         // m/s², m/s³ -> mm/s², mm/s³
+
+Eigen::Vector3d vector3(const json& node, const std::string& key, const std::string& origin) {
+  if (!node.contains(key)) bad(origin, "missing \"" + key + "\": add it (see docs/machines.md)");
+  const json& value = node.at(key);
+  if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+      !value[2].is_number())
+    bad(origin, "\"" + key + "\" must be three numbers [x, y, z], got " + value.dump());
+  Eigen::Vector3d v(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+  if (!v.allFinite() || v.cwiseAbs().maxCoeff() > 1e6) bad(origin, "\"" + key + "\" = " + value.dump() + " is out of range");
+  return v;
+}
+
+RotaryAxis rotaryAxis(const json& node, const std::string& origin) {
+  if (!node.is_object()) bad(origin, "each rotary axis must be an object, got " + node.dump());
+  RotaryAxis axis;
+  const std::string name = node.value("name", "");
+  if (name != "A" && name != "B" && name != "C") bad(origin, "a rotary axis needs \"name\": \"A\", \"B\" or \"C\"");
+  axis.name = name[0];
+  const std::string where = origin + " rotary axis " + name;
+  const std::string carrier = node.value("carrier", "");
+  if (carrier != "table" && carrier != "head") bad(where, "\"carrier\" must be \"table\" or \"head\"");
+  axis.onTable = carrier == "table";
+  axis.direction = vector3(node, "direction", where);
+  if (axis.direction.norm() < 1e-9) bad(where, "\"direction\" must not be zero");
+  axis.direction.normalize();
+  axis.pivot = vector3(node, "pivot_mm", where);
+  axis.maxVelocity = number(node, "max_velocity_deg_min", where, kPerMinute, true);
+  axis.rapidVelocity = number(node, "rapid_velocity_deg_min", where, kPerMinute, true);
+  axis.maxAcceleration = number(node, "max_acceleration_deg_s2", where, 1.0, true);
+  axis.maxJerk = number(node, "max_jerk_deg_s3", where, 1.0, true);
+  axis.continuous = node.value("continuous", false);
+  if (!axis.continuous) {
+    if (!node.contains("min_deg") || !node.contains("max_deg") || !node["min_deg"].is_number() ||
+        !node["max_deg"].is_number())
+      bad(where, "needs \"min_deg\" and \"max_deg\" (its travel), or \"continuous\": true");
+    axis.minPosition = node["min_deg"].get<double>();
+    axis.maxPosition = node["max_deg"].get<double>();
+  }
+  return axis;
+}
+
+json rotaryAxisJson(const RotaryAxis& a) {
+  json node = {{"name", std::string(1, a.name)},
+               {"carrier", a.onTable ? "table" : "head"},
+               {"direction", {a.direction.x(), a.direction.y(), a.direction.z()}},
+               {"pivot_mm", {a.pivot.x(), a.pivot.y(), a.pivot.z()}},
+               {"max_velocity_deg_min", a.maxVelocity * 60.0},
+               {"rapid_velocity_deg_min", a.rapidVelocity * 60.0},
+               {"max_acceleration_deg_s2", a.maxAcceleration},
+               {"max_jerk_deg_s3", a.maxJerk},
+               {"continuous", a.continuous}};
+  if (!a.continuous) {
+    node["min_deg"] = a.minPosition;
+    node["max_deg"] = a.maxPosition;
+  }
+  return node;
+}
 }  // namespace
+
+std::string MachineModel::kinematicsName() const {
+  std::string name;
+  for (auto it = rotaryAxes.rbegin(); it != rotaryAxes.rend(); ++it) {  // head first, as the trade names them
+    const std::string part = it->onTable ? "table" : "head";
+    if (name.empty()) name = part;
+    else name += "-" + part;
+  }
+  return name;
+}
+
+int MachineModel::rotaryIndex(char name) const {
+  for (size_t i = 0; i < rotaryAxes.size(); ++i)
+    if (rotaryAxes[i].name == name) return static_cast<int>(i);
+  return -1;
+}
 
 std::string controllerName(ControllerKind kind) {
   switch (kind) {
@@ -82,6 +156,42 @@ void checkMachine(const MachineModel& m) {
   check(m.cornerTolerance, 0.0, 10.0, "corner tolerance", 1.0, "mm");
   check(m.arcTolerance, 1e-4, 1.0, "arc tolerance", 1.0, "mm");
   check(m.compressorPathLimit, 0.0, 1000.0, "compressor path limit", 1.0, "mm");
+  checkRotaryAxes(m);
+}
+
+void checkRotaryAxes(const MachineModel& m) {
+  const std::string machine = "machine \"" + m.name + "\": ";
+  if (m.rotaryAxes.size() > 2)
+    throw InputError(machine + std::to_string(m.rotaryAxes.size()) + " rotary axes: a machine has at most two");
+  if (!(std::abs(m.toolAxis.norm() - 1.0) < 1e-9))
+    throw InputError(machine + "the tool axis must be a unit vector");
+  bool headSeen = false;
+  for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
+    const RotaryAxis& a = m.rotaryAxes[i];
+    const std::string axis = machine + "rotary axis " + std::string(1, a.name) + ": ";
+    if (a.name != 'A' && a.name != 'B' && a.name != 'C') throw InputError(machine + "rotary axes are named A, B or C");
+    if (m.rotaryIndex(a.name) != static_cast<int>(i)) throw InputError(axis + "named twice");
+    if (a.onTable && headSeen)
+      throw InputError(axis + "a table axis after a head axis: list the table's axes first (bed outwards)");
+    headSeen = headSeen || !a.onTable;
+    if (!(std::abs(a.direction.norm() - 1.0) < 1e-9) || !a.pivot.allFinite())
+      throw InputError(axis + "its direction must be a unit vector and its pivot finite");
+    auto check = [&](double value, double low, double high, const std::string& what, double display,
+                     const std::string& unit) {
+      if (!(value >= low && value <= high))
+        throw InputError(axis + what + " = " + hsm::number(value * display) + " " + unit + " is outside [" +
+                         hsm::number(low * display) + ", " + hsm::number(high * display) + "] " + unit);
+    };
+    check(a.maxVelocity, 1e-3, 1e5, "max velocity", 60.0, "deg/min");
+    check(a.rapidVelocity, 1e-3, 1e5, "rapid velocity", 60.0, "deg/min");
+    check(a.maxAcceleration, 1e-3, 1e7, "max acceleration", 1.0, "deg/s²");
+    check(a.maxJerk, 1e-3, 1e9, "max jerk", 1.0, "deg/s³");
+    if (!a.continuous && !(a.minPosition < a.maxPosition && a.minPosition >= -1e5 && a.maxPosition <= 1e5))
+      throw InputError(axis + "travel [" + hsm::number(a.minPosition) + ", " + hsm::number(a.maxPosition) +
+                       "] deg must be an interval within ±100000 deg");
+  }
+  if (m.rotaryAxes.size() == 2 && m.rotaryAxes[0].direction.cross(m.rotaryAxes[1].direction).norm() < 1e-6)
+    throw InputError(machine + "the two rotary axes are parallel: they cannot orient the tool");
 }
 
 MachineModel machineFromJson(const std::string& text, const std::string& origin) {
@@ -115,6 +225,21 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
   if (root.contains("arc_tolerance_mm")) m.arcTolerance = number(root, "arc_tolerance_mm", origin, 1.0, true);
   if (root.contains("compressor_path_limit_mm"))
     m.compressorPathLimit = number(root, "compressor_path_limit_mm", origin, 1.0, true);
+  if (root.contains("rotary_axes")) {
+    if (!root["rotary_axes"].is_array()) bad(origin, "\"rotary_axes\" must be a list of axes (see docs/machines.md)");
+    for (const json& node : root["rotary_axes"]) m.rotaryAxes.push_back(rotaryAxis(node, origin));
+  }
+  if (root.contains("tool_axis")) {
+    m.toolAxis = vector3(root, "tool_axis", origin);
+    if (m.toolAxis.norm() < 1e-9) bad(origin, "\"tool_axis\" must not be zero");
+    m.toolAxis.normalize();
+  }
+  if (root.contains("kinematics")) {
+    const std::string said = root["kinematics"].is_string() ? root["kinematics"].get<std::string>() : "?";
+    if (said != m.kinematicsName())
+      bad(origin, "\"kinematics\": \"" + said + "\" but the rotary axes make a \"" + m.kinematicsName() +
+                      "\" machine (head axes first, as the trade names it): correct one or the other");
+  }
   try {
     checkMachine(m);
   } catch (const InputError& error) {
@@ -141,6 +266,13 @@ std::string machineToJson(const MachineModel& m) {
                {"jerk_limited_by_default", m.jerkLimitedByDefault},
                {"arc_tolerance_mm", m.arcTolerance},
                {"compressor_path_limit_mm", m.compressorPathLimit}};
+  if (m.hasRotaryAxes()) {
+    root["kinematics"] = m.kinematicsName();
+    root["tool_axis"] = {m.toolAxis.x(), m.toolAxis.y(), m.toolAxis.z()};
+    json axes = json::array();
+    for (const RotaryAxis& a : m.rotaryAxes) axes.push_back(rotaryAxisJson(a));
+    root["rotary_axes"] = axes;
+  }
   return root.dump(2);
 }
 

@@ -18,6 +18,21 @@ enum class ControllerKind {
   Grbl,         // trapezoidal; junction deviation; arcs cut into chords
 };
 
+// A rotary axis of a 4- or 5-axis machine. Positions in degrees, as programmed; limits in deg/s, deg/s², deg/s³
+// (files hold deg/min, deg/s², deg/s³: the units of machine data sheets).
+struct RotaryAxis {
+  char name = 'C';                                       // A, B or C
+  bool onTable = true;                                   // carried by the table (turns the workpiece) or the head
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // at zero angles, machine frame; positive turns right-handed
+  // A point of the axis at zero angles: on the table, in machine coordinates (the workpiece frame is the machine
+  // frame at zero angles); on the head, from the tool tip (a fork head's pivot length is the Z of this point).
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+  double maxVelocity = 360.0, maxAcceleration = 720.0, maxJerk = 7200.0, rapidVelocity = 360.0;
+  double minPosition = -360.0, maxPosition = 360.0;      // deg, travel
+  bool continuous = false;                               // no travel limits (a C table that turns for ever)
+  bool limitsTravel() const { return !continuous; }
+};
+
 struct MachineModel {
   std::string name, description;
   ControllerKind controller = ControllerKind::Siemens840D;
@@ -33,11 +48,24 @@ struct MachineModel {
   bool jerkLimitedByDefault = true;   // 840D: SOFT at start-up
   double arcTolerance = 0.002;        // mm: grbl cuts arcs into chords within this
   double compressorPathLimit = 20.0;  // mm: 840D compressor, MD20170 COMPRESS_BLOCK_PATH_LIMIT (merging.hpp)
+  // Rotary axes in the order of the kinematic chain: the table's from the bed outwards, then the head's from the
+  // ram to the spindle; none for a 3-axis machine, one for a 4-axis, two for a 5-axis. The tool points along
+  // `toolAxis` (tip to spindle, machine frame) at zero angles.
+  std::vector<RotaryAxis> rotaryAxes;
+  Eigen::Vector3d toolAxis = Eigen::Vector3d::UnitZ();
+
+  bool hasRotaryAxes() const { return !rotaryAxes.empty(); }
+  // "table-table", "head-table", "head-head", "table" or "head" (4 axes), "" (3 axes).
+  std::string kinematicsName() const;
+  // Index in rotaryAxes of the axis named A, B or C; −1 when the machine has none.
+  int rotaryIndex(char name) const;
 };
 
 // Checks every limit of a model (positive, finite, in a range a machine can have): InputError names the
 // field and its unit. The simulator checks the model it is given, since Python may set fields directly.
 void checkMachine(const MachineModel& machine);
+// The rotary axes' part of checkMachine: at most two, not parallel, table axes before head axes, limits in range.
+void checkRotaryAxes(const MachineModel& machine);
 
 // Reads a machine model from JSON text; InputError names the missing or bad key and the file.
 MachineModel machineFromJson(const std::string& text, const std::string& origin = "machine file");
