@@ -3,7 +3,8 @@
 // Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21 (840D G70 G71
 // G700 G710), G90 G91,
 // G90.1 G91.1, G9 G60 G61 G61.1 G64 [P [Q]] G641 G642 G643 G644 G645, SOFT BRISK, CYCLE832(tolerance…),
-// COMPCAD COMPCURV COMPSURF COMPOF,
+// COMPCAD COMPCURV COMPSURF COMPOF, rotary axes A B C (A=…), G93/G94 (inverse time), 840D TRAORI TRAFOOF,
+// orientation vectors A3= B3= C3= (a zero vector is an error), ORIWKS ORIMKS ORIAXES ORIVECT,
 // F S T D H M N, comments in ( ) and after ;, block delete /, % lines. Words that change nothing the
 // simulation sees (G40, G43, G54…, G80, G94, M3, COMPCAD, FFWON…) are accepted. Anything else is an
 // unknown word: skipped and counted, or refused, by option. A malformed line throws ParseError naming the
@@ -70,6 +71,15 @@ struct Block {
                                                       // group, see merging.hpp); 0: the block's own length
   int jerkLimited = -1;                               // 1 SOFT, 0 BRISK, −1 the machine's default
   long line = 0;                                      // source line number, 1-based
+  // Rotary axes (4- and 5-axis programs, five_axis_motion.hpp): A B C at both ends, deg, as programmed, or the
+  // tool-axis vector at both ends (840D A3 B3 C3); tool tip programmed (840D TRAORI) or machine axes.
+  Eigen::Vector3d rotaryStart = Eigen::Vector3d::Zero(), rotaryEnd = Eigen::Vector3d::Zero();
+  Eigen::Vector3d orientationStart = Eigen::Vector3d::Zero(), orientationEnd = Eigen::Vector3d::Zero();
+  bool rotary = false;             // the program has rotary words or orientation vectors up to this block
+  bool orientationVectors = false; // orientation from A3 B3 C3: interpolated on the great circle (ORIWKS)
+  bool orientationByAxes = false;  // ORIMKS / ORIAXES: the rotary axes interpolate linearly
+  bool toolTip = false;            // 840D TRAORI on: X Y Z are the tool tip in the workpiece frame
+  bool inverseTime = false;        // G93: `feed` is 1 / the block's time, in 1/s
 
   bool isArc() const { return motion == Motion::ArcClockwise || motion == Motion::ArcCounterClockwise; }
   double length() const;

@@ -51,6 +51,7 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
         words.offset[a] = w.value;
         break;
       }
+      case 'A': case 'B': case 'C': rotaryWord(w.letter - 'A', w.value, w.text, words); break;
       case 'F': words.fWord = w.value; words.hasFeed = true; break;
       case 'R': words.radiusWord = w.value; words.hasRadius = true; break;
       case 'P': words.pWord = w.value; words.hasP = true; break;
@@ -68,7 +69,8 @@ void Interpreter::applyModes(const LineWords& w) {
   if (w.hasFeed && !w.dwell) {
     if (w.fWord <= 0.0 || !std::isfinite(w.fWord))
       throw ParseError(lineNumber_, "feed rate F" + std::to_string(w.fWord) + " must be positive");
-    feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
+    // G93: F is the inverse of the block's time in minutes, given on every feed move.
+    if (!inverseTime_) feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
   }
   if (w.dwell) {
     const double seconds = w.pWord >= 0.0 ? w.pWord : w.hasFeed ? w.fWord : -1.0;  // LinuxCNC G4 P, Siemens G4 F
@@ -92,13 +94,20 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   if ((w.newMotion == 2 || w.newMotion == 3) && !w.anyAxis() && !w.anyOffset() && !w.hasRadius)
     throw ParseError(lineNumber_, "G" + std::to_string(w.newMotion) + " without an end point or a centre: an arc "
                                   "needs X/Y/Z and I/J/K (or R); the line moves nothing");
-  if (!w.anyAxis() && !(w.anyOffset() && (motion_ == 2 || motion_ == 3))) return false;
+  const bool turns = w.anyRotary() || w.anyVector();
+  if (!w.anyAxis() && !turns && !(w.anyOffset() && (motion_ == 2 || motion_ == 3))) return false;
   if (w.dwell) return false;
   if (motion_ < 0) throw ParseError(lineNumber_, "coordinates before any motion mode: start with G0 or G1");
 
   Eigen::Vector3d target = position_;
   for (int a = 0; a < 3; ++a)
     if (w.hasAxis[a]) target[a] = absolute_ ? w.axis[a] * unit_ : position_[a] + w.axis[a] * unit_;
+  Eigen::Vector3d rotaryTarget = rotary_;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasRotary[a]) rotaryTarget[a] = absolute_ ? w.rotary[a] : rotary_[a] + w.rotary[a];
+  const Eigen::Vector3d orientationTarget = w.anyVector() ? this->orientationTarget(w) : orientation_;
+  if (w.anyVector() && w.anyRotary())
+    throw ParseError(lineNumber_, "rotary axes and an orientation vector on one line: give the orientation one way");
 
   block = Block{};
   block.start = position_;
@@ -109,19 +118,39 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   block.mergeTolerance = pathMode_ == PathMode::Rounding ? mergeTolerance_ : 0.0;
   block.compressor = compressor_;
   block.jerkLimited = jerkLimited_;
+  rotarySeen_ = rotarySeen_ || turns;
+  block.rotary = rotarySeen_;
+  if (rotarySeen_) {
+    block.rotaryStart = rotary_;
+    block.rotaryEnd = rotaryTarget;
+    block.orientationStart = orientation_;
+    block.orientationEnd = orientationTarget;
+    block.orientationVectors = w.anyVector();
+    block.orientationByAxes = orientationByAxes_;
+    block.toolTip = toolTip_;
+  }
   if (motion_ == 0) {
     block.motion = Motion::Rapid;
+  } else if (inverseTime_) {
+    if (!w.hasFeed)
+      throw ParseError(lineNumber_, "G93 (inverse time) needs F on every feed move: F is 1 / the block's minutes");
+    block.inverseTime = true;
+    block.feed = w.fWord / 60.0;
+    block.motion = motion_ == 1 ? Motion::Linear : motion_ == 2 ? Motion::ArcClockwise : Motion::ArcCounterClockwise;
   } else {
     if (feed_ <= 0.0) throw ParseError(lineNumber_, "no feed rate: program F before the first G1/G2/G3 move");
     block.feed = feed_;
     block.motion = motion_ == 1 ? Motion::Linear : motion_ == 2 ? Motion::ArcClockwise : Motion::ArcCounterClockwise;
   }
+  const bool turned = (rotaryTarget - rotary_).squaredNorm() > 0.0 || (orientationTarget - orientation_).squaredNorm() > 0.0;
   if (block.isArc()) {
     arc(block, w);
-  } else if ((target - position_).squaredNorm() == 0.0) {
+  } else if ((target - position_).squaredNorm() == 0.0 && !turned) {
     return false;  // a move to where the tool already is
   }
   position_ = target;
+  rotary_ = rotaryTarget;
+  orientation_ = orientationTarget;
   ++stats_.motionBlocks;
   return true;
 }
@@ -161,8 +190,10 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
       break;
     // Accepted without effect on the simulated motion: cutter and length compensation, work offsets,
     // canned-cycle cancel, feed per minute, exact-stop windows, return modes, machine coordinates.
+    case 930: inverseTime_ = true; break;
+    case 940: inverseTime_ = false; break;
     case 400: case 410: case 420: case 430: case 431: case 490: case 530: case 540: case 550: case 560:
-    case 570: case 580: case 590: case 800: case 940: case 980: case 990: case 6010: case 6020: case 6030:
+    case 570: case 580: case 590: case 800: case 980: case 990: case 6010: case 6020: case 6030:
     case 150: case 160: case 5000: case 5010:
       break;
     default: unknown(w.text);
@@ -195,17 +226,51 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     // operator messages
   } else if (name == "CYCLE832" && k.call) {
     cycle832(k.arguments);
+  } else if ((name == "A" || name == "B" || name == "C") && k.hasValue) {
+    rotaryWord(name[0] - 'A', k.value, name, words);
+  } else if ((name == "A3" || name == "B3" || name == "C3") && k.hasValue) {
+    const int a = name[0] - 'A';
+    if (words.hasVector[a]) throw ParseError(lineNumber_, std::string(name) + " given twice");
+    words.hasVector[a] = true;
+    words.vector[a] = k.value;
+  } else if (name == "A3" || name == "B3" || name == "C3") {
+    throw ParseError(lineNumber_, std::string(name) + "= needs a number: an orientation vector's component");
+  } else if (name == "TRAORI") {
+    toolTip_ = true;
+  } else if (name == "TRAFOOF") {
+    toolTip_ = false;
+  } else if (name == "ORIMKS" || name == "ORIAXES") {
+    orientationByAxes_ = true;
+  } else if (name == "ORIWKS" || name == "ORIVECT") {
+    orientationByAxes_ = false;
   } else if (name == "COMPCAD" || name == "COMPCURV" || name == "COMPSURF") {
     compressor_ = true;
   } else if (name == "COMPOF") {
     compressor_ = false;
   } else if (name == "COMPON" || name == "FFWON" ||
-             name == "FFWOF" || name == "TRAFOOF" || name == "UPATH" || name == "SPATH" ||
+             name == "FFWOF" || name == "UPATH" || name == "SPATH" ||
              name == "DYNNORM" || name == "DYNFINISH" || name == "DYNSEMIFIN" || name == "DYNROUGH") {
     // compressor, feed-forward, dynamic-response groups: no effect on this model
   } else {
     unknown(name);
   }
+}
+
+void Interpreter::rotaryWord(int axis, double value, std::string_view text, LineWords& words) {
+  if (words.hasRotary[axis]) throw ParseError(lineNumber_, "rotary axis " + std::string(text.substr(0, 1)) + " given twice");
+  words.hasRotary[axis] = true;
+  words.rotary[axis] = value;  // degrees: G20/G21 do not scale angles
+}
+
+Eigen::Vector3d Interpreter::orientationTarget(const LineWords& w) const {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();  // as on the 840D: a component not written is 0
+  for (int a = 0; a < 3; ++a)
+    if (w.hasVector[a]) v[a] = w.vector[a];
+  const double n = v.norm();
+  if (!(n > 1e-9))
+    throw ParseError(lineNumber_, "orientation vector A3 B3 C3 = (" + number(v.x()) + ", " + number(v.y()) + ", " +
+                                      number(v.z()) + ") has no length: give the tool axis's direction");
+  return v / n;
 }
 
 void Interpreter::cycle832(std::string_view arguments) {

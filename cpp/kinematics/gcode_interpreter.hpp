@@ -18,8 +18,12 @@ struct LineWords {
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
   double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0;
   bool hasRadius = false, hasFeed = false, hasP = false, hasQ = false;
+  bool hasRotary[3] = {false, false, false}, hasVector[3] = {false, false, false};
+  double rotary[3] = {0, 0, 0}, vector[3] = {0, 0, 0};  // A B C (deg), A3 B3 C3
 
   bool anyAxis() const { return hasAxis[0] || hasAxis[1] || hasAxis[2]; }
+  bool anyRotary() const { return hasRotary[0] || hasRotary[1] || hasRotary[2]; }
+  bool anyVector() const { return hasVector[0] || hasVector[1] || hasVector[2]; }
   bool anyOffset() const { return hasOffset[0] || hasOffset[1] || hasOffset[2]; }
 };
 
@@ -48,6 +52,9 @@ private:
   // within it, SOFT and the compressor; no argument (or 0) deselects it (G64, BRISK).
   void cycle832(std::string_view arguments);
   void arc(Block& block, const LineWords& words);
+  void rotaryWord(int axis, double value, std::string_view text, LineWords& words);
+  // The orientation at the end of the line (A3 B3 C3, a component not given is 0), unit; throws on zero length.
+  Eigen::Vector3d orientationTarget(const LineWords& words) const;
 
   ReaderOptions options_;
   ReaderStats stats_;
@@ -67,6 +74,9 @@ private:
   double mergeTolerance_ = 0.0;     // LinuxCNC G64 Q (naive CAM)
   bool compressor_ = false;         // 840D COMPCAD/COMPCURV/COMPSURF
   int jerkLimited_ = -1;
+  Eigen::Vector3d rotary_ = Eigen::Vector3d::Zero();       // A B C, deg
+  Eigen::Vector3d orientation_ = Eigen::Vector3d::Zero();  // last A3 B3 C3 (unit), zero before any
+  bool rotarySeen_ = false, toolTip_ = false, orientationByAxes_ = false, inverseTime_ = false;
 };
 
 }  // namespace hsm::kinematics::detail

@@ -234,6 +234,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
     if (m.toolAxis.norm() < 1e-9) bad(origin, "\"tool_axis\" must not be zero");
     m.toolAxis.normalize();
   }
+  m.toolTipProgrammed = m.hasRotaryAxes() && root.value("tool_tip_programmed", m.controller == ControllerKind::LinuxCNC);
   if (root.contains("kinematics")) {
     const std::string said = root["kinematics"].is_string() ? root["kinematics"].get<std::string>() : "?";
     if (said != m.kinematicsName())
@@ -269,6 +270,7 @@ std::string machineToJson(const MachineModel& m) {
   if (m.hasRotaryAxes()) {
     root["kinematics"] = m.kinematicsName();
     root["tool_axis"] = {m.toolAxis.x(), m.toolAxis.y(), m.toolAxis.z()};
+    root["tool_tip_programmed"] = m.toolTipProgrammed;
     json axes = json::array();
     for (const RotaryAxis& a : m.rotaryAxes) axes.push_back(rotaryAxisJson(a));
     root["rotary_axes"] = axes;

@@ -53,6 +53,9 @@ struct MachineModel {
   // `toolAxis` (tip to spindle, machine frame) at zero angles.
   std::vector<RotaryAxis> rotaryAxes;
   Eigen::Vector3d toolAxis = Eigen::Vector3d::UnitZ();
+  // X Y Z of the program are the tool tip in the workpiece frame without a word saying so (LinuxCNC with TCP
+  // kinematics such as xyzac-trt-kins); the 840D's programs switch it with TRAORI / TRAFOOF.
+  bool toolTipProgrammed = false;
 
   bool hasRotaryAxes() const { return !rotaryAxes.empty(); }
   // "table-table", "head-table", "head-head", "table" or "head" (4 axes), "" (3 axes).

@@ -36,6 +36,10 @@ bool BlockMerger::linuxCncLinkable(const Block& block) const {
 }
 
 void BlockMerger::add(const Block& block) {
+  if (block.rotary) {  // 5-axis blocks are not merged: the rotary axes' moves would be lost (not modelled)
+    flush();
+    return out_(block);
+  }
   const bool linuxcnc = machine_.controller == ControllerKind::LinuxCNC;
   if (linuxcnc) {
     const bool mergeable = block.motion == Motion::Linear && block.mergeTolerance > 0.0;

@@ -33,14 +33,74 @@ Planner::Planner(const MachineModel& machine, Commit commit) : machine_(machine)
   if (machine.lookAheadBlocks < 2)
     throw InputError("look_ahead_blocks = " + std::to_string(machine.lookAheadBlocks) + ": the planner needs 2 or more");
   ring_.resize(static_cast<size_t>(machine.lookAheadBlocks));
+  jointVelocity_ << machine.maxVelocity, kInfinity, kInfinity;
+  jointRapid_ << machine.rapidVelocity, kInfinity, kInfinity;
+  jointAcceleration_ << machine.maxAcceleration, kInfinity, kInfinity;
+  jointJerk_ << machine.maxJerk, kInfinity, kInfinity;
+  for (size_t i = 0; i < machine.rotaryAxes.size(); ++i) {
+    const RotaryAxis& a = machine.rotaryAxes[i];
+    jointVelocity_[3 + i] = a.maxVelocity;
+    jointRapid_[3 + i] = a.rapidVelocity;
+    jointAcceleration_[3 + i] = a.maxAcceleration;
+    jointJerk_[3 + i] = a.maxJerk;
+  }
 }
 
-Segment Planner::prepare(const Block& block, long source) const {
+namespace {
+// The most an axis allows along the path: min over axes of limit / |rate| (the index of that axis in `which`).
+double projected(const JointVector& limits, const JointVector& rate, int& which) {
+  double best = kInfinity;
+  which = -1;
+  for (int i = 0; i < 5; ++i) {
+    const double r = std::abs(rate[i]);
+    if (r > 1e-12 && limits[i] / r < best) {
+      best = limits[i] / r;
+      which = i;
+    }
+  }
+  return best;
+}
+
+SpeedLimit axisLimit(const MachineModel& m, int joint) {
+  if (joint < 3) return static_cast<SpeedLimit>(static_cast<int>(SpeedLimit::X) + joint);
+  return static_cast<SpeedLimit>(static_cast<int>(SpeedLimit::A) + (m.rotaryAxes[joint - 3].name - 'A'));
+}
+}  // namespace
+
+SpeedLimit Planner::slowestAxis(const JointVector& limits, const Eigen::Vector3d& tangent) const {
+  int which = -1;
+  JointVector direction;
+  direction << tangent, 0.0, 0.0;
+  projected(limits, direction, which);
+  return which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
+}
+
+void Planner::jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
+                          double& curvatureLimit) const {
+  int which = -1, ignored = -1;
+  s.dynamics.acceleration = projected(jointAcceleration_, joint.rate, which);
+  s.accelerationLimit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
+  s.dynamics.jerk = projected(jointJerk_, joint.rate, ignored);
+  velocity = projected(jointVelocity_, joint.rate, which);
+  rapidVelocity = projected(jointRapid_, joint.rate, ignored);
+  s.limit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
+  // Where an axis's rate changes along the path, at speed v it needs curvature·v² of acceleration.
+  for (int i = 0; i < 5; ++i)
+    if (joint.curvature[i] > 1e-12) {
+      const double v = std::sqrt(jointAcceleration_[i] / joint.curvature[i]);
+      if (v < curvatureLimit) {
+        curvatureLimit = v;
+        if (v < velocity) s.limit = axisLimit(machine_, i);
+      }
+    }
+}
+
+Segment Planner::prepare(const Block& block, long source, const JointMotion* joint) const {
   const MachineModel& m = machine_;
   Segment s;
   s.block = block;
   s.source = source;
-  s.length = block.length();
+  s.length = joint ? joint->pathLength : block.length();
   s.startTangent = block.tangent(false);
   s.endTangent = block.tangent(true);
   const bool linuxcnc = m.controller == ControllerKind::LinuxCNC;
@@ -49,7 +109,13 @@ Segment Planner::prepare(const Block& block, long source) const {
                            (block.jerkLimited >= 0 ? block.jerkLimited == 1 : m.jerkLimitedByDefault);
 
   double velocity, rapidVelocity, curvatureLimit = kInfinity;
-  if (block.isArc()) {
+  if (joint) {
+    s.joint = *joint;
+    // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
+    const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
+    if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+    jointLimits(s, *joint, velocity, rapidVelocity, curvatureLimit);
+  } else if (block.isArc()) {
     // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
     const Eigen::Vector3d inPlane = Eigen::Vector3d::Ones() - block.normal.cwiseAbs();
     const double along = std::abs(block.normal.dot(block.end - block.start)) / std::max(s.length, 1e-12);
@@ -85,14 +151,62 @@ Segment Planner::prepare(const Block& block, long source) const {
   }
   s.programmed = rapid ? rapidVelocity : block.feed;
   s.cruise = std::min({s.programmed, velocity, curvatureLimit});
+  if (s.cruise >= s.programmed) {
+    s.limit = SpeedLimit::Feed;
+  } else if (s.cruise == curvatureLimit && !joint) {
+    s.limit = SpeedLimit::Curvature;
+  } else if (!joint) {  // the slowest axis along the block's start tangent
+    s.limit = slowestAxis(rapid ? jointRapid_ : jointVelocity_, s.startTangent);
+  }
+  if (!joint) s.accelerationLimit = slowestAxis(jointAcceleration_, s.startTangent);
   // Block-processing limit: a block lasts at least one interpolation cycle (an 840D compressed group: the
   // group does).
   const double rateLength = block.rateLength > 0.0 ? block.rateLength : s.length;
-  if (m.interpolationCycle > 0.0) s.cruise = std::min(s.cruise, rateLength / m.interpolationCycle);
+  if (m.interpolationCycle > 0.0 && rateLength / m.interpolationCycle < s.cruise) {
+    s.cruise = rateLength / m.interpolationCycle;
+    s.limit = SpeedLimit::BlockRate;
+  }
   return s;
 }
 
 Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
+  return before.joint.active || after.joint.active ? jointJunction(before, after) : tipJunction(before, after);
+}
+
+// Between pieces of one block the axes' rates change smoothly (their curvature bounds the cruise); between
+// blocks the tool tip's corner is the 3-axis rule, and each rotary axis may change its velocity by what its
+// acceleration gives in one interpolation cycle (all axes when the tip does not move).
+Planner::Junction Planner::jointJunction(const Segment& before, const Segment& after) const {
+  const double limit = std::min(before.cruise, after.cruise);
+  Junction j;
+  if (before.source == after.source) {
+    j.speed = limit;
+    return j;
+  }
+  // The feed changes its meaning (mm/min of the path, deg/min of the rotary axes): the controller stops.
+  if (before.block.pathMode == PathMode::ExactStop || before.joint.rotaryOnly != after.joint.rotaryOnly) return j;
+  auto tipLength = [](const Segment& s) { return s.joint.active ? s.joint.tipLength : s.length; };
+  auto rate = [](const Segment& s) {
+    if (s.joint.active) return s.joint.rate;
+    JointVector r = JointVector::Zero();
+    r.head<3>() = s.startTangent;
+    return r;
+  };
+  const bool tipMoves = tipLength(before) > 1e-9 && tipLength(after) > 1e-9;
+  if (tipMoves) {
+    j = tipJunction(before, after);
+    j.trim = j.arcLength = 0.0;  // no LinuxCNC blend arc between 5-axis blocks (not modelled)
+  } else {
+    j.speed = limit;
+  }
+  const double cycle = machine_.interpolationCycle > 0.0 ? machine_.interpolationCycle : 1e-3;
+  const JointVector change = rate(after) - rate(before);
+  for (int i = tipMoves ? 3 : 0; i < 5; ++i)
+    if (std::abs(change[i]) > 1e-12) j.speed = std::min(j.speed, jointAcceleration_[i] * cycle / std::abs(change[i]));
+  return j;
+}
+
+Planner::Junction Planner::tipJunction(const Segment& before, const Segment& after) const {
   const MachineModel& m = machine_;
   const double limit = std::min(before.cruise, after.cruise);
   const bool grbl = m.controller == ControllerKind::Grbl;
@@ -209,8 +323,8 @@ void Planner::linuxCncExactStop(Segment& before, Segment& after) const {
   before.restAfter = machine_.interpolationCycle;
 }
 
-void Planner::add(const Block& block, long source) {
-  Segment segment = prepare(block, source);
+void Planner::add(const Block& block, long source, const JointMotion* joint) {
+  Segment segment = prepare(block, source, joint);
   if (!(segment.length > 0.0) || !(segment.cruise > 0.0)) return;  // nothing to move
   // A block waits here until its successor is known: the junction between them may lower both cruises.
   if (havePending_) {

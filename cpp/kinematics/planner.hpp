@@ -8,6 +8,7 @@
 // start and the end); the motion between two pinned junctions is timed as one run (runs.hpp).
 #pragma once
 
+#include "kinematics/five_axis_motion.hpp"
 #include "kinematics/gcode.hpp"
 #include "kinematics/machine.hpp"
 #include "kinematics/profile.hpp"
@@ -34,6 +35,9 @@ struct Segment {
   bool parabolic = false;   // LinuxCNC: a parabolic blend at one of its ends halved its acceleration
   double restAfter = 0.0;   // s at rest after the block (LinuxCNC: a servo cycle at each exact stop)
   Eigen::Vector3d startTangent, endTangent;
+  JointMotion joint;                     // 4- and 5-axis blocks: how the machine's axes move along it
+  SpeedLimit limit = SpeedLimit::Feed;   // what sets `cruise`
+  SpeedLimit accelerationLimit = SpeedLimit::X;  // the axis whose acceleration bounds the block's
 };
 
 // A corner of deflection φ in the half-angle terms its blends need, from cos φ alone (no acos, cos, tan:
@@ -55,7 +59,7 @@ public:
   using Commit = std::function<void(const Segment&, double entry, double exit, bool pinnedExit)>;
   Planner(const MachineModel& machine, Commit commit);
 
-  void add(const Block& block, long source);
+  void add(const Block& block, long source, const JointMotion* joint = nullptr);
   void finish();  // the machine stops at the end of the last block
 
 private:
@@ -69,8 +73,14 @@ private:
     double kinkShare = 0.0;  // LinuxCNC tangent kink: the share of acceleration both blocks give up for it
     bool parabolic = false;  // LinuxCNC: no arc could be made; a parabolic blend halves both accelerations
   };
-  Segment prepare(const Block& block, long source) const;
+  Segment prepare(const Block& block, long source, const JointMotion* joint) const;
+  // Limits of a piece of a 4- or 5-axis block from each axis's rate along the path (five_axis_motion.hpp).
+  void jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
+                   double& curvatureLimit) const;
+  SpeedLimit slowestAxis(const JointVector& limits, const Eigen::Vector3d& tangent) const;
   Junction junction(const Segment& before, const Segment& after) const;
+  Junction tipJunction(const Segment& before, const Segment& after) const;
+  Junction jointJunction(const Segment& before, const Segment& after) const;
   double linuxCncKink(const Segment& before, const Segment& after, double v) const;
   void linuxCncExactStop(Segment& before, Segment& after) const;
   double linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
@@ -82,6 +92,7 @@ private:
   Segment& at(size_t i) { return ring_[(head_ + i) % ring_.size()]; }
 
   const MachineModel& machine_;
+  JointVector jointVelocity_, jointRapid_, jointAcceleration_, jointJerk_;  // X Y Z and the rotary axes
   Commit commit_;
   std::vector<Segment> ring_;
   size_t head_ = 0, count_ = 0;

@@ -37,7 +37,10 @@ public:
 
   void commit(const detail::Segment& s, const detail::BlockTiming& p) {
     if (s.source != currentSource_) flush();
+    const bool cruised = p.peak >= 0.95 * s.cruise;
+    const int label = static_cast<int>(cruised ? s.limit : s.accelerationLimit);
     if (!open_) {
+      limitTimes_.fill(0.0);
       open_ = true;
       currentSource_ = s.source;
       current_ = BlockResult{};
@@ -51,10 +54,24 @@ public:
       current_.entryFeed = p.entry;
       current_.minFeed = p.min;
       current_.startTime = clock_;
+      if (s.joint.active) {
+        current_.machineStart = s.joint.start.head<3>();
+        current_.rotaryStart = s.joint.start.tail<2>();
+      } else {
+        current_.machineStart = s.block.start;
+      }
       naive_ = 0.0;
     }
+    limitTimes_[label] += p.time;
+    result_.summary.limitTime[label] += p.time;
     current_.end = s.block.end;
-    current_.length += s.length;
+    if (s.joint.active) {
+      current_.machineEnd = s.joint.end.head<3>();
+      current_.rotaryEnd = s.joint.end.tail<2>();
+    } else {
+      current_.machineEnd = s.block.end;
+    }
+    current_.length += s.joint.active ? s.joint.tipLength : s.length;
     current_.exitFeed = p.exit;
     current_.peakFeed = std::max(current_.peakFeed, p.peak);
     current_.minFeed = std::min(current_.minFeed, p.min);
@@ -71,6 +88,7 @@ public:
       throw ComputationError("line " + std::to_string(b.line) + ": the simulated time of the block is not a finite "
                              "number (length " + mm(b.length) + "); check its coordinates and the machine's limits");
     b.meanFeed = b.time > 0.0 ? b.length / b.time : 0.0;
+    b.limit = static_cast<SpeedLimit>(std::max_element(limitTimes_.begin(), limitTimes_.end()) - limitTimes_.begin());
     SimulationSummary& sum = result_.summary;
     ++sum.blockCount;
     sum.totalTime += b.time;
@@ -84,7 +102,7 @@ public:
       sum.cuttingTime += b.time;
       sum.cuttingLength += b.length;
       sum.naiveCuttingTime += naive_;
-      const int k = feedClass(b.meanFeed / b.programmedFeed);
+      const int k = feedClass(b.programmedFeed > 0.0 ? b.meanFeed / b.programmedFeed : 0.0);
       sum.feedClasses.blocks[k] += 1.0;
       sum.feedClasses.length[k] += b.length;
       sum.feedClasses.time[k] += b.time;
@@ -128,14 +146,27 @@ private:
   const SimulationOptions& options_;
   SimulationResult& result_;
   BlockResult current_;
+  std::array<double, kSpeedLimitCount> limitTimes_{};
   bool open_ = false;
   long currentSource_ = -1;
   double clock_ = 0.0, naive_ = 0.0;
 };
 
-// grbl executes arcs as chords within its arc tolerance; the other controllers interpolate them.
+// grbl executes arcs as chords within its arc tolerance; the other controllers interpolate them. Blocks of
+// 4- and 5-axis programs go to the planner in pieces with their axes' motion (five_axis_motion.hpp).
 template <class Sink>
-void feed(detail::Planner& planner, const MachineModel& machine, const Block& block, long source, Sink&&) {
+void feed(detail::Planner& planner, const MachineModel& machine, const Block& block, long source,
+          FiveAxisCutter& cutter, Sink&&) {
+  if (block.rotary) {
+    cutter.cut(block, [&](const Block& piece, const JointMotion& joint) { planner.add(piece, source, &joint); });
+    return;
+  }
+  if (block.inverseTime) {  // G93 on a 3-axis block: the block lasts 1/F
+    Block timed = block;
+    timed.feed = block.length() * block.feed;
+    timed.inverseTime = false;
+    return feed(planner, machine, timed, source, cutter, 0);
+  }
   if (machine.controller != ControllerKind::Grbl || !block.isArc()) {
     planner.add(block, source);
     return;
@@ -172,7 +203,8 @@ SimulationResult run(const MachineModel& machine, const SimulationOptions& optio
     runs.add(s, entry, exit, pinned);
   });
   long source = 0;
-  BlockMerger merger(machine, [&](const Block& b) { feed(planner, machine, b, source++, 0); });
+  FiveAxisCutter cutter(machine);
+  BlockMerger merger(machine, [&](const Block& b) { feed(planner, machine, b, source++, cutter, 0); });
   Block block;
   while (next(block)) merger.add(block);
   merger.finish();

@@ -9,6 +9,7 @@
 // results or a trace are asked for.
 #pragma once
 
+#include "kinematics/five_axis_motion.hpp"
 #include "kinematics/gcode.hpp"
 #include "kinematics/machine.hpp"
 #include "kinematics/profile.hpp"
@@ -31,6 +32,11 @@ struct BlockResult {
   double entryFeed = 0.0, exitFeed = 0.0, peakFeed = 0.0;  // mm/s
   double minFeed = 0.0, meanFeed = 0.0;                    // mm/s; mean = length / time
   double startTime = 0.0, time = 0.0;                      // s
+  // What held the speed down for most of the block's time (SpeedLimit: the feed, an axis, curvature, block rate).
+  SpeedLimit limit = SpeedLimit::Feed;
+  // 4- and 5-axis machines: the rotary axes (chain order, deg) and X Y Z of the machine at both ends.
+  Eigen::Vector2d rotaryStart = Eigen::Vector2d::Zero(), rotaryEnd = Eigen::Vector2d::Zero();
+  Eigen::Vector3d machineStart = Eigen::Vector3d::Zero(), machineEnd = Eigen::Vector3d::Zero();
 };
 
 // The paper's five classes of reached feed against programmed feed: < 0.3, 0.3–0.5, 0.5–0.7, 0.7–0.9, ≥ 0.9.
@@ -51,6 +57,9 @@ struct SimulationSummary {
   FeedClasses feedClasses;
   std::array<long, kLengthClassEdges.size() + 1> lengthClasses{};  // cutting blocks per length class
   ReaderStats reader;
+  // Seconds during which each SpeedLimit held the speed (a piece that cruises: what set its cruise; one that
+  // never reaches it: the axis whose acceleration bounds it). Indexed by SpeedLimit.
+  std::array<double, kSpeedLimitCount> limitTime{};
 
   // Simulated time over the length/feed estimate of CAM systems (0 for an empty program).
   double timeOverNaive() const { return naiveTime > 0.0 ? totalTime / naiveTime : 0.0; }

@@ -97,7 +97,7 @@ TEST(Gcode, LinuxCncPathModes) {
 }
 
 TEST(Gcode, UnknownWordsAreCountedOrRefused) {
-  std::istringstream stream("G1 X1 F100 A5\nG28\nFOO\nG1 X2 E0.5\nTRANS X10\nG1 X3\n");
+  std::istringstream stream("G1 X1 F100 U5\nG28\nFOO\nG1 X2 E0.5\nTRANS X10\nG1 X3\n");
   GcodeReader reader(stream);
   Block b;
   int moves = 0;
@@ -107,7 +107,7 @@ TEST(Gcode, UnknownWordsAreCountedOrRefused) {
   EXPECT_EQ(reader.stats().unknownWordCounts.at("G28"), 1);
   ReaderOptions strict;
   strict.refuseUnknownWords = true;
-  EXPECT_EQ(errorOf("G1 X1 F100\nG1 X2 A5\n", strict).rfind("line 2: 'A5' is not understood", 0), 0u);
+  EXPECT_EQ(errorOf("G1 X1 F100\nG1 X2 U5\n", strict).rfind("line 2: 'U5' is not understood", 0), 0u);
 }
 
 TEST(Gcode, MalformedLinesNameTheirLine) {

@@ -1,0 +1,171 @@
+#include "kinematics/five_axis_motion.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hsm::kinematics {
+
+namespace {
+constexpr double kDegreesPerPiece = 1.0;  // rotary motion per piece: the rates' change within one stays small
+constexpr double kArcDegreesPerPiece = 5.0;
+
+// The unit vector a fraction t of the way from a to b on their great circle.
+Eigen::Vector3d slerp(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double t) {
+  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  if (angle < 1e-12) return a;
+  const double s = std::sin(angle);
+  if (s < 1e-9) {  // opposite vectors: the great circle is not defined; turn about any normal to a
+    Eigen::Vector3d n = a.unitOrthogonal();
+    return Eigen::AngleAxisd(t * angle, n) * a;
+  }
+  return (std::sin((1.0 - t) * angle) * a + std::sin(t * angle) * b) / s;
+}
+
+double degreesBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
+}
+}  // namespace
+
+const char* speedLimitName(SpeedLimit limit) {
+  static const char* names[kSpeedLimitCount] = {"F", "X", "Y", "Z", "A", "B", "C", "curvature", "block rate"};
+  return names[static_cast<int>(limit)];
+}
+
+JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda, bool& singular) {
+  const MachineModel& m = machine_;
+  const Eigen::Vector3d point = b.isArc() ? b.pointAt(lambda * b.length()) : b.start + lambda * (b.end - b.start);
+  RotaryAngles angles = previous_;
+  if (b.orientationVectors && !b.orientationByAxes) {
+    const Eigen::Vector3d from = b.orientationStart.squaredNorm() > 0.0 ? b.orientationStart : toolAxisAt(m, previous_);
+    const Eigen::Vector3d axis = slerp(from, b.orientationEnd, lambda);
+    ToolPose pose{point, axis};
+    const InverseResult inverse = inverseKinematics(m, pose, previous_);
+    singular = singular || inverse.singular;
+    angles = inverse.position.angles;
+  } else {
+    for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
+      const int k = m.rotaryAxes[i].name - 'A';
+      angles[i] = b.rotaryStart[k] + lambda * (b.rotaryEnd[k] - b.rotaryStart[k]);
+    }
+  }
+  const bool tip = b.toolTip || m.toolTipProgrammed;
+  JointVector q;
+  q.head<3>() = tip ? linearAxesFor(m, point, angles) : point;
+  q[3] = angles[0];
+  q[4] = angles[1];
+  previous_ = angles;
+  return q;
+}
+
+void FiveAxisCutter::sample(const Block& block, const RotaryAngles& startAngles, int& pieces,
+                            std::vector<JointVector>& q, bool& singular) {
+  for (int attempt = 0;; ++attempt) {
+    // Near a singularity the angles swing more than the orientation turns: cut finer until no piece turns
+    // an axis more than 2°, or the bound is reached.
+    previous_ = startAngles;
+    q.assign(1, jointsAt(block, 0.0, singular));
+    double widest = 0.0;
+    for (int i = 1; i <= pieces; ++i) {
+      q.push_back(jointsAt(block, double(i) / pieces, singular));
+      widest = std::max(widest, (q[i].tail<2>() - q[i - 1].tail<2>()).cwiseAbs().maxCoeff());
+    }
+    if (widest <= 2.0 * kDegreesPerPiece || pieces >= kMaxPiecesPerBlock || attempt >= 4) break;
+    pieces = std::min(kMaxPiecesPerBlock, pieces * 4);
+  }
+}
+
+void FiveAxisCutter::cut(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece) {
+  const MachineModel& m = machine_;
+  const std::string where = "line " + std::to_string(block.line) + ": ";
+  for (int k = 0; k < 3; ++k)
+    if ((block.rotaryStart[k] != 0.0 || block.rotaryEnd[k] != 0.0) && m.rotaryIndex(char('A' + k)) < 0)
+      throw InputError(where + "the program turns " + std::string(1, char('A' + k)) + " but machine \"" + m.name +
+                       "\" has no such axis" + (m.hasRotaryAxes() ? " (it has " + m.kinematicsName() + " axes)" : "") +
+                       ": choose the machine the program was posted for");
+  if (block.orientationVectors && !m.hasRotaryAxes())
+    throw InputError(where + "the program gives tool orientations (A3 B3 C3) but machine \"" + m.name +
+                     "\" has no rotary axes: choose a 5-axis machine");
+
+  // Pieces: one per degree of rotary motion (of the orientation for vectors), per 5° of an arc.
+  const RotaryAngles startAngles = previous_;
+  double turn = 0.0;
+  if (block.orientationVectors && !block.orientationByAxes) {
+    const Eigen::Vector3d from = block.orientationStart.squaredNorm() > 0.0 ? block.orientationStart : toolAxisAt(m, previous_);
+    turn = degreesBetween(from, block.orientationEnd);
+  } else {
+    turn = (block.rotaryEnd - block.rotaryStart).cwiseAbs().maxCoeff();
+  }
+  int pieces = static_cast<int>(std::ceil(turn / kDegreesPerPiece));
+  if (block.isArc()) pieces = std::max(pieces, static_cast<int>(std::ceil(std::abs(block.sweep) * 180.0 / M_PI / kArcDegreesPerPiece)));
+  pieces = std::clamp(pieces, 1, kMaxPiecesPerBlock);
+
+  std::vector<JointVector> q;
+  bool singular = false;
+  try {
+    sample(block, startAngles, pieces, q, singular);
+  } catch (const InputError& error) {
+    throw InputError(where + error.what());
+  }
+
+  // The feed's path: the tip (tip programmed) or X Y Z (machine axes); the rotary angle when neither moves.
+  const bool tip = block.toolTip || m.toolTipProgrammed;
+  std::vector<Eigen::Vector3d> points(pieces + 1);
+  for (int i = 0; i <= pieces; ++i) {
+    if (tip) {
+      const double lambda = double(i) / pieces;
+      points[i] = block.isArc() ? block.pointAt(lambda * block.length()) : block.start + lambda * (block.end - block.start);
+    } else {
+      MachinePosition position{q[i].head<3>(), {q[i][3], q[i][4]}};
+      points[i] = forwardKinematics(m, position).tip;
+    }
+  }
+  std::vector<double> ds(pieces), tipLength(pieces);
+  double linear = 0.0;
+  for (int i = 0; i < pieces; ++i) {
+    tipLength[i] = (points[i + 1] - points[i]).norm();
+    ds[i] = tip ? tipLength[i] : (q[i + 1].head<3>() - q[i].head<3>()).norm();
+    linear += ds[i];
+  }
+  const bool rotaryOnly = linear < 1e-6;
+  if (rotaryOnly)
+    for (int i = 0; i < pieces; ++i) ds[i] = (q[i + 1].tail<2>() - q[i].tail<2>()).norm();
+  double total = 0.0;
+  for (double d : ds) total += d;
+
+  std::vector<JointVector> rate(pieces), bend(pieces + 1, JointVector::Zero());
+  for (int i = 0; i < pieces; ++i) rate[i] = ds[i] > 0.0 ? JointVector((q[i + 1] - q[i]) / ds[i]) : JointVector::Zero();
+  for (int i = 1; i < pieces; ++i) {
+    const double span = 0.5 * (ds[i - 1] + ds[i]);
+    if (span > 0.0) bend[i] = (rate[i] - rate[i - 1]) / span;
+  }
+  for (int i = 0; i < pieces; ++i) {
+    if (!(ds[i] > 0.0)) continue;
+    Block b = block;
+    if (b.isArc()) b.motion = Motion::Linear;  // the pieces are chords of the arc
+    b.start = points[i];
+    b.end = points[i + 1];
+    // G93: the whole block lasts 1/F, so its path speed is its length × F.
+    if (block.inverseTime) b.feed = total * block.feed;
+    b.rateLength = total;  // the block-processing limit counts the program's block, not its pieces
+    JointMotion joint;
+    joint.active = true;
+    joint.pathLength = ds[i];
+    joint.tipLength = tipLength[i];
+    joint.rotaryOnly = rotaryOnly;
+    joint.rate = rate[i];
+    joint.curvature = bend[i].cwiseAbs().cwiseMax(bend[i + 1].cwiseAbs());
+    joint.start = q[i];
+    joint.end = q[i + 1];
+    piece(b, joint);
+  }
+  previous_ = {q.back()[3], q.back()[4]};
+  (void)singular;
+}
+
+}  // namespace hsm::kinematics
