@@ -42,17 +42,15 @@ JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda, bool& singul
   const Eigen::Vector3d point = b.isArc() ? b.pointAt(lambda * b.length()) : b.start + lambda * (b.end - b.start);
   RotaryAngles angles = previous_;
   if (b.orientationVectors && !b.orientationByAxes) {
-    const Eigen::Vector3d from = b.orientationStart.squaredNorm() > 0.0 ? b.orientationStart : toolAxisAt(m, previous_);
+    const Eigen::Vector3d& from = orientation_;
     const Eigen::Vector3d axis = slerp(from, b.orientationEnd, lambda);
     ToolPose pose{point, axis};
     const InverseResult inverse = inverseKinematics(m, pose, previous_);
     singular = singular || inverse.singular;
     angles = inverse.position.angles;
-  } else {
-    for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
-      const int k = m.rotaryAxes[i].name - 'A';
-      angles[i] = b.rotaryStart[k] + lambda * (b.rotaryEnd[k] - b.rotaryStart[k]);
-    }
+  } else {  // the rotary axes interpolate linearly
+    for (size_t i = 0; i < m.rotaryAxes.size(); ++i)
+      angles[i] = fromAngles_[i] + lambda * (toAngles_[i] - fromAngles_[i]);
   }
   const bool tip = b.toolTip || m.toolTipProgrammed;
   JointVector q;
@@ -84,7 +82,7 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   const MachineModel& m = machine_;
   const std::string where = "line " + std::to_string(block.line) + ": ";
   for (int k = 0; k < 3; ++k)
-    if ((block.rotaryStart[k] != 0.0 || block.rotaryEnd[k] != 0.0) && m.rotaryIndex(char('A' + k)) < 0)
+    if ((programmed_[k] != 0.0 || block.rotaryEnd[k] != 0.0) && m.rotaryIndex(char('A' + k)) < 0)
       throw InputError(where + "the program turns " + std::string(1, char('A' + k)) + " but machine \"" + m.name +
                        "\" has no such axis" + (m.hasRotaryAxes() ? " (it has " + m.kinematicsName() + " axes)" : "") +
                        ": choose the machine the program was posted for");
@@ -96,10 +94,23 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   const RotaryAngles startAngles = previous_;
   double turn = 0.0;
   if (block.orientationVectors && !block.orientationByAxes) {
-    const Eigen::Vector3d from = block.orientationStart.squaredNorm() > 0.0 ? block.orientationStart : toolAxisAt(m, previous_);
-    turn = degreesBetween(from, block.orientationEnd);
+    if (orientation_.squaredNorm() == 0.0) orientation_ = toolAxisAt(m, previous_);  // the first vector
+    turn = degreesBetween(orientation_, block.orientationEnd);
   } else {
-    turn = (block.rotaryEnd - block.rotaryStart).cwiseAbs().maxCoeff();
+    fromAngles_ = toAngles_ = previous_;
+    if (block.orientationVectors) {  // ORIMKS/ORIAXES: the end's angles, reached axis by axis
+      try {
+        toAngles_ = inverseKinematics(m, {block.end, block.orientationEnd}, previous_).position.angles;
+      } catch (const InputError& error) {
+        throw InputError(where + error.what());
+      }
+    } else {
+      for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
+        const int k = m.rotaryAxes[i].name - 'A';
+        if (block.rotaryEnd[k] != programmed_[k]) toAngles_[i] = block.rotaryEnd[k];
+      }
+    }
+    turn = std::max(std::abs(toAngles_[0] - fromAngles_[0]), std::abs(toAngles_[1] - fromAngles_[1]));
   }
   int pieces = static_cast<int>(std::ceil(turn / kDegreesPerPiece));
   if (block.isArc()) pieces = std::max(pieces, static_cast<int>(std::ceil(std::abs(block.sweep) * 180.0 / M_PI / kArcDegreesPerPiece)));
@@ -165,6 +176,8 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
     piece(b, joint);
   }
   previous_ = {q.back()[3], q.back()[4]};
+  programmed_ = block.rotaryEnd;
+  orientation_ = block.orientationVectors ? block.orientationEnd : toolAxisAt(m, previous_);
   (void)singular;
 }
 

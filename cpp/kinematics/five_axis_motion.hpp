@@ -62,6 +62,9 @@ private:
               bool& singular);
   const MachineModel& machine_;
   RotaryAngles previous_{0.0, 0.0};
+  // Where the previous block left the program: A B C as programmed, the tool axis (zero before any vector).
+  Eigen::Vector3d programmed_ = Eigen::Vector3d::Zero(), orientation_ = Eigen::Vector3d::Zero();
+  RotaryAngles fromAngles_{0.0, 0.0}, toAngles_{0.0, 0.0};  // the block's angles when the axes interpolate
 };
 
 }  // namespace hsm::kinematics

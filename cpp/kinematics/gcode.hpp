@@ -71,10 +71,10 @@ struct Block {
                                                       // group, see merging.hpp); 0: the block's own length
   int jerkLimited = -1;                               // 1 SOFT, 0 BRISK, −1 the machine's default
   long line = 0;                                      // source line number, 1-based
-  // Rotary axes (4- and 5-axis programs, five_axis_motion.hpp): A B C at both ends, deg, as programmed, or the
-  // tool-axis vector at both ends (840D A3 B3 C3); tool tip programmed (840D TRAORI) or machine axes.
-  Eigen::Vector3d rotaryStart = Eigen::Vector3d::Zero(), rotaryEnd = Eigen::Vector3d::Zero();
-  Eigen::Vector3d orientationStart = Eigen::Vector3d::Zero(), orientationEnd = Eigen::Vector3d::Zero();
+  // Rotary axes (4- and 5-axis programs, five_axis_motion.hpp): A B C at the end, deg, as programmed, or the
+  // tool-axis vector at the end (840D A3 B3 C3; zero before any); tool tip programmed (840D TRAORI) or machine
+  // axes. The start is where the previous block ended (blocks are simulated in order).
+  Eigen::Vector3d rotaryEnd = Eigen::Vector3d::Zero(), orientationEnd = Eigen::Vector3d::Zero();
   bool rotary = false;             // the program has rotary words or orientation vectors up to this block
   bool orientationVectors = false; // orientation from A3 B3 C3: interpolated on the great circle (ORIWKS)
   bool orientationByAxes = false;  // ORIMKS / ORIAXES: the rotary axes interpolate linearly

@@ -121,9 +121,7 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   rotarySeen_ = rotarySeen_ || turns;
   block.rotary = rotarySeen_;
   if (rotarySeen_) {
-    block.rotaryStart = rotary_;
     block.rotaryEnd = rotaryTarget;
-    block.orientationStart = orientation_;
     block.orientationEnd = orientationTarget;
     block.orientationVectors = w.anyVector();
     block.orientationByAxes = orientationByAxes_;

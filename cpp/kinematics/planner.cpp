@@ -110,7 +110,7 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 
   double velocity, rapidVelocity, curvatureLimit = kInfinity;
   if (joint) {
-    s.joint = *joint;
+    s.joint = std::make_shared<const JointMotion>(*joint);
     // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
     const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
     if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
@@ -158,7 +158,6 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   } else if (!joint) {  // the slowest axis along the block's start tangent
     s.limit = slowestAxis(rapid ? jointRapid_ : jointVelocity_, s.startTangent);
   }
-  if (!joint) s.accelerationLimit = slowestAxis(jointAcceleration_, s.startTangent);
   // Block-processing limit: a block lasts at least one interpolation cycle (an 840D compressed group: the
   // group does).
   const double rateLength = block.rateLength > 0.0 ? block.rateLength : s.length;
@@ -170,13 +169,14 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 }
 
 Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
-  return before.joint.active || after.joint.active ? jointJunction(before, after) : tipJunction(before, after);
+  return before.joint || after.joint ? jointJunction(before, after) : tipJunction(before, after);
 }
 
 // Between pieces of one block the axes' rates change smoothly (their curvature bounds the cruise); between
 // blocks the tool tip's corner is the 3-axis rule, and each rotary axis may change its velocity by what its
 // acceleration gives in one interpolation cycle (all axes when the tip does not move).
 Planner::Junction Planner::jointJunction(const Segment& before, const Segment& after) const {
+  auto rotaryOnly = [](const Segment& s) { return s.joint && s.joint->rotaryOnly; };
   const double limit = std::min(before.cruise, after.cruise);
   Junction j;
   if (before.source == after.source) {
@@ -184,10 +184,10 @@ Planner::Junction Planner::jointJunction(const Segment& before, const Segment& a
     return j;
   }
   // The feed changes its meaning (mm/min of the path, deg/min of the rotary axes): the controller stops.
-  if (before.block.pathMode == PathMode::ExactStop || before.joint.rotaryOnly != after.joint.rotaryOnly) return j;
-  auto tipLength = [](const Segment& s) { return s.joint.active ? s.joint.tipLength : s.length; };
+  if (before.block.pathMode == PathMode::ExactStop || rotaryOnly(before) != rotaryOnly(after)) return j;
+  auto tipLength = [](const Segment& s) { return s.joint ? s.joint->tipLength : s.length; };
   auto rate = [](const Segment& s) {
-    if (s.joint.active) return s.joint.rate;
+    if (s.joint) return s.joint->rate;
     JointVector r = JointVector::Zero();
     r.head<3>() = s.startTangent;
     return r;

@@ -17,6 +17,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace hsm::kinematics::detail {
@@ -35,9 +36,11 @@ struct Segment {
   bool parabolic = false;   // LinuxCNC: a parabolic blend at one of its ends halved its acceleration
   double restAfter = 0.0;   // s at rest after the block (LinuxCNC: a servo cycle at each exact stop)
   Eigen::Vector3d startTangent, endTangent;
-  JointMotion joint;                     // 4- and 5-axis blocks: how the machine's axes move along it
+  // 4- and 5-axis blocks: how the machine's axes move along it; none for a 3-axis block (shared, not held by
+  // value: the segment is copied along the planner, and a 3-axis program must not pay for the 5-axis data).
+  std::shared_ptr<const JointMotion> joint;
   SpeedLimit limit = SpeedLimit::Feed;   // what sets `cruise`
-  SpeedLimit accelerationLimit = SpeedLimit::X;  // the axis whose acceleration bounds the block's
+  SpeedLimit accelerationLimit = SpeedLimit::X;  // 5 axes: the axis whose acceleration bounds the piece's
 };
 
 // A corner of deflection φ in the half-angle terms its blends need, from cos φ alone (no acos, cos, tan:

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <fstream>
 #include <cmath>
+#include <limits>
 
 namespace hsm::kinematics {
 
@@ -37,10 +38,10 @@ public:
 
   void commit(const detail::Segment& s, const detail::BlockTiming& p) {
     if (s.source != currentSource_) flush();
-    const bool cruised = p.peak >= 0.95 * s.cruise;
-    const int label = static_cast<int>(cruised ? s.limit : s.accelerationLimit);
+    const int label = static_cast<int>(limitOf(s, p));
     if (!open_) {
-      limitTimes_.fill(0.0);
+      blockLimit_ = label;
+      mixedLimits_ = false;
       open_ = true;
       currentSource_ = s.source;
       current_ = BlockResult{};
@@ -54,24 +55,29 @@ public:
       current_.entryFeed = p.entry;
       current_.minFeed = p.min;
       current_.startTime = clock_;
-      if (s.joint.active) {
-        current_.machineStart = s.joint.start.head<3>();
-        current_.rotaryStart = s.joint.start.tail<2>();
+      if (s.joint) {
+        current_.machineStart = s.joint->start.head<3>();
+        current_.rotaryStart = s.joint->start.tail<2>();
       } else {
         current_.machineStart = s.block.start;
       }
       naive_ = 0.0;
     }
-    limitTimes_[label] += p.time;
+    if (label != blockLimit_ && !mixedLimits_) {  // a block of pieces held by different limits: weigh them
+      mixedLimits_ = true;
+      limitTimes_.fill(0.0);
+      limitTimes_[blockLimit_] = current_.time;
+    }
+    if (mixedLimits_) limitTimes_[label] += p.time;
     result_.summary.limitTime[label] += p.time;
     current_.end = s.block.end;
-    if (s.joint.active) {
-      current_.machineEnd = s.joint.end.head<3>();
-      current_.rotaryEnd = s.joint.end.tail<2>();
+    if (s.joint) {
+      current_.machineEnd = s.joint->end.head<3>();
+      current_.rotaryEnd = s.joint->end.tail<2>();
     } else {
       current_.machineEnd = s.block.end;
     }
-    current_.length += s.joint.active ? s.joint.tipLength : s.length;
+    current_.length += s.joint ? s.joint->tipLength : s.length;
     current_.exitFeed = p.exit;
     current_.peakFeed = std::max(current_.peakFeed, p.peak);
     current_.minFeed = std::min(current_.minFeed, p.min);
@@ -88,7 +94,8 @@ public:
       throw ComputationError("line " + std::to_string(b.line) + ": the simulated time of the block is not a finite "
                              "number (length " + mm(b.length) + "); check its coordinates and the machine's limits");
     b.meanFeed = b.time > 0.0 ? b.length / b.time : 0.0;
-    b.limit = static_cast<SpeedLimit>(std::max_element(limitTimes_.begin(), limitTimes_.end()) - limitTimes_.begin());
+    b.limit = static_cast<SpeedLimit>(
+        mixedLimits_ ? std::max_element(limitTimes_.begin(), limitTimes_.end()) - limitTimes_.begin() : blockLimit_);
     SimulationSummary& sum = result_.summary;
     ++sum.blockCount;
     sum.totalTime += b.time;
@@ -147,7 +154,25 @@ private:
   SimulationResult& result_;
   BlockResult current_;
   std::array<double, kSpeedLimitCount> limitTimes_{};
+  int blockLimit_ = 0;
+  bool mixedLimits_ = false;
   bool open_ = false;
+
+  // What held a piece's speed: what set its cruise if it reached it, else the axis whose acceleration bounds it.
+  SpeedLimit limitOf(const detail::Segment& s, const detail::BlockTiming& p) const {
+    if (p.peak >= 0.95 * s.cruise) return s.limit;
+    if (s.joint) return s.accelerationLimit;
+    int slowest = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const double u = std::abs(s.startTangent[i]);
+      if (u > 1e-12 && machine_.maxAcceleration[i] / u < least) {
+        least = machine_.maxAcceleration[i] / u;
+        slowest = i;
+      }
+    }
+    return static_cast<SpeedLimit>(static_cast<int>(SpeedLimit::X) + slowest);
+  }
   long currentSource_ = -1;
   double clock_ = 0.0, naive_ = 0.0;
 };

@@ -1,6 +1,8 @@
 // Feed-rate simulation throughput, measured in one run: reading alone, reading + simulating with the 840D
-// model (summary only), and the heap in use while simulating 1 M and 4 M blocks (it must not grow).
-// Issue figure: at least 1,000,000 blocks/s end to end on one core. Run: build/bin/bench_feedsim
+// model (summary only), and the heap in use while simulating 1 M and 4 M blocks (it must not grow); then the same
+// moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
+// Issue figures: at least 2,500,000 blocks/s end to end on one core (3 axes), 500,000 (5 axes).
+// Run: build/bin/bench_feedsim
 #include "kinematics/simulation.hpp"
 
 #include <chrono>
@@ -13,8 +15,9 @@ using namespace hsm::kinematics;
 
 namespace {
 // A finishing-like program: zigzag passes of 0.2-0.8 mm G1 blocks along gently curved lines, 0.4 mm apart.
-std::string finishingProgram(long blocks) {
-  std::string text = "G90 G17 G21\nCYCLE832(0.01,_ORI_FINISH,1)\nG0 X0 Y0 Z5\nG1 Z0 F6000\n";
+std::string finishingProgram(long blocks, bool fiveAxis = false) {
+  std::string text = "G90 G17 G21\nCYCLE832(0.01,_ORI_FINISH,1)\n";
+  text += fiveAxis ? "TRAORI\nG0 X0 Y0 Z5 A10 C0\nG1 Z0 F6000\n" : "G0 X0 Y0 Z5\nG1 Z0 F6000\n";
   text.reserve(static_cast<size_t>(blocks) * 32);
   char line[96];
   double x = 0.0, y = 0.0;
@@ -26,7 +29,11 @@ std::string finishingProgram(long blocks) {
       y += 0.4;
     }
     const double z = -0.5 * std::sin(x / 20.0) * std::cos(y / 15.0);
-    std::snprintf(line, sizeof line, "X%.4f Y%.4f Z%.4f\n", x, y + 0.8 * std::sin(x / 9.0), z);
+    if (fiveAxis)  // the tool leans 5-15° and turns round slowly, as a 5-axis finishing pass does
+      std::snprintf(line, sizeof line, "X%.4f Y%.4f Z%.4f A%.3f C%.3f\n", x, y + 0.8 * std::sin(x / 9.0), z,
+                    10.0 + 5.0 * std::sin(x / 30.0), 0.002 * i);
+    else
+      std::snprintf(line, sizeof line, "X%.4f Y%.4f Z%.4f\n", x, y + 0.8 * std::sin(x / 9.0), z);
     text += line;
   }
   return text + "M30\n";
@@ -70,6 +77,26 @@ int main() {
   std::printf("simulate / read time ratio: %.2f\n", simulateTime / readTime);
   std::printf("simulated machining time %.1f s, length/feed %.1f s (x%.2f)\n", summary.totalTime, summary.naiveTime,
               summary.totalTime / summary.naiveTime);
+
+  {
+    const MachineModel trunnion = loadMachine("mikron-ucp710-ac-840d", {HSM_MACHINES_DIR});
+    const std::string five = finishingProgram(blocks, true);
+    SimulationSummary fiveSummary;
+    const double fiveTime = seconds([&] {
+      std::istringstream stream(five);
+      fiveSummary = simulate(stream, trunnion).summary;
+    });
+    std::printf("5-axis read + simulate: %5.2f s  %10.0f blocks/s  (A/C trunnion, TRAORI), %.2f x the 3-axis rate\n",
+                fiveTime, fiveSummary.blockCount / fiveTime, (fiveSummary.blockCount / fiveTime) /
+                (summary.blockCount / simulateTime));
+    double all = 0.0;
+    for (double t : fiveSummary.limitTime) all += t;
+    std::printf("5-axis simulated time %.1f s; limits:", fiveSummary.totalTime);
+    for (int k = 0; k < kSpeedLimitCount; ++k)
+      if (fiveSummary.limitTime[k] > 0.0)
+        std::printf(" %s %.1f %%", speedLimitName(static_cast<SpeedLimit>(k)), 100.0 * fiveSummary.limitTime[k] / all);
+    std::printf("\n");
+  }
 
   for (long n : {1000000L, 4000000L}) {
     std::istringstream stream(finishingProgram(n));
