@@ -1,5 +1,6 @@
 #include "bindings/bindings.hpp"
 
+#include "kinematics/five_axis.hpp"
 #include "kinematics/moves.hpp"
 #include "kinematics/report.hpp"
 #include "kinematics/simulation.hpp"
@@ -23,6 +24,10 @@ py::dict blockArrays(const std::vector<BlockResult>& blocks) {
   py::array_t<long> line(n), motion(n);
   py::array_t<double> start({n, py::ssize_t(3)}), end({n, py::ssize_t(3)});
   py::array_t<double> center({n, py::ssize_t(3)}), normal({n, py::ssize_t(3)}), sweep(n);
+  py::array_t<double> rotaryStart({n, py::ssize_t(2)}), rotaryEnd({n, py::ssize_t(2)});
+  py::array_t<double> machineStart({n, py::ssize_t(3)}), machineEnd({n, py::ssize_t(3)});
+  py::array_t<long> limit(n);
+  py::array_t<bool> rotaryOnly(n);
   const char* names[] = {"length", "programmed_feed", "entry_feed", "exit_feed", "min_feed", "mean_feed",
                          "peak_feed", "start_time", "time"};
   std::vector<py::array_t<double>> columns;
@@ -45,6 +50,16 @@ py::dict blockArrays(const std::vector<BlockResult>& blocks) {
       nn(i, k) = b.normal[k];
     }
     sw(i) = b.sweep;
+    for (int k = 0; k < 2; ++k) {
+      rotaryStart.mutable_at(i, k) = b.rotaryStart[k];
+      rotaryEnd.mutable_at(i, k) = b.rotaryEnd[k];
+    }
+    for (int k = 0; k < 3; ++k) {
+      machineStart.mutable_at(i, k) = b.machineStart[k];
+      machineEnd.mutable_at(i, k) = b.machineEnd[k];
+    }
+    limit.mutable_at(i) = static_cast<long>(b.limit);
+    rotaryOnly.mutable_at(i) = b.rotaryOnly;
     const double values[] = {b.length, b.programmedFeed, b.entryFeed, b.exitFeed, b.minFeed,
                              b.meanFeed, b.peakFeed, b.startTime, b.time};
     for (size_t c = 0; c < 9; ++c) columns[c].mutable_at(i) = values[c];
@@ -57,6 +72,12 @@ py::dict blockArrays(const std::vector<BlockResult>& blocks) {
   result["center"] = center;
   result["normal"] = normal;
   result["sweep"] = sweep;
+  result["rotary_start"] = rotaryStart;  // deg, the machine's rotary axes in chain order
+  result["rotary_end"] = rotaryEnd;
+  result["machine_start"] = machineStart;  // X Y Z of the machine, mm
+  result["machine_end"] = machineEnd;
+  result["limit"] = limit;  // index in SPEED_LIMITS
+  result["rotary_only"] = rotaryOnly;
   for (size_t c = 0; c < 9; ++c) result[names[c]] = columns[c];
   return result;
 }
@@ -100,6 +121,24 @@ void bindKinematics(py::module_& m) {
       .value("linuxcnc", ControllerKind::LinuxCNC)
       .value("grbl", ControllerKind::Grbl);
   m.attr("DEFAULT_MACHINE") = kDefaultMachine;
+  py::class_<RotaryAxis>(m, "RotaryAxis", "A rotary axis: degrees, deg/s, deg/s², deg/s³")
+      .def(py::init<>())
+      .def_property(
+          "name", [](const RotaryAxis& a) { return std::string(1, a.name); },
+          [](RotaryAxis& a, const std::string& name) {
+            if (name != "A" && name != "B" && name != "C") throw InputError("a rotary axis is named A, B or C");
+            a.name = name[0];
+          })
+      .def_readwrite("on_table", &RotaryAxis::onTable, "carried by the table (True) or by the head")
+      .def_readwrite("direction", &RotaryAxis::direction, "unit axis at zero angles, machine frame")
+      .def_readwrite("pivot", &RotaryAxis::pivot, "mm: a point of the axis (table: machine frame; head: from the tip)")
+      .def_readwrite("max_velocity", &RotaryAxis::maxVelocity, "deg/s")
+      .def_readwrite("rapid_velocity", &RotaryAxis::rapidVelocity, "deg/s")
+      .def_readwrite("max_acceleration", &RotaryAxis::maxAcceleration, "deg/s²")
+      .def_readwrite("max_jerk", &RotaryAxis::maxJerk, "deg/s³")
+      .def_readwrite("min_position", &RotaryAxis::minPosition, "deg")
+      .def_readwrite("max_position", &RotaryAxis::maxPosition, "deg")
+      .def_readwrite("continuous", &RotaryAxis::continuous);
   py::class_<MachineModel>(m, "MachineModel", "Axis limits and controller behaviour (mm, s inside)")
       .def(py::init<>())
       .def_static("from_json", &machineFromJson, py::arg("text"), py::arg("origin") = "machine file")
@@ -116,7 +155,42 @@ void bindKinematics(py::module_& m) {
       .def_readwrite("interpolation_cycle", &MachineModel::interpolationCycle, "s")
       .def_readwrite("look_ahead_blocks", &MachineModel::lookAheadBlocks)
       .def_readwrite("corner_tolerance", &MachineModel::cornerTolerance, "mm")
-      .def_readwrite("jerk_limited_by_default", &MachineModel::jerkLimitedByDefault);
+      .def_readwrite("jerk_limited_by_default", &MachineModel::jerkLimitedByDefault)
+      .def_readwrite("rotary_axes", &MachineModel::rotaryAxes, "chain order: the table's from the bed, then the head's")
+      .def_readwrite("tool_axis", &MachineModel::toolAxis)
+      .def_readwrite("tool_tip_programmed", &MachineModel::toolTipProgrammed)
+      .def_property_readonly("kinematics", &MachineModel::kinematicsName,
+                             "'table-table', 'head-table', 'head-head', 'table', 'head' or '' (3 axes)");
+  m.def(
+      "forward_kinematics",
+      [](const MachineModel& machine, const Eigen::Vector3d& linear, const std::array<double, 2>& angles) {
+        checkMachine(machine);
+        const ToolPose pose = forwardKinematics(machine, {linear, angles});
+        return py::make_tuple(pose.tip, pose.axis);
+      },
+      py::arg("machine"), py::arg("linear"), py::arg("angles"),
+      "(tip, tool axis) in the workpiece frame for machine X Y Z (mm) and rotary angles (deg, chain order)");
+  m.def(
+      "inverse_kinematics",
+      [](const MachineModel& machine, const Eigen::Vector3d& tip, const Eigen::Vector3d& axis,
+         const std::array<double, 2>& previous) {
+        checkMachine(machine);
+        const InverseResult r = inverseKinematics(machine, {tip, axis}, previous);
+        return py::make_tuple(r.position.linear, r.position.angles, r.singular);
+      },
+      py::arg("machine"), py::arg("tip"), py::arg("axis"), py::arg("previous") = std::array<double, 2>{0.0, 0.0},
+      "(X Y Z, angles, singular) reaching the pose, nearest to `previous` within travel; InputError otherwise");
+  m.def(
+      "orientation_solutions",
+      [](const MachineModel& machine, const Eigen::Vector3d& axis) {
+        std::vector<std::array<double, 2>> angles;
+        for (const AngleSolution& s : orientationSolutions(machine, axis)) angles.push_back(s.angles);
+        return angles;
+      },
+      py::arg("machine"), py::arg("axis"), "every set of angles (deg, in (-180, 180]) that points the tool along axis");
+  std::vector<std::string> limitNames;
+  for (int k = 0; k < kSpeedLimitCount; ++k) limitNames.push_back(speedLimitName(static_cast<SpeedLimit>(k)));
+  m.attr("SPEED_LIMITS") = limitNames;
   m.def("machine_names", &machineNames, py::arg("folders"));
 
   py::class_<SimulationSummary>(m, "SimulationSummary", "Times in s, lengths in mm")
@@ -138,6 +212,7 @@ void bindKinematics(py::module_& m) {
       .def_property_readonly("feed_classes_length", [](const SimulationSummary& s) { return s.feedClasses.length; })
       .def_property_readonly("feed_classes_time", [](const SimulationSummary& s) { return s.feedClasses.time; })
       .def_readonly("length_classes", &SimulationSummary::lengthClasses)
+      .def_readonly("limit_time", &SimulationSummary::limitTime, "s each of SPEED_LIMITS held the speed")
       .def_property_readonly("unknown_words", [](const SimulationSummary& s) { return s.reader.unknownWords; })
       .def_property_readonly("unknown_word_counts",
                              [](const SimulationSummary& s) { return s.reader.unknownWordCounts; })

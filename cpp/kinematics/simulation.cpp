@@ -56,6 +56,7 @@ public:
       current_.minFeed = p.min;
       current_.startTime = clock_;
       if (s.joint) {
+        current_.rotaryOnly = s.joint->rotaryOnly;
         current_.machineStart = s.joint->start.head<3>();
         current_.rotaryStart = s.joint->start.tail<2>();
       } else {
@@ -109,11 +110,15 @@ public:
       sum.cuttingTime += b.time;
       sum.cuttingLength += b.length;
       sum.naiveCuttingTime += naive_;
+    }
+    if (b.motion != Motion::Rapid && !b.rotaryOnly) {
       const int k = feedClass(b.programmedFeed > 0.0 ? b.meanFeed / b.programmedFeed : 0.0);
       sum.feedClasses.blocks[k] += 1.0;
       sum.feedClasses.length[k] += b.length;
       sum.feedClasses.time[k] += b.time;
       ++sum.lengthClasses[lengthClass(b.length)];
+      ++classified_;
+      classifiedTime_ += b.time;
     }
     if (options_.onBlock) options_.onBlock(b);
     if (options_.keepBlocks) result_.blocks.push_back(b);
@@ -142,9 +147,9 @@ public:
     sum.naiveTime += reader.dwellTime;
     FeedClasses& fc = sum.feedClasses;
     for (int k = 0; k < 5; ++k) {
-      if (sum.cuttingBlocks > 0) fc.blocks[k] /= double(sum.cuttingBlocks);
+      if (classified_ > 0) fc.blocks[k] /= double(classified_);
       if (sum.cuttingLength > 0) fc.length[k] /= sum.cuttingLength;
-      if (sum.cuttingTime > 0) fc.time[k] /= sum.cuttingTime;
+      if (classifiedTime_ > 0) fc.time[k] /= classifiedTime_;
     }
   }
 
@@ -155,6 +160,8 @@ private:
   BlockResult current_;
   std::array<double, kSpeedLimitCount> limitTimes_{};
   int blockLimit_ = 0;
+  long classified_ = 0;          // cutting blocks in the feed classes (not those turning rotary axes only)
+  double classifiedTime_ = 0.0;
   bool mixedLimits_ = false;
   bool open_ = false;
 

@@ -34,6 +34,9 @@ struct BlockResult {
   double startTime = 0.0, time = 0.0;                      // s
   // What held the speed down for most of the block's time (SpeedLimit: the feed, an axis, curvature, block rate).
   SpeedLimit limit = SpeedLimit::Feed;
+  // Only rotary axes move (the tip may stay put): feeds are in deg/s of the rotary axes, and the block is left
+  // out of the feed and length classes.
+  bool rotaryOnly = false;
   // 4- and 5-axis machines: the rotary axes (chain order, deg) and X Y Z of the machine at both ends.
   Eigen::Vector2d rotaryStart = Eigen::Vector2d::Zero(), rotaryEnd = Eigen::Vector2d::Zero();
   Eigen::Vector3d machineStart = Eigen::Vector3d::Zero(), machineEnd = Eigen::Vector3d::Zero();

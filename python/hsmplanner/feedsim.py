@@ -99,6 +99,17 @@ def simulate_moves(moves, feed_mm_min, machine=DEFAULT_MACHINE, blocks=False, tr
                                 _trace_period(trace_period))
 
 
+SPEED_LIMITS = tuple(_core.SPEED_LIMITS)  # what held the speed: result.blocks["limit"] indexes this
+
+
+def speed_limit_shares(summary):
+    """{limit: share of the simulated motion time} for the limits that held the speed at all, largest first:
+    {"C": 0.18, ...} says the C axis held it 18 % of the time."""
+    total = sum(summary.limit_time)
+    shares = {name: t / total for name, t in zip(SPEED_LIMITS, summary.limit_time) if total > 0 and t > 0}
+    return dict(sorted(shares.items(), key=lambda item: -item[1]))
+
+
 def write_blocks_csv(result, path):
     """One row per block, feeds in mm/min (needs simulate(..., blocks=True))."""
     if len(result.blocks["line"]) == 0:
@@ -108,11 +119,13 @@ def write_blocks_csv(result, path):
     return path
 
 
-def write_report(result, folder, stem="feedrate", program=""):
-    """JSON summary, per-block CSV, histogram and feed-map PNGs of a result kept with blocks=True.
-    Returns the paths written."""
+def write_report(result, folder, stem="feedrate", program="", machine=None):
+    """JSON summary, per-block CSV, histogram and feed-map PNGs of a result kept with blocks=True, and the
+    rotary axes over time when `machine` (a name or MachineModel) has any. Returns the paths written."""
     from .plots.feedrate import save_feed_histograms, save_feed_map
 
+    if machine is not None:
+        machine = load_machine(machine)
     os.makedirs(folder, exist_ok=True)
     base = os.path.join(folder, stem)
     with open(base + ".json", "w") as stream:
@@ -121,4 +134,9 @@ def write_report(result, folder, stem="feedrate", program=""):
              save_feed_histograms(result.summary, base + "_histograms.png"),
              save_feed_map(result.blocks, base + "_map.png",
                            "%s on %s: feed-rate map" % (program or stem, result.summary.machine))]
+    if machine is not None and machine.rotary_axes:
+        from .plots.feedrate import save_rotary_axes
+        paths.append(save_rotary_axes(result.blocks, result.summary, [a.name for a in machine.rotary_axes],
+                                      base + "_rotary_axes.png",
+                                      "%s on %s: rotary axes" % (program or stem, result.summary.machine)))
     return paths

@@ -4,7 +4,7 @@ import numpy as np
 from matplotlib.cm import ScalarMappable
 from matplotlib.colors import Normalize
 
-from hsmplanner._core import LENGTH_CLASS_EDGES_MM
+from hsmplanner._core import LENGTH_CLASS_EDGES_MM, SPEED_LIMITS
 
 from .common import FEED_COLORMAP, feed_colors, new_figure, relayout_at_each_draw
 
@@ -98,6 +98,38 @@ def save_feed_map(blocks, path, title):
     scalar = ScalarMappable(cmap=FEED_COLORMAP, norm=Normalize(0, 100))
     figure.colorbar(scalar, ax=axes, label="mean reached feed, % of programmed", shrink=0.8)
     axes.set_title(title, fontsize=10)
+    figure.tight_layout()
+    figure.savefig(path)
+    return path
+
+
+def save_rotary_axes(blocks, summary, rotary_names, path, title):
+    """The rotary axes over time (each block's start and end, deg) above the share of time each limit held the
+    speed: where a 5-axis program is slow, and which axis makes it so."""
+    figure = new_figure(11, 6.5)
+    angles = figure.add_subplot(2, 1, 1)
+    start, time = blocks["start_time"], blocks["time"]
+    t = np.column_stack([start, start + time]).ravel()
+    for k, name in enumerate(rotary_names):
+        a = np.column_stack([blocks["rotary_start"][:, k], blocks["rotary_end"][:, k]]).ravel()
+        angles.plot(t, a, linewidth=1.2, label=name)
+    angles.set_xlabel("time (s)")
+    angles.set_ylabel("angle (deg)")
+    angles.legend(loc="upper right", fontsize=8)
+    angles.set_title(title, fontsize=10)
+    shares = figure.add_subplot(2, 1, 2)
+    total = max(sum(summary.limit_time), 1e-12)
+    values = [100.0 * x / total for x in summary.limit_time]
+    bars = shares.barh(range(len(SPEED_LIMITS)), values, color="#4a7ebb")
+    shares.set_yticks(range(len(SPEED_LIMITS)))
+    shares.set_yticklabels(SPEED_LIMITS, fontsize=8)
+    shares.invert_yaxis()
+    shares.set_xlabel("share of the time the limit held the speed (%)")
+    for bar, value in zip(bars, values):
+        if value > 0.05:
+            shares.text(bar.get_width() + 0.5, bar.get_y() + bar.get_height() / 2, "%.1f %%" % value, va="center",
+                        fontsize=8)
+    shares.set_xlim(0, 110)
     figure.tight_layout()
     figure.savefig(path)
     return path

@@ -1,0 +1,113 @@
+"""Five-axis machines from Python and the CLI: presets, kinematics, 5-axis programs simulated, reports."""
+import json
+import os
+import re
+import unittest
+
+import numpy as np
+
+import hsmplanner
+from hsmplanner import _core, feedsim
+from helpers import REPO, run, temporary_directory
+
+FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
+TRUNNION = "mikron-ucp710-ac-840d"
+# TRAORI: the tip goes 50 mm out, C turns a full turn about it, then the tip moves while A tilts 20°.
+PROGRAM = "TRAORI\nG1 X50 Y0 Z0 F6000\nG1 C360 F100000\nG1 X0 Y20 A20 C400 F3000\n"
+
+
+class Machines(unittest.TestCase):
+    def test_five_axis_presets(self):
+        kinds = {name: feedsim.load_machine(name).kinematics for name in feedsim.machine_names()}
+        self.assertEqual(kinds["mikron-ucp710-ac-840d"], "table-table")
+        self.assertEqual(kinds["swivel-head-bc-840d"], "head-table")
+        self.assertEqual(kinds["linuxcnc-2.9-xyzac-trt"], "table-table")
+        self.assertEqual(kinds["mikron-ucp710-840d"], "")  # every 3-axis file stays as it was
+        trt = feedsim.load_machine("linuxcnc-2.9-xyzac-trt")
+        self.assertEqual([a.name for a in trt.rotary_axes], ["A", "C"])
+        self.assertAlmostEqual(trt.rotary_axes[0].max_velocity, 30.0)  # deg/s
+        self.assertTrue(trt.tool_tip_programmed)
+
+    def test_kinematics_round_trip(self):
+        machine = feedsim.load_machine(TRUNNION)
+        tip, axis = _core.forward_kinematics(machine, [10.0, -5.0, 3.0], [25.0, 70.0])
+        self.assertAlmostEqual(np.linalg.norm(axis), 1.0, places=12)
+        linear, angles, singular = _core.inverse_kinematics(machine, tip, axis, [20.0, 60.0])
+        np.testing.assert_allclose(linear, [10.0, -5.0, 3.0], atol=1e-9)
+        np.testing.assert_allclose(angles, [25.0, 70.0], atol=1e-9)
+        self.assertFalse(singular)
+        self.assertEqual(len(_core.orientation_solutions(machine, axis)), 2)
+        with self.assertRaisesRegex(ValueError, r"outside the travel \(A \[-100, 120\] deg\)"):
+            _core.inverse_kinematics(machine, [0, 0, 0], [0, 0, -1])
+
+
+class Simulation(unittest.TestCase):
+    def test_c_limits_the_turn_and_the_report_says_so(self):
+        result = hsmplanner.simulate(PROGRAM, machine=TRUNNION, blocks=True)
+        shares = feedsim.speed_limit_shares(result.summary)
+        self.assertEqual(next(iter(shares)), "C", shares)
+        self.assertAlmostEqual(sum(shares.values()), 1.0, places=9)
+        blocks = result.blocks
+        self.assertEqual(feedsim.SPEED_LIMITS[blocks["limit"][1]], "C")
+        self.assertTrue(blocks["rotary_only"][1])
+        np.testing.assert_allclose(blocks["rotary_end"][1], [0.0, 360.0], atol=1e-9)
+        np.testing.assert_allclose(blocks["rotary_end"][2], [20.0, 400.0], atol=1e-9)
+        self.assertAlmostEqual(blocks["length"][1], 0.0, places=9)  # the tip stayed on the workpiece
+        # The machine's X Y Z are not the tip's once the table has turned.
+        self.assertGreater(np.linalg.norm(blocks["machine_end"][2] - blocks["end"][2]), 1.0)
+        self.assertIn("speed held by, share of time:  C ", result.summary.to_text())
+        report = json.loads(result.summary.to_json())["speed_limits"]
+        self.assertEqual(report["names"], list(feedsim.SPEED_LIMITS))
+        self.assertAlmostEqual(sum(report["share_of_time"]), 1.0, places=9)
+
+    def test_report_draws_the_rotary_axes(self):
+        folder = temporary_directory(self)
+        result = hsmplanner.simulate(PROGRAM, machine=TRUNNION, blocks=True)
+        paths = feedsim.write_report(result, folder, stem="five", program="p5", machine=TRUNNION)
+        self.assertIn(os.path.join(folder, "five_rotary_axes.png"), paths)
+        for path in paths:
+            self.assertGreater(os.path.getsize(path), 10000 if path.endswith(".png") else 300, path)
+        with open(os.path.join(folder, "five_blocks.csv")) as stream:
+            header, first, turn = stream.readline(), stream.readline(), stream.readline()
+        self.assertTrue(header.strip().endswith("limit,rotary1_start_deg,rotary2_start_deg,rotary1_end_deg,"
+                                                "rotary2_end_deg"))
+        self.assertEqual(turn.split(",")[17], "C")
+
+    def test_the_cli_names_the_limiting_axis(self):
+        folder = temporary_directory(self)
+        path = os.path.join(folder, "p5.mpf")
+        with open(path, "w") as stream:
+            stream.write(PROGRAM)
+        out = run([FEEDSIM, "-m", TRUNNION, path]).stdout
+        self.assertRegex(out, r"speed held by, share of time:  C \d+\.\d%")
+        refused = run([FEEDSIM, "-m", "mikron-ucp710-840d", path], check=False)
+        self.assertNotEqual(refused.returncode, 0)
+        self.assertIn("line 3: the program turns C but machine \"mikron-ucp710-840d\" has no such axis",
+                      refused.stderr)
+
+    def test_bad_five_axis_programs_name_their_line(self):
+        cases = [
+            ("G1 X1 A3=0 B3=0 C3=0 F100\n", "line 1: orientation vector A3 B3 C3 = (0, 0, 0) has no length"),
+            ("G1 X1 A3= F100\n", "line 1: A3= needs a number"),
+            ("G1 X1 A5 A6 F100\n", "line 1: rotary axis A given twice"),
+            ("G1 X1 A5 A3=1 F100\n", "line 1: rotary axes and an orientation vector on one line"),
+            ("G93\nG1 X1 A5\n", "line 2: G93 (inverse time) needs F on every feed move"),
+            ("G1 X1 B5 F100\n", "line 1: the program turns B but machine"),
+        ]
+        for program, message in cases:
+            with self.subTest(program=program), self.assertRaisesRegex(ValueError, re.escape(message)):
+                hsmplanner.simulate(program, machine=TRUNNION)
+
+    def test_fixed_orientation_keeps_the_three_axis_time(self):
+        """A/C at zero with TCP is the 3-axis machine: the same lines take the same time. (Arcs are chords of 5°
+        in a 5-axis program, each with its own axis projection: up to 3 % faster than the 3-axis arc model, which
+        takes the weaker in-plane axis for the whole arc.)"""
+        program = "G1 X20 Y0 Z0 F3000\nG1 X20 Y20\nG1 X0 Y25 Z-3\nG1 X0 Y0\nG1 X30 Y-4 Z0\n"
+        three = hsmplanner.simulate(program, machine="mikron-ucp710-840d").summary.total_time
+        five = hsmplanner.simulate("TRAORI\nG1 A0 C0 X0 F3000\n" + program, machine=TRUNNION).summary.total_time
+        self.assertAlmostEqual(five, three, delta=0.01 * three)
+        self.assertGreater(five, 0.0)
+
+
+if __name__ == "__main__":
+    unittest.main()
