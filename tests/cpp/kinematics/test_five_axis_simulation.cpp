@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <sstream>
 
 using namespace hsm::kinematics;
@@ -148,4 +149,131 @@ TEST(FiveAxisSimulation, LinuxCncTrtProgramsAreToolTipProgrammed) {
   const Eigen::Vector3d expected = linearAxesFor(m, {20, 0, 0}, {-30.0, 45.0});
   EXPECT_LT((r.blocks[1].machineEnd - expected).norm(), 1e-9);
   EXPECT_NEAR(r.blocks[1].length, 10.0, 1e-9);
+}
+
+namespace {
+struct Pose5 {
+  Eigen::Vector3d tip;
+  double a, c, feed;
+};
+
+// Time-optimal lower bound on the joint-space path of a TCP program of lines with A and C (tests only): each
+// block cut into 200 pieces by the test's own kinematics, each piece bounded by every axis's velocity and
+// acceleration projected on it (no jerk, no curvature, no junction or cycle limit), trapezoidal profiles from a
+// backward and a forward pass. A controller that keeps its axes within their limits takes at least this long.
+double jointLowerBound(const std::vector<Pose5>& poses, const MachineModel& m) {
+  struct Piece {
+    double length, vmax, a;
+  };
+  std::vector<Piece> pieces;
+  const int n = 200;
+  Eigen::Matrix<double, 5, 1> vmax, amax;
+  vmax << m.maxVelocity, m.rotaryAxes[0].maxVelocity, m.rotaryAxes[1].maxVelocity;
+  amax << m.maxAcceleration, m.rotaryAxes[0].maxAcceleration, m.rotaryAxes[1].maxAcceleration;
+  auto joints = [&](const Pose5& p0, const Pose5& p1, double t) {
+    const Eigen::Vector3d tip = p0.tip + t * (p1.tip - p0.tip);
+    const RotaryAngles angles{p0.a + t * (p1.a - p0.a), p0.c + t * (p1.c - p0.c)};
+    Eigen::Matrix<double, 5, 1> q;
+    q << linearAxesFor(m, tip, angles), angles[0], angles[1];
+    return q;
+  };
+  for (size_t k = 1; k < poses.size(); ++k) {
+    const double length = (poses[k].tip - poses[k - 1].tip).norm() / n;
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Matrix<double, 5, 1> dq = joints(poses[k - 1], poses[k], double(i + 1) / n) -
+                                             joints(poses[k - 1], poses[k], double(i) / n);
+      double v = poses[k].feed, a = 1e300;
+      for (int j = 0; j < 5; ++j)
+        if (std::abs(dq[j]) > 1e-15) {
+          v = std::min(v, vmax[j] * length / std::abs(dq[j]));
+          a = std::min(a, amax[j] * length / std::abs(dq[j]));
+        }
+      pieces.push_back({length, v, a});
+    }
+  }
+  std::vector<double> speed(pieces.size() + 1, 0.0);
+  for (size_t i = 1; i < pieces.size(); ++i) speed[i] = std::min(pieces[i - 1].vmax, pieces[i].vmax);
+  for (size_t i = pieces.size(); i-- > 0;)
+    speed[i] = std::min(speed[i], std::sqrt(speed[i + 1] * speed[i + 1] + 2 * pieces[i].a * pieces[i].length));
+  double total = 0.0;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    speed[i + 1] = std::min(speed[i + 1], std::sqrt(speed[i] * speed[i] + 2 * pieces[i].a * pieces[i].length));
+    total += blockProfile(pieces[i].length, speed[i], speed[i + 1], pieces[i].vmax, {pieces[i].a, 0, false}).time;
+  }
+  return total;
+}
+}  // namespace
+
+TEST(FiveAxisSimulation, NeverBelowTheJointSpaceTimeOptimalBound) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> step(-4.0, 4.0), turn(-8.0, 8.0), feed(600, 12000);
+  for (const char* name : {"mikron-ucp710-ac-840d", "linuxcnc-2.9-xyzac-trt"}) {
+    const MachineModel m = preset(name);
+    for (int program = 0; program < 20; ++program) {
+      std::vector<Pose5> poses{{Eigen::Vector3d::Zero(), 0.0, 0.0, 0.0}};
+      std::ostringstream text;
+      text << std::fixed;
+      text.precision(4);
+      text << (m.controller == ControllerKind::Siemens840D ? "TRAORI\n" : "") << "G64\n";
+      for (int k = 0; k < 60; ++k) {
+        Pose5 p = poses.back();
+        p.tip += Eigen::Vector3d(step(random), step(random), 0.2 * step(random));
+        p.a = std::clamp(p.a + turn(random), -40.0, 40.0);
+        p.c += turn(random);
+        p.feed = feed(random) / 60.0;
+        // Round as the text does, so that the bound and the simulation see the same path.
+        for (int i = 0; i < 3; ++i) p.tip[i] = std::round(p.tip[i] * 1e4) / 1e4;
+        p.a = std::round(p.a * 1e4) / 1e4;
+        p.c = std::round(p.c * 1e4) / 1e4;
+        text << "G1 X" << p.tip.x() << " Y" << p.tip.y() << " Z" << p.tip.z() << " A" << p.a << " C" << p.c << " F"
+             << p.feed * 60.0 << "\n";
+        poses.push_back(p);
+      }
+      const double simulated = run(text.str(), m).summary.totalTime, bound = jointLowerBound(poses, m);
+      EXPECT_GE(simulated, bound * (1.0 - 1e-6)) << name << " program " << program;
+      EXPECT_LT(simulated, 20.0 * bound) << name << " program " << program;  // and not absurdly slow
+    }
+  }
+}
+
+TEST(FiveAxisSimulation, FuzzedFiveAxisProgramsNeverCrash) {
+  const std::string seed =
+      "G21 G90\nTRAORI\nG0 X0 Y0 Z5 A10 C0\nG1 Z-1 F600\nG1 X10 A3=0.1 B3=0.2 C3=1\nG1 X20 C90 A-20\n"
+      "ORIMKS\nG1 Y5 A3=0 B3=0.01 C3=1\nG93\nG1 X0 A5 F30\nG94\nG2 X10 Y5 I5 J0 C120 F900\nTRAFOOF\nG1 X1 C0\nM30\n";
+  // The same program for the B/C machine: B where A turns.
+  std::string seedBC = seed;
+  for (const char* word : {" A10", " A-20", " A5"}) {
+    const size_t at = seedBC.find(word);
+    seedBC[at + 1] = 'B';
+  }
+  const std::string alphabet = "GXYZIJKFABC3=0123456789.-+ ()\n;TRAOIFWKSM%";
+  const std::vector<std::string> names = {"mikron-ucp710-ac-840d", "swivel-head-bc-840d", "linuxcnc-2.9-xyzac-trt",
+                                          "mikron-ucp710-840d"};
+  std::vector<MachineModel> machines;
+  for (const auto& name : names) machines.push_back(preset(name));
+  std::mt19937 random(23);
+  int simulated = 0, refused = 0;
+  for (int round = 0; round < 20000; ++round) {
+    const MachineModel& machine = machines[round % machines.size()];
+    std::string program = machine.kinematicsName() == "head-table" ? seedBC : seed;
+    const int edits = 1 + static_cast<int>(random() % 8);
+    for (int e = 0; e < edits; ++e) {
+      const size_t at = random() % (program.size() + 1);
+      switch (random() % 3) {
+        case 0: program.insert(at, 1, alphabet[random() % alphabet.size()]); break;
+        case 1: if (at < program.size()) program.erase(at, 1); break;
+        default: if (at < program.size()) program[at] = alphabet[random() % alphabet.size()];
+      }
+    }
+    try {
+      const SimulationResult r = run(program, machine);
+      ASSERT_TRUE(std::isfinite(r.summary.totalTime) && r.summary.totalTime >= 0.0) << program;
+      for (const BlockResult& b : r.blocks) ASSERT_TRUE(b.rotaryEnd.allFinite() && b.machineEnd.allFinite()) << program;
+      ++simulated;
+    } catch (const hsm::InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(simulated, 1000);
+  EXPECT_GT(refused, 1000);
 }
