@@ -33,12 +33,13 @@ def link_posts(repo):
     """Our posts into FreeCAD's Macro folder, where the Job's processor list looks for *_post.py."""
     macro_dir = os.path.join(FreeCAD.getUserAppDataDir(), "Macro")
     os.makedirs(macro_dir, exist_ok=True)
-    source = os.path.join(repo, "python", "hsmplanner", "app", "posts", "siemens840d_post.py")
-    link = os.path.join(macro_dir, "hsm_siemens840d_post.py")
-    if os.path.islink(link) or not os.path.exists(link):
-        if os.path.islink(link):
-            os.remove(link)
-        os.symlink(source, link)
+    for name in ("siemens840d", "linuxcnc5x"):
+        source = os.path.join(repo, "python", "hsmplanner", "app", "posts", name + "_post.py")
+        link = os.path.join(macro_dir, "hsm_%s_post.py" % name)
+        if os.path.islink(link) or not os.path.exists(link):
+            if os.path.islink(link):
+                os.remove(link)
+            os.symlink(source, link)
 
 
 if len(sys.argv) < 2:

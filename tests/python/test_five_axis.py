@@ -4,11 +4,18 @@ import os
 import re
 import unittest
 
+import FreeCAD
 import numpy as np
 
 import hsmplanner
 from hsmplanner import _core, feedsim
+from hsmplanner.app import finishing, master_feature_object
+from hsmplanner.app.compat import cam_module, create_job
+from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
 from helpers import REPO, run, temporary_directory
+
+GOLDEN = os.path.join(REPO, "tests", "golden")
+REGENERATE = os.environ.get("HSM_REGENERATE_GOLDEN") == "1"
 
 FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
 TRUNNION = "mikron-ucp710-ac-840d"
@@ -107,6 +114,93 @@ class Simulation(unittest.TestCase):
         five = hsmplanner.simulate("TRAORI\nG1 A0 C0 X0 F3000\n" + program, machine=TRUNNION).summary.total_time
         self.assertAlmostEqual(five, three, delta=0.01 * three)
         self.assertGreater(five, 0.0)
+
+
+
+class Posts(unittest.TestCase):
+    """The 5-axis posts on a small fixed operation whose moves carry A and C, against golden files, and read
+    back by the simulator on the machine they were posted for."""
+
+    LINES = ["(5-axis fixed program)", "G0 X0 Y0 Z5 A0 C0", "G1 X0 Y0 Z-1 F10", "G1 X20 Y0 Z-1 A10 C15",
+             "G1 X20 Y10 A20 C30", "G2 X20 Y20 Z-1 I0 J5 C40", "G1 X0 Y20 A-15 C60 F20", "G0 Z5 A0 C0"]
+
+    @classmethod
+    def setUpClass(cls):
+        cls.document = FreeCAD.newDocument("FiveAxisPosts")
+        cls.job = create_job([master_feature_object.create(cls.document)])
+        cls.controller = finishing.ball_end_controller(cls.job, 4.0, 4000.0)
+        cls.op = cam_module("custom_op").Create("Fixed5", parentJob=cls.job)
+        cls.op.Gcode = cls.LINES
+        cls.document.recompute()
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.document.Name)
+
+    def check(self, text, golden):
+        """Compares with the golden file; with HSM_REGENERATE_GOLDEN=1, writes it and skips the comparison."""
+        path = os.path.join(GOLDEN, golden)
+        if REGENERATE:
+            with open(path, "w") as stream:
+                stream.write(text)
+            self.skipTest("golden file %s regenerated (HSM_REGENERATE_GOLDEN=1): not compared" % golden)
+        with open(path) as stream:
+            self.assertEqual(text, stream.read(), "regenerate with HSM_REGENERATE_GOLDEN=1 if the change is meant")
+
+    def simulated(self, text, machine):
+        result = hsmplanner.simulate(text, machine, blocks=True, refuse_unknown_words=True)
+        self.assertEqual(result.summary.cutting_blocks, 5)
+        return result
+
+    def test_840d_angles(self):
+        text = siemens840d_post.export([self.job, self.controller, self.op], "-", "--machine=mikron-ucp710-ac-840d")
+        self.assertIn("TRAORI", text)
+        self.assertIn("A10 C15", text)
+        result = self.simulated(text, "mikron-ucp710-ac-840d")
+        np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
+        self.check(text, "siemens840d_5axis_angles.mpf")
+
+    def test_840d_vectors_give_the_same_angles_back(self):
+        text = siemens840d_post.export([self.job, self.controller, self.op], "-",
+                                       "--machine=mikron-ucp710-ac-840d --orientation=vectors")
+        self.assertIn("ORIWKS ORIVECT", text)
+        self.assertNotRegex(text, r" [AC]-?[\d.]+(\s|$)")  # no angles: vectors only
+        result = self.simulated(text, "mikron-ucp710-ac-840d")
+        # Every block ends with the tool axis the operation's angles give. The angles themselves may differ: from
+        # A20 C40 to A-15 C60 the great circle passes 2.6° from the pole, and the controller, following it, keeps
+        # A positive and turns C half a turn (A15 C-120), as a real 840D in ORIVECT does.
+        machine = feedsim.load_machine("mikron-ucp710-ac-840d")
+        wanted = [(0, 0), (0, 0), (10, 15), (20, 30), (20, 40), (-15, 60), (0, 0)]
+        for end, angles in zip(result.blocks["rotary_end"], wanted):
+            np.testing.assert_allclose(_core.forward_kinematics(machine, [0, 0, 0], list(end))[1],
+                                       _core.forward_kinematics(machine, [0, 0, 0], list(angles))[1], atol=1e-5)
+        np.testing.assert_allclose(result.blocks["rotary_end"][-2], [15.0, -120.0], atol=1e-3)
+        self.check(text, "siemens840d_5axis_vectors.mpf")
+
+    def test_linuxcnc_trt(self):
+        text = linuxcnc5x_post.export([self.job, self.controller, self.op], "-", "")
+        self.assertIn("G64 P0.01", text)
+        result = self.simulated(text, "linuxcnc-2.9-xyzac-trt")
+        np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
+        self.check(text, "linuxcnc_5axis_trt.ngc")
+
+    def test_bad_machines_are_refused_by_name(self):
+        objects = [self.job, self.controller, self.op]
+        with self.assertRaisesRegex(ValueError, "turn A but machine 'swivel-head-bc-840d' has rotary axes C, B"):
+            siemens840d_post.export(objects, "-", "--machine=swivel-head-bc-840d")
+        with self.assertRaisesRegex(ValueError, "orientation vectors need the machine"):
+            siemens840d_post.export(objects, "-", "--orientation=vectors")
+        with self.assertRaisesRegex(ValueError, "not a LinuxCNC machine with TCP kinematics"):
+            linuxcnc5x_post.export(objects, "-", "--machine=linuxcnc-2.9")
+        self.op.Gcode = self.LINES[:-1] + ["G1 X0 Y0 A-120 C0"]
+        self.document.recompute()
+        try:
+            with self.assertRaisesRegex(ValueError, r"Fixed5, move \d+: A-120 is outside the travel of A on "
+                                                    r"'linuxcnc-2.9-xyzac-trt' \[-100, 50\] deg"):
+                linuxcnc5x_post.export(objects, "-", "")
+        finally:
+            self.op.Gcode = self.LINES
+            self.document.recompute()
 
 
 if __name__ == "__main__":

@@ -1,0 +1,144 @@
+"""The block writer our posts share: N numbers, comments, modal words written only when they change, numbers
+without trailing zeros, feeds in mm/min, and the rotary axes of 4- and 5-axis programs.
+
+FreeCAD's Path commands carry the rotary axes as A, B, C (degrees) of the machine chosen for the Job; a post
+writes them as they are ("angles"), or, for the 840D with TRAORI, as the tool-axis vector they give on that
+machine ("vectors": A3= B3= C3=, which any 840D with its own kinematics turns back into its angles)."""
+import numpy as np
+
+MOTION = ("G0", "G1", "G2", "G3")
+ROTARY = "ABC"
+
+
+def rotary_axes_of(objects):
+    """The rotary axis letters (of A, B, C) that any Path command of `objects` moves."""
+    used = set()
+    for obj in objects:
+        path = getattr(obj, "Path", None)
+        if path is None or hasattr(obj, "Operations"):
+            continue
+        for command in path.Commands:
+            used.update(letter for letter in ROTARY if letter in command.Parameters)
+    return "".join(sorted(used))
+
+
+def check_rotary_axes(used, machine):
+    """ValueError when the program turns an axis `machine` (a MachineModel) has not."""
+    names = "".join(axis.name for axis in machine.rotary_axes)
+    missing = [letter for letter in used if letter not in names]
+    if missing:
+        raise ValueError("the operations turn %s but machine '%s' has %s: choose the Job's machine with --machine"
+                         % (", ".join(missing), machine.name,
+                            "rotary axes " + ", ".join(names) if names else "no rotary axes"))
+
+
+class ProgramWriter:
+    """Blocks of one program. `comment_format` wraps a comment ('; %s' on the 840D, '(%s)' on LinuxCNC);
+    `radius_letter` is how an arc's radius is written ('CR=' on the 840D)."""
+
+    def __init__(self, args, comment_format="; %s", radius_letter="R", rotary_mode="angles", machine=None):
+        self.args, self.lines, self.number = args, [], 0
+        self.modal = {}
+        self.comment_format, self.radius_letter = comment_format, radius_letter
+        self.rotary_mode, self.machine = rotary_mode, machine
+        self.angles = {letter: 0.0 for letter in ROTARY}
+        if rotary_mode == "vectors" and machine is None:
+            raise ValueError("orientation vectors need the machine whose A, B, C the operations give: --machine NAME")
+
+    def block(self, text):
+        if not self.args.no_line_numbers:
+            self.number += self.args.line_increment
+            text = "N%d %s" % (self.number, text)
+        self.lines.append(text)
+
+    def comment(self, text):
+        if not self.args.no_comments:
+            self.lines.append(self.comment_format % text.strip().strip("()").strip())
+
+    def number_word(self, letter, value, precision=None):
+        text = ("%." + str(self.args.precision if precision is None else precision) + "f") % value
+        text = text.rstrip("0").rstrip(".") if "." in text else text
+        return letter + (text if text not in ("-0", "") else "0")
+
+    def modal_word(self, key, word, words, always=False):
+        if always or self.modal.get(key) != word:
+            words.append(word)
+            self.modal[key] = word
+
+    def rotary_words(self, parameters, words):
+        if not any(letter in parameters for letter in ROTARY):
+            return
+        for letter in ROTARY:
+            if letter in parameters:
+                self.angles[letter] = parameters[letter]
+        if self.rotary_mode == "angles":
+            for letter in ROTARY:
+                if letter in parameters:
+                    self.modal_word(letter, self.number_word(letter, parameters[letter]), words)
+            return
+        from hsmplanner import _core
+        angles = [self.angles[axis.name] for axis in self.machine.rotary_axes] + [0.0]
+        _, axis = _core.forward_kinematics(self.machine, np.zeros(3), angles[:2])
+        vector = [self.number_word(letter, value, 6) for letter, value in zip(("A3=", "B3=", "C3="), axis)]
+        if self.modal.get("vector") != vector:  # all three: on the 840D a component not written is 0
+            words.extend(vector)
+            self.modal["vector"] = vector
+
+    def motion(self, command):
+        p = command.Parameters
+        name = command.Name
+        arc = name in ("G2", "G3")
+        words = []
+        self.modal_word("G", name, words, always=arc)
+        for axis in "XYZ":
+            if axis in p:
+                self.modal_word(axis, self.number_word(axis, p[axis]), words, always=arc)
+        self.rotary_words(p, words)
+        for offset in "IJK":
+            if offset in p and arc:
+                words.append(self.number_word(offset, p[offset]))
+        if "R" in p and arc:
+            words.append(self.number_word(self.radius_letter, p["R"]))
+        if "F" in p and name != "G0":
+            self.modal_word("F", self.number_word("F", p["F"] * 60.0), words)  # FreeCAD stores mm/s
+        if words and words != [name]:  # a motion word alone moves nothing
+            self.block(" ".join(words))
+
+    def tool(self, controller, call="T%d D1 M6"):
+        self.comment("tool: %s" % controller.Label)
+        self.block(call % controller.ToolNumber)
+        speed = getattr(controller, "SpindleSpeed", 0)
+        if speed:
+            self.block("S%d %s" % (speed, "M4" if getattr(controller, "SpindleDir", "Forward") == "Reverse" else "M3"))
+        self.modal.clear()
+
+    def command(self, command):
+        name = command.Name
+        if name.startswith("("):
+            self.comment(name)
+        elif name in MOTION:
+            self.motion(command)
+        elif name in ("M6",):
+            pass  # tool changes come from the tool controllers
+        else:
+            words = [name] + [self.number_word(k, v) for k, v in sorted(command.Parameters.items())]
+            self.block(" ".join(words))
+
+    def objects(self, objectslist, tool_call="T%d D1 M6"):
+        """The tool controllers and operations of `objectslist` in their order."""
+        for obj in objectslist:
+            if not hasattr(obj, "Path") or hasattr(obj, "Operations"):
+                continue
+            if hasattr(obj, "ToolNumber"):
+                self.tool(obj, tool_call)
+                continue
+            self.comment("operation: %s" % obj.Label)
+            for command in obj.Path.Commands:
+                self.command(command)
+
+    def text(self, filename):
+        text = "\n".join(self.lines) + "\n"
+        if filename and filename != "-":
+            with open(filename, "w") as stream:
+                stream.write(text)
+        return text
