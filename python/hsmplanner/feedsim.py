@@ -55,8 +55,13 @@ def _path_commands(program):
 
 
 def path_to_gcode(commands):
-    """G-code text of FreeCAD Path commands, with FreeCAD's feeds in mm/s."""
-    return "\n".join(c.toGCode() for c in commands) + "\n"
+    """G-code text of FreeCAD Path commands, with FreeCAD's feeds in mm/s. FreeCAD's paths are in the
+    workpiece frame: when moves carry A, B or C (the angles of the Job's machine), X Y Z are the tool tip, so the
+    text starts with TRAORI (the simulator's 'tool tip programmed' on any controller)."""
+    text = "\n".join(c.toGCode() for c in commands) + "\n"
+    if any(letter in c.Parameters for c in commands for letter in "ABC"):
+        text = "TRAORI\n" + text
+    return text
 
 
 def _trace_period(trace_period):

@@ -184,6 +184,21 @@ class Posts(unittest.TestCase):
         np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
         self.check(text, "linuxcnc_5axis_trt.ngc")
 
+    def test_feed_rate_analysis_of_a_five_axis_operation(self):
+        """The document's analysis reads the operation's A and C as the Job machine's, the tip programmed."""
+        from hsmplanner.app import feedrate_object
+
+        analysis = feedrate_object.create(self.op, "mikron-ucp710-ac-840d", self.document)
+        self.document.recompute()
+        try:
+            result = analysis.Proxy.ensure_result(analysis)
+            self.assertEqual(result.summary.cutting_blocks, 5)
+            np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
+            np.testing.assert_allclose(result.blocks["end"][-2], [0.0, 20.0, -1.0], atol=1e-9)  # the tip
+            self.assertIn("F", feedsim.speed_limit_shares(result.summary))
+        finally:
+            self.document.removeObject(analysis.Name)
+
     def test_bad_machines_are_refused_by_name(self):
         objects = [self.job, self.controller, self.op]
         with self.assertRaisesRegex(ValueError, "turn A but machine 'swivel-head-bc-840d' has rotary axes C, B"):

@@ -26,6 +26,13 @@ def summary_rows(summary):
     rows += [("%s F" % label, "%.1f %%" % (100 * share),
               "share of the cutting time spent at %s of the programmed feed F" % label)
              for label, share in zip(FEED_CLASS_LABELS, s.feed_classes_time)]
+    shares = feedsim.speed_limit_shares(s)
+    if shares:  # what held the speed: on 5 axes, which axis (C limited 18 % of the time)
+        everything = ", ".join("%s %.1f %%" % item for item in ((name, 100 * share) for name, share in shares.items()))
+        rows.append(("Held by", ", ".join("%s %.0f %%" % (name, 100 * share) for name, share in
+                                          list(shares.items())[:2]),
+                     "share of the time each limit held the speed (F: the programmed feed; X..C: that axis's "
+                     "velocity or acceleration; curvature; block rate): " + everything))
     return rows
 
 
@@ -51,7 +58,8 @@ class FeedRatePanel(AnalysisPanel):
         self.plots = PanelPlots(layout, 440, self.draw_plots, "Feed-rate analysis: %s" % self.obj.Label)
         self.figure = self.plots.figure
         self.export_button = QtWidgets.QPushButton("Export report…")
-        self.export_button.setToolTip("JSON summary, per-block CSV, histogram and feed-map PNGs")
+        self.export_button.setToolTip("JSON summary, per-block CSV, histogram and feed-map PNGs (and the rotary "
+                                      "axes over time on a 4- or 5-axis machine)")
         layout.addWidget(self.export_button)
         self.simulate_button.clicked.connect(self.simulate)
         self.color_by.currentTextChanged.connect(self.recolor)
@@ -116,6 +124,7 @@ class FeedRatePanel(AnalysisPanel):
     def export(self, folder):
         result = self.obj.Proxy.ensure_result(self.obj)
         stem = "%s_%s" % (self.obj.Source.Label, self.obj.Machine)
-        paths = feedsim.write_report(result, folder, stem, self.obj.Source.Label)
+        paths = feedsim.write_report(result, folder, stem, self.obj.Source.Label,
+                                     machine=self.obj.Proxy.machine(self.obj))
         self.message.setText("written: " + ", ".join(paths))
         return paths
