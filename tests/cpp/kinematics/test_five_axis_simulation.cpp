@@ -277,3 +277,20 @@ TEST(FiveAxisSimulation, FuzzedFiveAxisProgramsNeverCrash) {
   EXPECT_GT(simulated, 1000);
   EXPECT_GT(refused, 1000);
 }
+
+TEST(FiveAxisSimulation, MachineAxesProgrammedMoveEveryAxisLinearly) {
+  // LinuxCNC without TCP kinematics (trivkins with A and C joints): X Y Z are the machine's, all axes move
+  // linearly, F is the speed of X Y Z; the tool tip on the workpiece is where the forward kinematics put it.
+  MachineModel m = preset("linuxcnc-2.9-xyzac-trt");
+  m.toolTipProgrammed = false;
+  const SimulationResult r = run("G1 X10 Y0 Z0 A-30 C45 F1200\nG1 X20\n", m);
+  ASSERT_EQ(r.blocks.size(), 2u);
+  EXPECT_LT((r.blocks[1].machineEnd - Eigen::Vector3d(20, 0, 0)).norm(), 1e-12);
+  const ToolPose pose = forwardKinematics(m, {{20, 0, 0}, {-30.0, 45.0}});
+  EXPECT_LT((r.blocks[1].end - pose.tip).norm(), 1e-9);
+  // The second block moves X alone: 10 mm at F1200 with LinuxCNC's trapezoid (X: 2500 mm/s²) from rest (the
+  // rotary axes stop at the junction) to rest, at most with half of a on its ramps (LinuxCNC's last segment).
+  const double v = 20.0, a = m.maxAcceleration.x();
+  EXPECT_GE(r.blocks[1].time, 10.0 / v + v / a - 1e-9);
+  EXPECT_LE(r.blocks[1].time, 10.0 / v + 2.0 * v / a + 1e-9);
+}
