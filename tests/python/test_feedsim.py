@@ -105,7 +105,7 @@ class BadInput(unittest.TestCase):
             (lambda: hsmplanner.simulate(PROGRAM, 3), TypeError, "machine must be"),
             (lambda: hsmplanner.simulate(42), TypeError, "program must be"),
             (lambda: hsmplanner.simulate(PROGRAM, trace_period=-1), ValueError, "trace_period"),
-            (lambda: hsmplanner.simulate("G1 X1 F100 Q7 A3\n", refuse_unknown_words=True), ValueError, "'A3'"),
+            (lambda: hsmplanner.simulate("G1 X1 F100 Q7 U3\n", refuse_unknown_words=True), ValueError, "'U3'"),
         ]
         for call, error, message in cases:
             with self.subTest(message=message), self.assertRaisesRegex(error, message):

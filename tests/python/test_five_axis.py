@@ -12,10 +12,8 @@ from hsmplanner import _core, feedsim
 from hsmplanner.app import finishing, master_feature_object
 from hsmplanner.app.compat import cam_module, create_job
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
-from helpers import REPO, run, temporary_directory
+from helpers import REPO, check_golden, run, temporary_directory
 
-GOLDEN = os.path.join(REPO, "tests", "golden")
-REGENERATE = os.environ.get("HSM_REGENERATE_GOLDEN") == "1"
 
 FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
 TRUNNION = "mikron-ucp710-ac-840d"
@@ -137,16 +135,6 @@ class Posts(unittest.TestCase):
     def tearDownClass(cls):
         FreeCAD.closeDocument(cls.document.Name)
 
-    def check(self, text, golden):
-        """Compares with the golden file; with HSM_REGENERATE_GOLDEN=1, writes it and skips the comparison."""
-        path = os.path.join(GOLDEN, golden)
-        if REGENERATE:
-            with open(path, "w") as stream:
-                stream.write(text)
-            self.skipTest("golden file %s regenerated (HSM_REGENERATE_GOLDEN=1): not compared" % golden)
-        with open(path) as stream:
-            self.assertEqual(text, stream.read(), "regenerate with HSM_REGENERATE_GOLDEN=1 if the change is meant")
-
     def simulated(self, text, machine):
         result = hsmplanner.simulate(text, machine, blocks=True, refuse_unknown_words=True)
         self.assertEqual(result.summary.cutting_blocks, 5)
@@ -158,7 +146,7 @@ class Posts(unittest.TestCase):
         self.assertIn("A10 C15", text)
         result = self.simulated(text, "mikron-ucp710-ac-840d")
         np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
-        self.check(text, "siemens840d_5axis_angles.mpf")
+        check_golden(self, text, "siemens840d_5axis_angles.mpf")
 
     def test_840d_vectors_give_the_same_angles_back(self):
         text = siemens840d_post.export([self.job, self.controller, self.op], "-",
@@ -175,14 +163,14 @@ class Posts(unittest.TestCase):
             np.testing.assert_allclose(_core.forward_kinematics(machine, [0, 0, 0], list(end))[1],
                                        _core.forward_kinematics(machine, [0, 0, 0], list(angles))[1], atol=1e-5)
         np.testing.assert_allclose(result.blocks["rotary_end"][-2], [15.0, -120.0], atol=1e-3)
-        self.check(text, "siemens840d_5axis_vectors.mpf")
+        check_golden(self, text, "siemens840d_5axis_vectors.mpf")
 
     def test_linuxcnc_trt(self):
         text = linuxcnc5x_post.export([self.job, self.controller, self.op], "-", "")
         self.assertIn("G64 P0.01", text)
         result = self.simulated(text, "linuxcnc-2.9-xyzac-trt")
         np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
-        self.check(text, "linuxcnc_5axis_trt.ngc")
+        check_golden(self, text, "linuxcnc_5axis_trt.ngc")
 
     def test_feed_rate_analysis_of_a_five_axis_operation(self):
         """The document's analysis reads the operation's A and C as the Job machine's, the tip programmed."""

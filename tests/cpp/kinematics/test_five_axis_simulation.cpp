@@ -2,6 +2,8 @@
 #include "kinematics/five_axis.hpp"
 #include "kinematics/simulation.hpp"
 
+#include "support/mutation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -255,16 +257,8 @@ TEST(FiveAxisSimulation, FuzzedFiveAxisProgramsNeverCrash) {
   int simulated = 0, refused = 0;
   for (int round = 0; round < 20000; ++round) {
     const MachineModel& machine = machines[round % machines.size()];
-    std::string program = machine.kinematicsName() == "head-table" ? seedBC : seed;
-    const int edits = 1 + static_cast<int>(random() % 8);
-    for (int e = 0; e < edits; ++e) {
-      const size_t at = random() % (program.size() + 1);
-      switch (random() % 3) {
-        case 0: program.insert(at, 1, alphabet[random() % alphabet.size()]); break;
-        case 1: if (at < program.size()) program.erase(at, 1); break;
-        default: if (at < program.size()) program[at] = alphabet[random() % alphabet.size()];
-      }
-    }
+    const std::string program =
+        hsm::test::mutated(machine.kinematicsName() == "head-table" ? seedBC : seed, alphabet, random);
     try {
       const SimulationResult r = run(program, machine);
       ASSERT_TRUE(std::isfinite(r.summary.totalTime) && r.summary.totalTime >= 0.0) << program;

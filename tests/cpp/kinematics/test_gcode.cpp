@@ -1,5 +1,7 @@
 #include "kinematics/gcode.hpp"
 
+#include "support/mutation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,16 +152,7 @@ TEST(Gcode, FuzzedProgramsNeverCrash) {
   std::mt19937 random(11);
   int parsed = 0, refused = 0;
   for (int round = 0; round < 20000; ++round) {
-    std::string program = seed;
-    const int edits = 1 + static_cast<int>(random() % 8);
-    for (int e = 0; e < edits; ++e) {
-      const size_t at = random() % (program.size() + 1);
-      switch (random() % 3) {
-        case 0: program.insert(at, 1, alphabet[random() % alphabet.size()]); break;
-        case 1: if (at < program.size()) program.erase(at, 1); break;
-        default: if (at < program.size()) program[at] = alphabet[random() % alphabet.size()];
-      }
-    }
+    const std::string program = hsm::test::mutated(seed, alphabet, random);
     try {
       for (const Block& b : readProgram(program)) {
         ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());

@@ -11,7 +11,8 @@ within their travel. G64 P blends within the tolerance; feeds in mm/min.
 import argparse
 import shlex
 
-from hsmplanner.app.posts.writer import ROTARY, ProgramWriter, check_rotary_axes, rotary_axes_of
+from hsmplanner.app.posts.writer import (ROTARY, ProgramWriter, add_common_arguments, check_rotary_axes,
+                                         rotary_axes_of)
 
 TOOLTIP = "LinuxCNC 2.9, 5 axes with TCP kinematics (xyzac-trt): tool tip X Y Z and A B C, G64 P, feeds in mm/min"
 
@@ -19,13 +20,7 @@ parser = argparse.ArgumentParser(prog="hsm_linuxcnc5x", add_help=False)
 parser.add_argument("--machine", default="linuxcnc-2.9-xyzac-trt",
                     help="the machine (preset name or JSON file) whose rotary axes the Job's A B C are")
 parser.add_argument("--tolerance", type=float, default=0.01, help="G64 P blending tolerance, mm (default 0.01)")
-parser.add_argument("--precision", type=int, default=4, help="decimals of coordinates (default 4)")
-parser.add_argument("--no-line-numbers", action="store_true", help="no N numbers")
-parser.add_argument("--line-increment", type=int, default=10, help="N step (default 10)")
-parser.add_argument("--no-comments", action="store_true", help="leave out comments")
-parser.add_argument("--program-name", default="", help="name in the header (default: the Job's label)")
-parser.add_argument("--no-show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
-parser.add_argument("--show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
+add_common_arguments(parser, precision=4)
 TOOLTIP_ARGS = parser.format_help()
 
 

@@ -15,23 +15,17 @@ controller interpolates the tool axis on the great circle in the workpiece frame
 import argparse
 import shlex
 
-from hsmplanner.app.posts.writer import ProgramWriter, check_rotary_axes, rotary_axes_of
+from hsmplanner.app.posts.writer import ProgramWriter, add_common_arguments, check_rotary_axes, rotary_axes_of
 
 TOOLTIP = "Siemens 840D: CYCLE832(tolerance), G642, SOFT, ';' comments, N numbers, feeds in mm/min"
 
 parser = argparse.ArgumentParser(prog="hsm_siemens840d", add_help=False)
 parser.add_argument("--tolerance", type=float, default=0.01, help="CYCLE832 tolerance, mm (default 0.01)")
-parser.add_argument("--precision", type=int, default=3, help="decimals of coordinates (default 3)")
-parser.add_argument("--no-line-numbers", action="store_true", help="no N numbers")
-parser.add_argument("--line-increment", type=int, default=10, help="N step (default 10)")
-parser.add_argument("--no-comments", action="store_true", help="leave out ';' comments")
-parser.add_argument("--program-name", default="", help="name in the header (default: the Job's label)")
 parser.add_argument("--orientation", choices=("angles", "vectors"), default="angles",
                     help="5-axis moves: the machine's A B C as given, or tool-axis vectors A3 B3 C3 (needs --machine)")
 parser.add_argument("--machine", default="", help="the machine of the Job's A B C (a preset name or JSON file): "
                     "checks the rotary axes, and gives the vectors")
-parser.add_argument("--no-show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
-parser.add_argument("--show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
+add_common_arguments(parser, precision=3)
 TOOLTIP_ARGS = parser.format_help()
 
 

@@ -10,6 +10,19 @@ MOTION = ("G0", "G1", "G2", "G3")
 ROTARY = "ABC"
 
 
+def add_common_arguments(parser, precision):
+    """The options every post of ours takes: number format, N numbers, comments, program name, and FreeCAD's
+    editor flags (accepted, not used)."""
+    parser.add_argument("--precision", type=int, default=precision, help="decimals of coordinates (default %d)"
+                        % precision)
+    parser.add_argument("--no-line-numbers", action="store_true", help="no N numbers")
+    parser.add_argument("--line-increment", type=int, default=10, help="N step (default 10)")
+    parser.add_argument("--no-comments", action="store_true", help="leave out comments")
+    parser.add_argument("--program-name", default="", help="name in the header (default: the Job's label)")
+    parser.add_argument("--no-show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
+    parser.add_argument("--show-editor", action="store_true", help="(accepted for FreeCAD compatibility)")
+
+
 def rotary_axes_of(objects):
     """The rotary axis letters (of A, B, C) that any Path command of `objects` moves."""
     used = set()
