@@ -1,0 +1,101 @@
+// 5-axis roughing, part 2: sweeping the sub-volumes of a partition (roughing.hpp) into toolpaths.
+//
+// Each sub-volume is swept by contour-parallel passes ("offsets of the boundaries", Chen 2011) on its slicing
+// surface, the tool axis normal to it with zero lead and tilt (the paper's choice). This file has the planar
+// slicings, S1 and S3: 3-axis and 3+2-axis paths, one fixed tool axis per partition.
+//
+// A slice of a planar partition lies between two planes; the tool's tip sits on its far plane (the tool axis
+// points out through the near one, towards the spindle) and clears the slice's material above it. At that level:
+//   region    the slice projected on the plane (its sections at the top, the middle and the bottom, united);
+//   shadow    the part wherever it stands above the tip's plane, or within the allowance below it, projected
+//             on the plane (the union of its triangles' projections, cut at that height): a straight tool
+//             along the axis must keep its radius and the allowance away from it;
+//   domain    region shrunk by the tool radius less an overhang of 10 % of the diameter (the outer pass goes
+//             slightly past the slice's outline, through the crossable faces), minus the shadow grown by the
+//             radius, the allowance and the mesh's deflection: where the tool's centre may go;
+//   passes    the domain's boundary, then its offsets inwards every radial step (the radial engagement times
+//             the diameter), closed loops from the outside in; each loop is a pass.
+// 2-D offsets and booleans are Clipper's (Debian's libpolyclipping, Boost licence), in integers of 0.1 µm;
+// bench_roughing compares them with OCCT's planar offset (BRepOffsetAPI_MakeOffset) on the same regions.
+//
+// Links: from a loop to the next, a straight move at the level when it stays in the domain, else a retract
+// along the tool axis to `clearance` above the stock, a rapid over, and back down. Entries: a plunge where the
+// tool's disk at the entry lies outside the slice's material (its region), else a ramp along the loop at most
+// `rampAngleDeg` steep from the level above (a torus or flat tool does not plunge into full material).
+// Levels are taken from the crossable face inwards, so that every level is entered from cleared material.
+#pragma once
+
+#include "common/progress.hpp"
+#include "roughing/roughing.hpp"
+
+#include <Eigen/Core>
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+namespace hsm::roughing {
+
+enum class CutterKind { Flat, Torus, Ball };
+
+// The cutter and what holds it, mm. The radius of the cutter at a height h above its tip is `profileRadius`.
+struct Cutter {
+  CutterKind kind = CutterKind::Torus;
+  double diameter = 8.0;       // the paper's FRAISA torus: Ø8, corner radius 1
+  double cornerRadius = 1.0;   // flat: 0; ball: diameter / 2
+  double fluteLength = 20.0;   // cutting length from the tip
+  double shankDiameter = 8.0;
+  double stickOut = 40.0;      // from the tip to the holder
+  double holderDiameter = 32.0, holderLength = 40.0;
+  double radius() const { return 0.5 * diameter; }
+  double profileRadius(double h) const;
+};
+std::string cutterKindName(CutterKind kind);
+// InputError naming the field for a cutter that cannot exist (a corner radius beyond the radius, a flute
+// longer than the stick-out, a shank wider than the holder…) or sizes out of 0.1–100 mm.
+void checkCutter(const Cutter& cutter);
+
+struct SweepSettings {
+  Cutter cutter;
+  double radialEngagement = 0.7;  // radial step between neighbouring passes, as a share of the diameter
+  double allowance = 0.5;         // mm of stock left on the part
+  double tolerance = 0.01;        // mm: chords of the passes and of the shapes' sections
+  double rampAngleDeg = 3.0;      // entries into material ramp at most this steep
+  double clearance = 5.0;         // mm beyond the stock along the tool axis where links travel
+  double meshDeflection = 0.02;   // mm: the part's triangles, for its shadow (added to the allowance)
+  ProgressCallback progress;
+};
+
+enum class MoveKind { Rapid, Plunge, Ramp, Cut, Link };
+std::string moveKindName(MoveKind kind);
+
+// The tool's tip (its lowest point along the axis) and its axis (unit, from the tip towards the spindle), in
+// the part's frame, at the end of a move; moves are straight.
+struct ToolMove {
+  MoveKind kind = MoveKind::Cut;
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  int subVolume = -1;  // index in the partition's sub-volumes (−1 for links between them)
+};
+
+// One closed pass at a level, as swept: for the checks of the tests and the pictures.
+struct Pass {
+  int subVolume = 0, ring = 0;               // ring: 0 for the domain's boundary, k for its k-th offset
+  std::vector<Eigen::Vector3d> points;       // the tip's loop (first point not repeated)
+};
+
+struct SweepResult {
+  std::vector<ToolMove> moves;               // from the first entry to the last retract
+  std::vector<Pass> passes;
+  double cuttingLength = 0.0, rampLength = 0.0, linkLength = 0.0, rapidLength = 0.0;  // mm
+  int retracts = 0, ramps = 0, plunges = 0;
+  std::vector<std::string> warnings;
+};
+
+// The partition's sub-volumes swept (S1 and S3; the other strategies are not swept yet: InputError). `solid`
+// is the partition's volume to remove, `stock` and `part` the shapes it came from. Cancelled when `progress`
+// returns false. InputError for bad settings (an engagement outside ]0, 1], an allowance below 0, …).
+SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part,
+                  const TopoDS_Shape& stock, const SweepSettings& settings);
+
+}  // namespace hsm::roughing

@@ -1,0 +1,410 @@
+// Planar slicings swept by contour-parallel passes (sweep.hpp): the region, shadow and domain of each level in
+// Clipper's integer plane, its offsets, then entries, loops and links as tool moves.
+#include "roughing/sweep.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+#include "geometry/mesh.hpp"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hsm::roughing {
+
+namespace {
+namespace cl = ClipperLib;
+constexpr double kScale = 1e4;  // Clipper units per mm: 0.1 µm
+constexpr int kMaxRings = 10000;
+constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
+
+// The plane of the passes: tool axis `a` (towards the spindle), u and v across it.
+struct Frame {
+  Eigen::Vector3d a, u, v;
+  explicit Frame(const Eigen::Vector3d& axis) : a(axis.normalized()) {
+    u = a.unitOrthogonal();
+    v = a.cross(u);
+  }
+  double height(const Eigen::Vector3d& p) const { return a.dot(p); }
+  cl::IntPoint plane(const Eigen::Vector3d& p) const {
+    return {static_cast<cl::cInt>(std::llround(u.dot(p) * kScale)), static_cast<cl::cInt>(std::llround(v.dot(p) * kScale))};
+  }
+  Eigen::Vector3d point(const cl::IntPoint& q, double h) const {
+    return u * (static_cast<double>(q.X) / kScale) + v * (static_cast<double>(q.Y) / kScale) + a * h;
+  }
+};
+
+cl::Paths offset(const cl::Paths& paths, double mm, double tolerance) {
+  cl::ClipperOffset offsetter(2.0, std::max(1.0, tolerance * kScale));
+  offsetter.AddPaths(paths, cl::jtRound, cl::etClosedPolygon);
+  cl::Paths result;
+  offsetter.Execute(result, mm * kScale);
+  return result;
+}
+
+cl::Paths boolean(cl::ClipType type, const cl::Paths& a, const cl::Paths& b) {
+  cl::Clipper clipper;
+  clipper.AddPaths(a, cl::ptSubject, true);
+  clipper.AddPaths(b, cl::ptClip, true);
+  cl::Paths result;
+  clipper.Execute(type, result, cl::pftNonZero, cl::pftNonZero);
+  return result;
+}
+
+// The union of the mesh's triangles projected on the plane, each cut to its part at or above `fromHeight`
+// (−∞: whole): what stands over the plane, seen along the axis.
+cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Frame& frame, double fromHeight) {
+  cl::Paths pieces;
+  pieces.reserve(mesh.triangles.size());
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+    const double h[3] = {frame.height(p[0]), frame.height(p[1]), frame.height(p[2])};
+    if (std::max({h[0], h[1], h[2]}) < fromHeight) continue;
+    std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      if (h[i] >= fromHeight) kept.push_back(p[i]);
+      if ((h[i] >= fromHeight) != (h[j] >= fromHeight))
+        kept.push_back(p[i] + (p[j] - p[i]) * ((fromHeight - h[i]) / (h[j] - h[i])));
+    }
+    cl::Path path;
+    for (const Eigen::Vector3d& q : kept) path.push_back(frame.plane(q));
+    if (path.size() < 3) continue;
+    if (!cl::Orientation(path)) cl::ReversePath(path);  // all counter-clockwise: their union is non-zero
+    if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
+  }
+  cl::Clipper clipper;
+  clipper.AddPaths(pieces, cl::ptSubject, true);
+  cl::Paths result;
+  clipper.Execute(cl::ctUnion, result, cl::pftNonZero, cl::pftNonZero);
+  return result;
+}
+
+double pathLength(const cl::Path& path) {
+  double length = 0.0;
+  for (size_t i = 1; i < path.size(); ++i)
+    length += std::hypot(double(path[i].X - path[i - 1].X), double(path[i].Y - path[i - 1].Y));
+  return length / kScale;
+}
+
+// Whether the straight segment a–b lies in the domain (within the tolerance).
+bool segmentInside(const cl::IntPoint& a, const cl::IntPoint& b, const cl::Paths& domain, double tolerance) {
+  cl::Clipper clipper;
+  clipper.AddPath(cl::Path{a, b}, cl::ptSubject, false);
+  clipper.AddPaths(domain, cl::ptClip, true);
+  cl::PolyTree tree;
+  clipper.Execute(cl::ctIntersection, tree, cl::pftNonZero, cl::pftNonZero);
+  cl::Paths open;
+  cl::OpenPathsFromPolyTree(tree, open);
+  double inside = 0.0;
+  for (const cl::Path& p : open) inside += pathLength(p);
+  return inside >= pathLength(cl::Path{a, b}) - tolerance;
+}
+
+// Distance (mm) from q to the nearest point of the paths' boundaries, and whether q is inside them.
+double distanceToBoundary(const cl::IntPoint& q, const cl::Paths& paths) {
+  double best = std::numeric_limits<double>::infinity();
+  const Eigen::Vector2d p(double(q.X), double(q.Y));
+  for (const cl::Path& path : paths)
+    for (size_t i = 0; i < path.size(); ++i) {
+      const Eigen::Vector2d a(double(path[i].X), double(path[i].Y));
+      const cl::IntPoint& nb = path[(i + 1) % path.size()];
+      const Eigen::Vector2d b(double(nb.X), double(nb.Y));
+      const Eigen::Vector2d d = b - a;
+      const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      best = std::min(best, (a + t * d - p).norm());
+    }
+  return best / kScale;
+}
+
+bool insidePaths(const cl::IntPoint& q, const cl::Paths& paths) {
+  int winding = 0;
+  for (const cl::Path& path : paths) {
+    const int in = cl::PointInPolygon(q, path);
+    if (in != 0) winding += cl::Orientation(path) ? 1 : -1;
+  }
+  return winding > 0;
+}
+
+struct Level {
+  int subVolume = 0;
+  double tip = 0.0, top = 0.0;  // heights along the axis: the tip's plane and the slice's near side
+  cl::Paths region, domain;
+  std::vector<cl::Paths> rings;
+};
+
+class PlanarSweeper {
+public:
+  PlanarSweeper(const Partition& partition, const TopoDS_Shape& part, const TopoDS_Shape& stock,
+                const SweepSettings& settings)
+      : partition_(partition), settings_(settings),
+        frame_(-partition.subVolumes.front().surface.direction),
+        partMesh_(geometry::meshFaces(part, settings.meshDeflection)) {
+    const geometry::TriangleMesh stockMesh = geometry::meshFaces(stock, std::max(0.05, settings.meshDeflection));
+    double high = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, frame_.height(p));
+    safeHeight_ = high + settings.clearance;
+  }
+
+  SweepResult run() {
+    const int count = static_cast<int>(partition_.subVolumes.size());
+    for (int i = 0; i < count; ++i) {
+      if (settings_.progress && !settings_.progress(double(i) / count)) throw Cancelled("sweep");
+      Level level = makeLevel(i);
+      if (level.rings.empty()) {
+        result_.warnings.push_back("slice " + std::to_string(partition_.subVolumes[i].slice) +
+                                   ": the tool fits nowhere in it (narrower than the tool, or under the part)");
+        continue;
+      }
+      sweepLevel(level);
+    }
+    if (!result_.moves.empty()) retract();
+    if (settings_.progress) settings_.progress(1.0);
+    return std::move(result_);
+  }
+
+private:
+  Level makeLevel(int index) {
+    const SubVolume& sub = partition_.subVolumes[index];
+    Level level;
+    level.subVolume = index;
+    level.top = frame_.height(sub.surface.origin);
+    const geometry::TriangleMesh mesh = geometry::meshFaces(sub.shape, settings_.meshDeflection);
+    double low = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& p : mesh.vertices) low = std::min(low, frame_.height(p));
+    level.tip = std::max(level.top - partition_.step, low);
+    raiseOverFloor(level);
+    const double radius = settings_.cutter.radius();
+    level.region = projectedUnion(mesh, frame_, -std::numeric_limits<double>::infinity());
+    const cl::Paths shadow = projectedUnion(partMesh_, frame_, level.tip - settings_.allowance);
+    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter), settings_.tolerance);
+    const cl::Paths keepOut = offset(shadow, radius + settings_.allowance + settings_.meshDeflection, settings_.tolerance);
+    level.domain = boolean(cl::ctDifference, inner, keepOut);
+    const double step = settings_.radialEngagement * settings_.cutter.diameter;
+    for (int k = 0; k < kMaxRings; ++k) {
+      cl::Paths ring = k == 0 ? level.domain : offset(level.domain, -k * step, settings_.tolerance);
+      cl::CleanPolygons(ring, settings_.tolerance * kScale);
+      if (ring.empty()) break;
+      level.rings.push_back(std::move(ring));
+    }
+    return level;
+  }
+
+  // A face of the part parallel to the plane within the allowance under the tip (a floor): the tip stays the
+  // allowance above it, or the whole floor would be out of reach.
+  void raiseOverFloor(Level& level) const {
+    double floor = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3i& t : partMesh_.triangles) {
+      const Eigen::Vector3d& p0 = partMesh_.vertices[t[0]];
+      const Eigen::Vector3d n = (partMesh_.vertices[t[1]] - p0).cross(partMesh_.vertices[t[2]] - p0);
+      if (!(n.norm() > 0.0) || n.normalized().dot(frame_.a) < 1.0 - 1e-6) continue;
+      const double h = frame_.height(p0);
+      if (h > level.tip - settings_.allowance - 1e-9 && h < level.tip + settings_.allowance) floor = std::max(floor, h);
+    }
+    if (std::isfinite(floor) && floor + settings_.allowance < level.top) level.tip = floor + settings_.allowance;
+  }
+
+  void add(MoveKind kind, const Eigen::Vector3d& tip, int subVolume) {
+    if (!result_.moves.empty()) {
+      const double length = (tip - result_.moves.back().tip).norm();
+      if (length < 1e-9) return;
+      switch (kind) {
+        case MoveKind::Cut: result_.cuttingLength += length; break;
+        case MoveKind::Ramp: case MoveKind::Plunge: result_.rampLength += length; break;
+        case MoveKind::Link: result_.linkLength += length; break;
+        case MoveKind::Rapid: result_.rapidLength += length; break;
+      }
+    }
+    result_.moves.push_back({kind, tip, frame_.a, subVolume});
+  }
+
+  void retract() {
+    const Eigen::Vector3d& at = result_.moves.back().tip;
+    add(MoveKind::Rapid, at + frame_.a * (safeHeight_ - frame_.height(at)), -1);
+    ++result_.retracts;
+  }
+
+  // Where an entry reaches the level: on the loop's segment from point `index` to the next, at `point`.
+  struct Arrival {
+    size_t index;
+    cl::IntPoint point;
+  };
+
+  // Down to the loop's start: a plunge where the tool's disk is clear of the slice's material, else a ramp
+  // along the loop from the slice's near side. The full loop is then cut from where the tool reaches the level.
+  Arrival enter(const Level& level, const cl::Path& loop, size_t start) {
+    const Eigen::Vector3d first = frame_.point(loop[start], level.top + 1.0);
+    if (result_.moves.empty()) add(MoveKind::Rapid, frame_.point(loop[start], safeHeight_), -1);
+    else if (frame_.height(result_.moves.back().tip) > safeHeight_ - 1e-9)
+      add(MoveKind::Rapid, frame_.point(loop[start], safeHeight_), -1);
+    add(MoveKind::Rapid, first, level.subVolume);
+    const bool clear = !insidePaths(loop[start], level.region) &&
+                       distanceToBoundary(loop[start], level.region) >= settings_.cutter.radius();
+    if (clear) {
+      add(MoveKind::Plunge, frame_.point(loop[start], level.tip), level.subVolume);
+      ++result_.plunges;
+      return {start, loop[start]};
+    }
+    // Ramp: the height falls linearly with the path along the loop, round it as often as needed.
+    const double drop = level.top + 1.0 - level.tip;
+    const double rampLength = drop / std::tan(settings_.rampAngleDeg * M_PI / 180.0);
+    double travelled = 0.0;
+    size_t i = start;
+    while (travelled < rampLength - 1e-9) {
+      const size_t j = (i + 1) % loop.size();
+      const double segment = std::hypot(double(loop[j].X - loop[i].X), double(loop[j].Y - loop[i].Y)) / kScale;
+      if (segment <= 0.0) {
+        i = j;
+        continue;
+      }
+      const double take = std::min(segment, rampLength - travelled);
+      travelled += take;
+      const double f = take / segment;
+      const cl::IntPoint q{static_cast<cl::cInt>(loop[i].X + f * (loop[j].X - loop[i].X)),
+                           static_cast<cl::cInt>(loop[i].Y + f * (loop[j].Y - loop[i].Y))};
+      add(MoveKind::Ramp, frame_.point(q, level.top + 1.0 - drop * travelled / rampLength), level.subVolume);
+      if (take < segment) {  // the ramp ends inside the segment
+        ++result_.ramps;
+        return {i, q};
+      }
+      i = j;
+    }
+    ++result_.ramps;
+    return {i, loop[i]};
+  }
+
+  // The whole loop at the level from `from` (on the segment after point `from.index`) round to it again.
+  void cutLoop(const Level& level, const cl::Path& loop, const Arrival& from, int ring) {
+    Pass pass;
+    pass.subVolume = level.subVolume;
+    pass.ring = ring;
+    for (size_t k = 1; k <= loop.size(); ++k) {
+      const Eigen::Vector3d p = frame_.point(loop[(from.index + k) % loop.size()], level.tip);
+      add(MoveKind::Cut, p, level.subVolume);
+      pass.points.push_back(p);
+    }
+    add(MoveKind::Cut, frame_.point(from.point, level.tip), level.subVolume);
+    result_.passes.push_back(std::move(pass));
+  }
+
+  void sweepLevel(const Level& level) {
+    bool entered = false;
+    for (size_t k = 0; k < level.rings.size(); ++k) {
+      std::vector<bool> done(level.rings[k].size(), false);
+      for (size_t n = 0; n < level.rings[k].size(); ++n) {
+        // The nearest loop to where the tool is, and its nearest point.
+        const cl::IntPoint here = entered ? frame_.plane(result_.moves.back().tip) : level.rings[k][0][0];
+        size_t best = 0, bestPoint = 0;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (size_t l = 0; l < level.rings[k].size(); ++l) {
+          if (done[l]) continue;
+          const cl::Path& loop = level.rings[k][l];
+          for (size_t p = 0; p < loop.size(); ++p) {
+            const double d = std::hypot(double(loop[p].X - here.X), double(loop[p].Y - here.Y));
+            if (d < bestDistance) bestDistance = d, best = l, bestPoint = p;
+          }
+        }
+        done[best] = true;
+        const cl::Path& loop = level.rings[k][best];
+        if (loop.size() < 3) continue;
+        Arrival from{bestPoint, loop[bestPoint]};
+        if (entered && segmentInside(here, loop[bestPoint], level.domain, settings_.tolerance)) {
+          add(MoveKind::Link, frame_.point(loop[bestPoint], level.tip), level.subVolume);
+        } else {
+          if (entered) retract();
+          from = enter(level, loop, bestPoint);
+        }
+        entered = true;
+        cutLoop(level, loop, from, static_cast<int>(k));
+      }
+    }
+    retract();
+  }
+
+  const Partition& partition_;
+  const SweepSettings& settings_;
+  Frame frame_;
+  geometry::TriangleMesh partMesh_;
+  double safeHeight_ = 0.0;
+  SweepResult result_;
+};
+
+void checkSettings(const SweepSettings& s) {
+  checkCutter(s.cutter);
+  auto check = [](double value, double low, double high, const std::string& what, const std::string& fix) {
+    if (!(value >= low && value <= high))
+      throw InputError(what + " = " + number(value) + " is outside [" + number(low) + ", " + number(high) + "]: " + fix);
+  };
+  if (!(s.radialEngagement > 0.0 && s.radialEngagement <= 1.0))
+    throw InputError("radial engagement = " + number(s.radialEngagement) +
+                     " must be in ]0, 1] (a share of the tool's diameter; the paper uses 0.7)");
+  check(s.allowance, 0.0, 10.0, "allowance", "the stock left on the part, mm (default 0.5)");
+  check(s.tolerance, 1e-4, 1.0, "tolerance", "mm (default 0.01)");
+  check(s.rampAngleDeg, 0.5, 90.0, "ramp angle", "degrees (default 3)");
+  check(s.clearance, 0.0, 1000.0, "clearance", "mm above the stock for links (default 5)");
+  check(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "mm (default 0.02)");
+}
+}  // namespace
+
+double Cutter::profileRadius(double h) const {
+  const double r = kind == CutterKind::Flat ? 0.0 : kind == CutterKind::Ball ? radius() : cornerRadius;
+  if (h <= 0.0) return radius() - r;
+  if (h >= r) return h <= stickOut ? radius() : 0.5 * holderDiameter;
+  return radius() - r + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
+}
+
+std::string cutterKindName(CutterKind kind) {
+  switch (kind) {
+    case CutterKind::Flat: return "flat";
+    case CutterKind::Torus: return "torus";
+    case CutterKind::Ball: return "ball";
+  }
+  return "?";
+}
+
+std::string moveKindName(MoveKind kind) {
+  switch (kind) {
+    case MoveKind::Rapid: return "rapid";
+    case MoveKind::Plunge: return "plunge";
+    case MoveKind::Ramp: return "ramp";
+    case MoveKind::Cut: return "cut";
+    case MoveKind::Link: return "link";
+  }
+  return "?";
+}
+
+void checkCutter(const Cutter& c) {
+  auto size = [](double value, const std::string& what) {
+    if (!(value >= 0.1 && value <= 100.0))
+      throw InputError("cutter " + what + " = " + number(value) + " mm is outside [0.1, 100] mm");
+  };
+  size(c.diameter, "diameter");
+  size(c.fluteLength, "flute length");
+  size(c.shankDiameter, "shank diameter");
+  size(c.stickOut, "stick-out");
+  size(c.holderDiameter, "holder diameter");
+  size(c.holderLength, "holder length");
+  if (c.kind == CutterKind::Torus && !(c.cornerRadius > 0.0 && c.cornerRadius < c.radius()))
+    throw InputError("torus cutter: corner radius " + number(c.cornerRadius) + " mm must be in ]0, " +
+                     number(c.radius()) + "[ mm (half the diameter); use a ball or a flat cutter otherwise");
+  if (c.fluteLength > c.stickOut)
+    throw InputError("cutter flute length " + number(c.fluteLength) + " mm is longer than its stick-out " +
+                     number(c.stickOut) + " mm: the holder would cover the flutes");
+  if (c.shankDiameter > c.holderDiameter)
+    throw InputError("cutter shank Ø" + number(c.shankDiameter) + " mm is wider than its holder Ø" +
+                     number(c.holderDiameter) + " mm");
+}
+
+SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part,
+                  const TopoDS_Shape& stock, const SweepSettings& settings) {
+  (void)solid;
+  checkSettings(settings);
+  if (partition.strategy != Strategy::PlanesParallelToFace && partition.strategy != Strategy::SetupPlanes)
+    throw InputError(strategyName(partition.strategy) + " is not swept yet: planar slicings (S1, S3) are");
+  if (partition.subVolumes.empty()) throw InputError("the partition has no sub-volumes to sweep");
+  return PlanarSweeper(partition, part, stock, settings).run();
+}
+
+}  // namespace hsm::roughing

@@ -1,0 +1,172 @@
+#include "common/error.hpp"
+#include "roughing/parts.hpp"
+#include "roughing/roughing.hpp"
+#include "roughing/sweep.hpp"
+
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <gp_Ax2.hxx>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace hsm;
+using namespace hsm::roughing;
+
+namespace {
+// A slot wide enough for two rings of passes at the paper's engagement (30 mm: 21 mm for the tool's centre).
+SlantedSlotParameters wideSlot() {
+  SlantedSlotParameters p;
+  p.slotWidth = 30.0;
+  p.length = 100.0;
+  return p;
+}
+
+struct SlotCase {
+  PartAndStock shapes = slantedSlotBlock(wideSlot());
+  VolumeToRemove volume = volumeToRemove(shapes.stock, shapes.part);
+};
+
+const SlotCase& slot() {
+  static const SlotCase c;
+  return c;
+}
+
+SweepResult sweepOf(Strategy strategy, const SweepSettings& settings = {}, Partition* kept = nullptr) {
+  const SlotCase& c = slot();
+  Partition partition = roughing::partition(c.volume.solids.front(), c.shapes.part, strategy);
+  SweepResult result = sweep(partition, c.volume.solids.front(), c.shapes.part, c.shapes.stock, settings);
+  if (kept) *kept = std::move(partition);
+  return result;
+}
+
+double distanceToLoop(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& loop) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d& a = loop[i];
+    const Eigen::Vector3d d = loop[(i + 1) % loop.size()] - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * d - p).norm());
+  }
+  return best;
+}
+
+// Independent of the generator: OCCT's exact distance from the part to a cylinder of the tool's radius from
+// its tip up the axis over the stick-out (it holds the torus tool: a check on it is on the safe side).
+double clearance(const TopoDS_Shape& part, const ToolMove& move, const Cutter& cutter) {
+  const gp_Ax2 axis(gp_Pnt(move.tip.x(), move.tip.y(), move.tip.z()), gp_Dir(move.axis.x(), move.axis.y(), move.axis.z()));
+  const TopoDS_Shape tool = BRepPrimAPI_MakeCylinder(axis, cutter.radius(), cutter.stickOut).Shape();
+  BRepExtrema_DistShapeShape distance(tool, part);
+  EXPECT_TRUE(distance.IsDone());
+  BRepClass3d_SolidClassifier inside(part, axis.Location(), 1e-7);
+  return inside.State() == TopAbs_IN ? -1.0 : distance.Value();
+}
+}  // namespace
+
+TEST(Sweep, SlotPlanesKeepOneAxisTheEngagementAndTheAllowance) {
+  Partition partition;
+  const SweepSettings settings;
+  const SweepResult r = sweepOf(Strategy::PlanesParallelToFace, settings, &partition);
+  ASSERT_FALSE(r.passes.empty());
+  ASSERT_FALSE(r.moves.empty());
+  // S1: every tool axis is the same, normal to the slicing planes, out through the top face.
+  for (const ToolMove& m : r.moves) EXPECT_GT(m.axis.dot(r.moves.front().axis), 1.0 - 1e-12);
+  EXPECT_GT(r.moves.front().axis.dot(-partition.subVolumes.front().surface.direction), 1.0 - 1e-12);
+  // Neighbouring passes of a level are the radial engagement apart (0.7 × 8 = 5.6 mm), everywhere on them.
+  const double step = settings.radialEngagement * settings.cutter.diameter;
+  int pairs = 0;
+  for (const Pass& inner : r.passes) {
+    if (inner.ring == 0) continue;
+    std::vector<const Pass*> outer;
+    for (const Pass& p : r.passes)
+      if (p.subVolume == inner.subVolume && p.ring == inner.ring - 1) outer.push_back(&p);
+    ASSERT_FALSE(outer.empty());
+    for (const Eigen::Vector3d& q : inner.points) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Pass* p : outer) d = std::min(d, distanceToLoop(q, p->points));
+      EXPECT_NEAR(d, step, 0.05) << "sub-volume " << inner.subVolume << " ring " << inner.ring;
+    }
+    ++pairs;
+  }
+  EXPECT_GT(pairs, 0);
+  // No tool position closer to the part than the allowance − 0.01 mm: every cut, ramp and link move, every
+  // 5 mm along it.
+  const TopoDS_Shape& part = slot().shapes.part;
+  int checked = 0;
+  double closest = std::numeric_limits<double>::infinity();
+  for (size_t i = 1; i < r.moves.size(); ++i) {
+    if (r.moves[i].kind == MoveKind::Rapid) continue;
+    const Eigen::Vector3d from = r.moves[i - 1].tip, to = r.moves[i].tip;
+    const int samples = 1 + static_cast<int>((to - from).norm() / 5.0);
+    for (int k = 1; k <= samples; ++k) {
+      ToolMove at = r.moves[i];
+      at.tip = from + (to - from) * (double(k) / samples);
+      closest = std::min(closest, clearance(part, at, settings.cutter));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+  EXPECT_GE(closest, settings.allowance - 0.01);
+  EXPECT_LT(closest, settings.allowance + 0.2) << "the passes go as close as the allowance lets them";
+}
+
+TEST(Sweep, EntriesRampIntoMaterialAndLinksRetractAlongTheAxis) {
+  SweepSettings settings;
+  const SweepResult r = sweepOf(Strategy::PlanesParallelToFace, settings);
+  EXPECT_GT(r.ramps, 0);
+  const double slope = std::tan(settings.rampAngleDeg * M_PI / 180.0);
+  for (size_t i = 1; i < r.moves.size(); ++i) {
+    const ToolMove& m = r.moves[i];
+    const Eigen::Vector3d d = m.tip - r.moves[i - 1].tip;
+    const double along = d.dot(m.axis), across = (d - along * m.axis).norm();
+    if (m.kind == MoveKind::Ramp) {
+      EXPECT_LE(-along, slope * across * 1.001 + 1e-6) << "move " << i;
+    }
+    if (m.kind == MoveKind::Cut || m.kind == MoveKind::Link) {
+      EXPECT_NEAR(along, 0.0, 1e-9) << "move " << i;
+    }
+  }
+  // Every retract ends at one height above the stock, along the axis.
+  double safe = -std::numeric_limits<double>::infinity();
+  for (const ToolMove& m : r.moves) safe = std::max(safe, m.tip.dot(m.axis));
+  EXPECT_GT(r.retracts, 0);
+  EXPECT_NEAR(r.moves.back().tip.dot(r.moves.back().axis), safe, 1e-9);
+  EXPECT_GT(r.cuttingLength, 0.0);
+}
+
+TEST(Sweep, SetupPlanesSweepAlongTheSetupDirection) {
+  Partition partition;
+  const SweepResult r = sweepOf(Strategy::SetupPlanes, {}, &partition);
+  ASSERT_FALSE(r.moves.empty());
+  for (const ToolMove& m : r.moves) EXPECT_GT(m.axis.dot(partition.setupDirection), 1.0 - 1e-9);
+  int cuts = 0;
+  for (const ToolMove& m : r.moves) cuts += m.kind == MoveKind::Cut;
+  EXPECT_GT(cuts, 10);
+}
+
+TEST(Sweep, BadSettingsAreRefusedByName) {
+  auto message = [](const SweepSettings& s, Strategy strategy = Strategy::PlanesParallelToFace) {
+    try {
+      sweepOf(strategy, s);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  SweepSettings s;
+  s.radialEngagement = 0.0;
+  EXPECT_NE(message(s).find("radial engagement = 0 must be in ]0, 1]"), std::string::npos);
+  s = {};
+  s.allowance = -1.0;
+  EXPECT_NE(message(s).find("allowance = -1 is outside"), std::string::npos);
+  s = {};
+  s.cutter.cornerRadius = 4.0;
+  EXPECT_NE(message(s).find("corner radius 4 mm must be in ]0, 4["), std::string::npos);
+  s = {};
+  s.cutter.fluteLength = 60.0;
+  EXPECT_NE(message(s).find("longer than its stick-out"), std::string::npos);
+  EXPECT_NE(message({}, Strategy::StockOffsets).find("not swept yet"), std::string::npos);
+}
