@@ -53,15 +53,39 @@ cl::Paths boolean(cl::ClipType type, const cl::Paths& a, const cl::Paths& b) {
   return result;
 }
 
+// A rectangle of the plane, in Clipper units: what is outside it does not matter for a level.
+struct Window {
+  double x0 = -std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  bool misses(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) const {
+    return std::max({a.X, b.X, c.X}) < x0 || std::min({a.X, b.X, c.X}) > x1 || std::max({a.Y, b.Y, c.Y}) < y0 ||
+           std::min({a.Y, b.Y, c.Y}) > y1;
+  }
+};
+
+Window windowAround(const cl::Paths& paths, double margin) {
+  Window w;
+  if (paths.empty()) return w;
+  const cl::IntRect r = [&] {
+    cl::Clipper c;
+    c.AddPaths(paths, cl::ptSubject, true);
+    return c.GetBounds();
+  }();
+  w.x0 = double(r.left) - margin * kScale, w.x1 = double(r.right) + margin * kScale;
+  w.y0 = double(r.top) - margin * kScale, w.y1 = double(r.bottom) + margin * kScale;
+  return w;
+}
+
 // The union of the mesh's triangles projected on the plane, each cut to its part at or above `fromHeight`
-// (−∞: whole): what stands over the plane, seen along the axis.
-cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Frame& frame, double fromHeight) {
+// (−∞: whole), leaving out those outside `window`: what stands over the plane, seen along the axis.
+cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Frame& frame, double fromHeight,
+                         const Window& window = {}) {
   cl::Paths pieces;
   pieces.reserve(mesh.triangles.size());
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
     const double h[3] = {frame.height(p[0]), frame.height(p[1]), frame.height(p[2])};
     if (std::max({h[0], h[1], h[2]}) < fromHeight) continue;
+    if (window.misses(frame.plane(p[0]), frame.plane(p[1]), frame.plane(p[2]))) continue;
     std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
@@ -178,7 +202,10 @@ private:
     raiseOverFloor(level);
     const double radius = settings_.cutter.radius();
     level.region = projectedUnion(mesh, frame_, -std::numeric_limits<double>::infinity());
-    const cl::Paths shadow = projectedUnion(partMesh_, frame_, level.tip - settings_.allowance);
+    // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
+    const double margin = radius + settings_.allowance + settings_.meshDeflection + 1.0;
+    const cl::Paths shadow = projectedUnion(partMesh_, frame_, level.tip - settings_.allowance,
+                                            windowAround(level.region, margin));
     const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter), settings_.tolerance);
     const cl::Paths keepOut = offset(shadow, radius + settings_.allowance + settings_.meshDeflection, settings_.tolerance);
     level.domain = boolean(cl::ctDifference, inner, keepOut);

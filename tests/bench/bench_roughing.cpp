@@ -1,9 +1,25 @@
-// 5-axis roughing part 1 on the paper's test part, the 7-blade impeller (issue 14's figures: stock − part
-// < 2 s, each partition of a channel < 5 s, the setup search of S3 < 5 s, one core). Prints each step's time
-// (best of `runs`), the counts and the check that the sub-volumes add up; the setup search on 1 and 2
-// threads in the same run. Run: build/bin/bench_roughing [runs]
+// 5-axis roughing on the paper's test part, the 7-blade impeller. Part 1 (issue 14's figures: stock − part
+// < 2 s, each partition of a channel < 5 s, the setup search of S3 < 5 s, one core): each step's time (best of
+// `runs`), the counts and the check that the sub-volumes add up; the setup search on 1 and 2 threads in the
+// same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the planar sweeps of every
+// channel, and the 2-D offsets of one level by Clipper and by OCCT's BRepOffsetAPI_MakeOffset.
+// Run: build/bin/bench_roughing [runs]
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
+#include "roughing/sweep.hpp"
+
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepOffsetAPI_MakeOffset.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <BRepAdaptor_Curve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <polyclipping/clipper.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +41,82 @@ double bestOf(int runs, const std::function<void()>& work) {
   return best;
 }
 }  // namespace
+
+// Part 2: S1 and S3 swept on every channel (partitions not counted), one core.
+void sweeps(const PartAndStock& wheel, const VolumeToRemove& volume, int runs) {
+  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::SetupPlanes}) {
+    std::vector<Partition> partitions;
+    for (const RemovalSolid& solid : volume.solids) partitions.push_back(partition(solid, wheel.part, strategy));
+    size_t moves = 0, passes = 0;
+    double length = 0.0;
+    const double t = bestOf(runs, [&] {
+      moves = passes = 0;
+      length = 0.0;
+      for (size_t i = 0; i < partitions.size(); ++i) {
+        const SweepResult r = sweep(partitions[i], volume.solids[i], wheel.part, wheel.stock, {});
+        moves += r.moves.size();
+        passes += r.passes.size();
+        length += r.cuttingLength + r.rampLength + r.linkLength;
+      }
+    });
+    std::printf("sweep %-22s %5.2f s for %zu channels (target < 10 s): %zu passes, %zu moves, %.0f mm of cutting path\n",
+                strategyName(strategy).c_str(), t, partitions.size(), passes, moves, length);
+  }
+}
+
+// Part 2: contour-parallel offsets of one planar section of the channel every 5.6 mm inwards until nothing is
+// left, by Clipper (the wires as polygons within 0.01 mm) and by OCCT's planar offset of the face.
+void offsets(const RemovalSolid& channel) {
+  Bnd_Box box;
+  BRepBndLib::Add(channel.solid, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  const gp_Pln plane(gp_Pnt(0, 0, 0.5 * (z0 + z1)), gp_Dir(0, 0, 1));
+  const TopoDS_Shape section = BRepAlgoAPI_Common(channel.solid, BRepBuilderAPI_MakeFace(plane, -500, 500, -500, 500).Face()).Shape();
+  TopExp_Explorer faces(section, TopAbs_FACE);
+  if (!faces.More()) return;
+  const TopoDS_Face face = TopoDS::Face(faces.Current());
+  const double step = 1.0;  // many rings: the offsets' cost shows
+  int occtRings = 0, clipperRings = 0;
+  const double occt = bestOf(3, [&] {
+    occtRings = 0;
+    for (int k = 1; k < 100; ++k) {
+      BRepOffsetAPI_MakeOffset offset(face, GeomAbs_Arc);
+      offset.Perform(-k * step);
+      if (!offset.IsDone() || offset.Shape().IsNull()) break;
+      TopExp_Explorer edges(offset.Shape(), TopAbs_EDGE);
+      if (!edges.More()) break;
+      ++occtRings;
+    }
+  });
+  const double clipper = bestOf(3, [&] {
+    ClipperLib::Paths polygon;
+    for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
+      ClipperLib::Path path;
+      for (BRepTools_WireExplorer e(TopoDS::Wire(wires.Current()), face); e.More(); e.Next()) {
+        BRepAdaptor_Curve curve(e.Current());
+        GCPnts_QuasiUniformDeflection points(curve, 0.01);
+        const bool reversed = e.Current().Orientation() == TopAbs_REVERSED;
+        for (int i = 1; i < points.NbPoints(); ++i) {
+          const gp_Pnt p = points.Value(reversed ? points.NbPoints() - i + 1 : i);
+          path.push_back({static_cast<ClipperLib::cInt>(p.X() * 1e4), static_cast<ClipperLib::cInt>(p.Y() * 1e4)});
+        }
+      }
+      polygon.push_back(path);
+    }
+    clipperRings = 0;
+    for (int k = 1; k < 100; ++k) {
+      ClipperLib::ClipperOffset offset(2.0, 100.0);
+      offset.AddPaths(polygon, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+      ClipperLib::Paths ring;
+      offset.Execute(ring, -k * step * 1e4);
+      if (ring.empty()) break;
+      ++clipperRings;
+    }
+  });
+  std::printf("offsets of a section every %.1f mm: Clipper %.1f ms (%d rings), OCCT MakeOffset %.1f ms (%d rings): "
+              "Clipper %.0f x faster\n", step, 1e3 * clipper, clipperRings, 1e3 * occt, occtRings, occt / clipper);
+}
 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
@@ -62,5 +154,7 @@ int main(int argc, char** argv) {
     std::printf("setup search, %d thread%s: %.2f s (target < 5 s on one), direction (%.3f, %.3f, %.3f) reaches %.1f %%\n",
                 threads, threads > 1 ? "s" : "", t, found.first.x(), found.first.y(), found.first.z(), 100.0 * found.second);
   }
+  sweeps(wheel, volume, runs);
+  offsets(channel);
   return 0;
 }
