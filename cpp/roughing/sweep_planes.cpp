@@ -207,7 +207,9 @@ private:
     const cl::Paths shadow = projectedUnion(partMesh_, frame_, level.tip - settings_.allowance,
                                             windowAround(level.region, margin));
     const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter), settings_.tolerance);
-    const cl::Paths keepOut = offset(shadow, radius + settings_.allowance + settings_.meshDeflection, settings_.tolerance);
+    // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
+    const cl::Paths keepOut = offset(shadow, radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
+                                     settings_.tolerance);
     level.domain = boolean(cl::ctDifference, inner, keepOut);
     const double step = settings_.radialEngagement * settings_.cutter.diameter;
     for (int k = 0; k < kMaxRings; ++k) {

@@ -6,6 +6,7 @@
 // Run: build/bin/bench_roughing [runs]
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
+#include "roughing/clearance.hpp"
 #include "roughing/sweep.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
@@ -27,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 
 using namespace hsm::roughing;
 
@@ -61,6 +63,27 @@ void sweeps(const PartAndStock& wheel, const VolumeToRemove& volume, int runs) {
     });
     std::printf("sweep %-22s %5.2f s for %zu channels (target < 10 s): %zu passes, %zu moves, %.0f mm of cutting path\n",
                 strategyName(strategy).c_str(), t, partitions.size(), passes, moves, length);
+    // The independent clearance check of the whole strategy, every 1 mm of every move.
+    std::vector<SweepResult> results;
+    for (size_t i = 0; i < partitions.size(); ++i)
+      results.push_back(sweep(partitions[i], volume.solids[i], wheel.part, wheel.stock, {}));
+    long positions = 0, tooClose = 0;
+    double least = 1e300;
+    const SweepSettings defaults;
+    std::unique_ptr<ClearanceChecker> prepared;
+    const double meshing = bestOf(1, [&] { prepared = std::make_unique<ClearanceChecker>(wheel.part); });
+    const double check = meshing + bestOf(1, [&] {
+      const ClearanceChecker& checker = *prepared;
+      for (const SweepResult& r : results) {
+        const ClearanceReport c = checker.check(r.moves, defaults.cutter, defaults.allowance - 0.01, 1.0);
+        positions += c.positions;
+        tooClose += c.tooClose;
+        least = std::min(least, c.minimum);
+      }
+    });
+    std::printf("  clearance check %.2f s (target < 10 s; the part's mesh and grid %.2f s of it): %ld positions every 1 mm, "
+                "closest %.3f mm (allowance %.2f), %ld closer than allowance - 0.01\n", check, meshing, positions, least,
+                defaults.allowance, tooClose);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "common/error.hpp"
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
+#include "roughing/clearance.hpp"
 #include "roughing/sweep.hpp"
 
 #include <BRepClass3d_SolidClassifier.hxx>
@@ -169,4 +170,35 @@ TEST(Sweep, BadSettingsAreRefusedByName) {
   s.cutter.fluteLength = 60.0;
   EXPECT_NE(message(s).find("longer than its stick-out"), std::string::npos);
   EXPECT_NE(message({}, Strategy::StockOffsets).find("not swept yet"), std::string::npos);
+}
+
+TEST(Clearance, AgreesWithOcctAndFindsAGouge) {
+  SweepSettings settings;
+  const SweepResult r = sweepOf(Strategy::PlanesParallelToFace, settings);
+  const TopoDS_Shape& part = slot().shapes.part;
+  const ClearanceReport report = checkClearance(r.moves, part, settings.cutter, settings.allowance - 0.01, 1.0);
+  EXPECT_EQ(report.tooClose, 0) << "worst move " << report.worstMove << " at " << report.minimum << " mm";
+  EXPECT_GE(report.minimum, settings.allowance - 0.01);
+  EXPECT_LT(report.minimum, settings.allowance + 0.2);
+  EXPECT_GT(report.positions, 500);
+  // The mesh check and OCCT's exact distance agree where the tool is near the part (cut moves, within 2 mm).
+  int compared = 0;
+  for (size_t i = 0; i < r.moves.size(); ++i) {
+    if (r.moves[i].kind != MoveKind::Cut) continue;
+    const ClearanceReport one = checkClearance({r.moves[i]}, part, settings.cutter, 0.0, 1.0);
+    const double exact = clearance(part, r.moves[i], settings.cutter);
+    if (exact > 2.0) continue;
+    EXPECT_NEAR(one.minimum, exact, 0.02) << "move " << i;
+    ++compared;
+  }
+  EXPECT_GT(compared, 5);
+  // One millimetre across the slot (X): the passes along one wall cut into it, and the report says where.
+  std::vector<ToolMove> lowered = r.moves;
+  for (ToolMove& m : lowered) m.tip += Eigen::Vector3d::UnitX();
+  const ClearanceReport gouge = checkClearance(lowered, part, settings.cutter, settings.allowance - 0.01, 1.0);
+  EXPECT_GT(gouge.tooClose, 0);
+  EXPECT_LT(gouge.minimum, 0.0) << "the tool is in the part";
+  ASSERT_GE(gouge.worstMove, 0);
+  EXPECT_NE(lowered[static_cast<size_t>(gouge.worstMove)].kind, MoveKind::Rapid);
+  EXPECT_THROW(checkClearance(r.moves, part, settings.cutter, 0.49, 0.0), InputError);
 }

@@ -1,0 +1,260 @@
+#include "roughing/clearance.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+#include "geometry/mesh.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+namespace hsm::roughing {
+
+namespace {
+constexpr long kMaxPositions = 10000000;
+
+// Triangles bucketed in a uniform grid of cubes, for the ones near a tool position.
+class TriangleGrid {
+public:
+  TriangleGrid(const geometry::TriangleMesh& mesh, double cell) : mesh_(mesh), cell_(cell) {
+    centres_.reserve(mesh.triangles.size());
+    radii_.reserve(mesh.triangles.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+      Eigen::AlignedBox3d box;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k) {
+        box.extend(mesh.vertices[mesh.triangles[t][k]]);
+        centre += mesh.vertices[mesh.triangles[t][k]] / 3.0;
+      }
+      double radius = 0.0;
+      for (int k = 0; k < 3; ++k) radius = std::max(radius, (mesh.vertices[mesh.triangles[t][k]] - centre).norm());
+      centres_.push_back(centre);
+      radii_.push_back(radius);
+      forCells(box, [&](long key) { cells_[key].push_back(static_cast<int>(t)); }, 0);
+    }
+  }
+
+  // Every triangle within `radius` of the segment a–b (by its cell, then by its bounding sphere), each once
+  // (`seen` is scratch space of the mesh's size).
+  template <class Visit>
+  void near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius, std::vector<int>& seen, int stamp,
+            Visit&& visit) const {
+    Eigen::AlignedBox3d box(a.cwiseMin(b), a.cwiseMax(b));
+    box.min().array() -= radius;
+    box.max().array() += radius;
+    const double cellReach = radius + 0.5 * std::sqrt(3.0) * cell_;
+    forCells(box, [&](long key, const Eigen::Vector3d& centre) {
+      if (segmentDistance(centre, a, b) > cellReach) return;
+      const auto it = cells_.find(key);
+      if (it == cells_.end()) return;
+      for (int t : it->second)
+        if (seen[t] != stamp) {
+          seen[t] = stamp;
+          if (segmentDistance(centres_[t], a, b) <= radius + radii_[t]) visit(t);
+        }
+    });
+  }
+
+private:
+  static double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d d = b - a;
+    const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+    return (a + t * d - p).norm();
+  }
+  template <class Each>
+  void forCells(const Eigen::AlignedBox3d& box, Each&& each) const {
+    const Eigen::Vector3i lo = (box.min() / cell_).array().floor().cast<int>();
+    const Eigen::Vector3i hi = (box.max() / cell_).array().floor().cast<int>();
+    for (int i = lo.x(); i <= hi.x(); ++i)
+      for (int j = lo.y(); j <= hi.y(); ++j)
+        for (int k = lo.z(); k <= hi.z(); ++k) each(key(i, j, k), Eigen::Vector3d((i + 0.5) * cell_, (j + 0.5) * cell_, (k + 0.5) * cell_));
+  }
+  template <class Each>
+  void forCells(const Eigen::AlignedBox3d& box, Each&& each, int) const {
+    forCells(box, [&](long key, const Eigen::Vector3d&) { each(key); });
+  }
+  static long key(int i, int j, int k) {
+    return (static_cast<long>(i) & 0x1FFFFF) | ((static_cast<long>(j) & 0x1FFFFF) << 21) |
+           ((static_cast<long>(k) & 0x1FFFFF) << 42);
+  }
+  const geometry::TriangleMesh& mesh_;
+  double cell_;
+  std::unordered_map<long, std::vector<int>> cells_;
+  std::vector<Eigen::Vector3d> centres_;  // per triangle: the centroid and the radius that holds it
+  std::vector<double> radii_;
+};
+
+// Plan distance (across the axis) from the axis point to a convex polygon of the plane: 0 when it contains it.
+// A polygon seen edge-on (a wall along the axis) has no inside: only its edges count.
+double planDistance(const std::vector<Eigen::Vector2d>& polygon) {
+  if (polygon.empty()) return std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity(), area = 0.0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+    const Eigen::Vector2d d = b - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp(-a.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * d).norm());
+    area += a.x() * b.y() - a.y() * b.x();
+  }
+  if (!(std::abs(area) > 1e-9) || best == 0.0) return best;
+  const double orientation = area > 0.0 ? 1.0 : -1.0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d d = polygon[(i + 1) % polygon.size()] - a;
+    if (orientation * (d.x() * (-a.y()) - d.y() * (-a.x())) < 0.0) return best;  // the origin is outside
+  }
+  return 0.0;
+}
+
+// The triangle (tool frame: x, y across the axis, z = height above the tip) clipped to lo ≤ z ≤ hi.
+std::vector<Eigen::Vector3d> clipSlab(const std::vector<Eigen::Vector3d>& polygon, double lo, double hi) {
+  auto clip = [](const std::vector<Eigen::Vector3d>& in, double level, bool keepAbove) {
+    std::vector<Eigen::Vector3d> out;
+    for (size_t i = 0; i < in.size(); ++i) {
+      const Eigen::Vector3d& a = in[i];
+      const Eigen::Vector3d& b = in[(i + 1) % in.size()];
+      const bool ka = keepAbove ? a.z() >= level : a.z() <= level, kb = keepAbove ? b.z() >= level : b.z() <= level;
+      if (ka) out.push_back(a);
+      if (ka != kb) out.push_back(a + (b - a) * ((level - a.z()) / (b.z() - a.z())));
+    }
+    return out;
+  };
+  return clip(clip(polygon, lo, true), hi, false);
+}
+
+std::vector<Eigen::Vector2d> plan(const std::vector<Eigen::Vector3d>& polygon) {
+  std::vector<Eigen::Vector2d> out;
+  for (const Eigen::Vector3d& p : polygon) out.emplace_back(p.x(), p.y());
+  return out;
+}
+
+// Distance from a point to the tool's bottom disk (radius r, at z = 0, centre on the axis).
+double toDisk(const Eigen::Vector3d& p, double r) {
+  return std::hypot(std::max(0.0, std::hypot(p.x(), p.y()) - r), p.z());
+}
+
+// Distance from a convex polygon under the tip (z ≤ 0) to the bottom disk: a convex function over a convex
+// set, so its least value is where the plane's nearest point to the disk falls, if that is inside the polygon,
+// else on an edge (each searched by ternary search: convex along it).
+double diskDistance(const std::vector<Eigen::Vector3d>& polygon, double r) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector3d& a = polygon[i];
+    const Eigen::Vector3d& b = polygon[(i + 1) % polygon.size()];
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 40; ++k) {
+      const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+      if (toDisk(a + (b - a) * m1, r) <= toDisk(a + (b - a) * m2, r)) hi = m2;
+      else lo = m1;
+    }
+    best = std::min({best, toDisk(a, r), toDisk(a + (b - a) * (0.5 * (lo + hi)), r)});
+  }
+  if (polygon.size() < 3) return best;
+  Eigen::Vector3d n = (polygon[1] - polygon[0]).cross(polygon[2] - polygon[0]);
+  if (!(n.norm() > 1e-12)) return best;
+  n.normalize();
+  if (n.z() < 0.0) n = -n;  // towards the disk's side
+  // The disk's point nearest the plane: its rim point against the plane's slope (the centre if level), and
+  // that point's projection on the plane.
+  const Eigen::Vector2d slope(n.x(), n.y());
+  const Eigen::Vector3d rim = slope.norm() > 1e-12 ? Eigen::Vector3d(-r * slope.x() / slope.norm(), -r * slope.y() / slope.norm(), 0.0)
+                                                   : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d foot = rim - n * n.dot(rim - polygon[0]);
+  std::vector<Eigen::Vector2d> shifted;  // is the foot inside the polygon? (plan test around the foot)
+  const Eigen::Vector3d e1 = (polygon[1] - polygon[0]).normalized(), e2 = n.cross(e1);
+  for (const Eigen::Vector3d& p : polygon) shifted.emplace_back(e1.dot(p - foot), e2.dot(p - foot));
+  if (planDistance(shifted) == 0.0) best = std::min(best, toDisk(foot, r));
+  return best;
+}
+
+// Distance from the tool (cylinder of radius r over 0 ≤ z ≤ length) to a triangle given in the tool's frame:
+// exact below the stick-out; the part above it left out (the holder's check).
+double toolDistance(const std::vector<Eigen::Vector3d>& triangle, double r, double length) {
+  double best = std::numeric_limits<double>::infinity();
+  const std::vector<Eigen::Vector3d> slab = clipSlab(triangle, 0.0, length);
+  if (!slab.empty()) best = std::max(0.0, planDistance(plan(slab)) - r);
+  const std::vector<Eigen::Vector3d> below = clipSlab(triangle, -1e300, 0.0);
+  if (!below.empty()) best = std::min(best, diskDistance(below, r));
+  return best;
+}
+}  // namespace
+
+struct ClearanceChecker::Impl {
+  Impl(const TopoDS_Shape& part, double deflection)
+      : deflection(deflection), mesh(geometry::meshFaces(part, deflection)), grid(mesh, kCell) {}
+  static constexpr double kCell = 4.0;  // mm: the grid's cubes
+  double deflection;
+  geometry::TriangleMesh mesh;
+  TriangleGrid grid;
+};
+
+ClearanceChecker::ClearanceChecker(const TopoDS_Shape& part, double deflection) {
+  if (!(deflection >= 0.001 && deflection <= 1.0))
+    throw InputError("clearance check: deflection " + number(deflection) + " mm is outside [0.001, 1] mm");
+  impl_ = std::make_unique<Impl>(part, deflection);
+}
+
+ClearanceChecker::~ClearanceChecker() = default;
+
+ClearanceReport ClearanceChecker::check(const std::vector<ToolMove>& moves, const Cutter& cutter, double limit,
+                                        double spacing) const {
+  checkCutter(cutter);
+  if (!(spacing >= 0.01 && spacing <= 100.0))
+    throw InputError("clearance check: spacing " + number(spacing) + " mm is outside [0.01, 100] mm");
+  long total = static_cast<long>(moves.size());
+  for (size_t i = 1; i < moves.size(); ++i) {
+    total += static_cast<long>((moves[i].tip - moves[i - 1].tip).norm() / spacing);
+    if (total > kMaxPositions)
+      throw InputError("clearance check: more than " + std::to_string(kMaxPositions) + " positions at " + number(spacing) +
+                       " mm: use a larger spacing");
+  }
+  const geometry::TriangleMesh& mesh = impl_->mesh;
+  const double deflection = impl_->deflection;
+  const double r = cutter.radius(), length = cutter.stickOut;
+  const double reach = std::max(limit, 0.0) + 2.0;  // triangles farther than this from the tool do not matter
+  std::vector<int> seen(mesh.triangles.size(), -1);
+  int stamp = 0;
+  ClearanceReport report;
+  report.minimum = std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Vector3d> local(3);
+  auto checkAt = [&](const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, int move) {
+    const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+    double least = reach;
+    impl_->grid.near(tip - axis * reach, tip + axis * length, r + reach, seen, stamp++, [&](int t) {
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d d = mesh.vertices[mesh.triangles[t][k]] - tip;
+        local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d));
+      }
+      // Quick rejections: wholly above the stick-out, or farther across than the reach.
+      if (std::min({local[0].z(), local[1].z(), local[2].z()}) > length) return;
+      if (std::max({local[0].z(), local[1].z(), local[2].z()}) < -least) return;
+      least = std::min(least, toolDistance(local, r, length));
+    });
+    least -= deflection;
+    ++report.positions;
+    if (least < limit) ++report.tooClose;
+    if (least < report.minimum) {
+      report.minimum = least;
+      report.worstMove = move;
+      report.worstTip = tip;
+    }
+  };
+  for (size_t i = 0; i < moves.size(); ++i) {
+    const Eigen::Vector3d from = i > 0 ? moves[i - 1].tip : moves[i].tip;
+    const int samples = i > 0 ? 1 + static_cast<int>((moves[i].tip - from).norm() / spacing) : 1;
+    for (int k = 1; k <= samples; ++k)
+      checkAt(from + (moves[i].tip - from) * (double(k) / samples), moves[i].axis, static_cast<int>(i));
+  }
+  return report;
+}
+
+ClearanceReport checkClearance(const std::vector<ToolMove>& moves, const TopoDS_Shape& part, const Cutter& cutter,
+                               double limit, double spacing, double deflection) {
+  return ClearanceChecker(part, deflection).check(moves, cutter, limit, spacing);
+}
+
+}  // namespace hsm::roughing

@@ -1,0 +1,54 @@
+// An independent clearance check of a roughing toolpath against the finished part: how close the tool comes,
+// everywhere along the moves, measured on the part's own triangles (not on the sweep's shadows and offsets).
+//
+// The tool is taken as a cylinder of the cutter's radius from its tip up the axis over the stick-out: it holds
+// a torus, ball or flat cutter of that radius, so the check errs on the safe side by at most the corner's
+// (0.29 mm for a corner radius of 1 where a floor and a wall meet under the corner). The distance from it to a
+// triangle, exact: the triangle is cut at the tip's plane and at the stick-out; the part between is as far as
+// its plan distance to the axis less the radius; the part below the tip as far as its nearest point to the
+// tool's bottom disk (a convex problem: the plane's foot if inside the polygon, else along its edges).
+// The part's triangles are within `deflection` of its surfaces: the report subtracts it.
+#pragma once
+
+#include "roughing/sweep.hpp"
+
+#include <TopoDS_Shape.hxx>
+
+#include <memory>
+#include <vector>
+
+namespace hsm::roughing {
+
+struct ClearanceReport {
+  double minimum = 0.0;           // mm: the least distance from the tool to the part over all positions checked
+  long positions = 0;             // tool positions checked
+  long tooClose = 0;              // positions closer than the limit asked
+  int worstMove = -1;             // index of the move where the least distance is
+  Eigen::Vector3d worstTip = Eigen::Vector3d::Zero();
+};
+
+// The part's triangles (within `deflection`) in a grid, built once for any number of toolpaths.
+class ClearanceChecker {
+public:
+  // InputError for a deflection outside 0.001–1 mm.
+  ClearanceChecker(const TopoDS_Shape& part, double deflection = 0.01);
+  ~ClearanceChecker();
+  ClearanceChecker(const ClearanceChecker&) = delete;
+  ClearanceChecker& operator=(const ClearanceChecker&) = delete;
+
+  // The moves (rapids too: a rapid must not hit the part either) sampled every `spacing` mm; `limit` counts the
+  // positions closer than it (e.g. the allowance − 0.01 mm). InputError for a spacing outside 0.01–100 mm, and
+  // when the moves would need more than 10 million positions.
+  ClearanceReport check(const std::vector<ToolMove>& moves, const Cutter& cutter, double limit,
+                        double spacing = 1.0) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One toolpath checked against `part`: ClearanceChecker(part, deflection).check(moves, cutter, limit, spacing).
+ClearanceReport checkClearance(const std::vector<ToolMove>& moves, const TopoDS_Shape& part, const Cutter& cutter,
+                               double limit, double spacing = 1.0, double deflection = 0.01);
+
+}  // namespace hsm::roughing
