@@ -182,6 +182,7 @@ void bindRoughing(py::module_& module) {
   bindVolume(m);
   bindPartition(m);
   bindTestParts(m);
+  bindSweep(m);
 }
 
 }  // namespace hsm::bindings

@@ -24,4 +24,6 @@ void bindKinematics(pybind11::module_& module);
 void bindToolpath(pybind11::module_& module);
 void bindDirection(pybind11::module_& module);
 void bindRoughing(pybind11::module_& module);
+// The roughing sweep and its clearance check, in the roughing submodule `m` (bind_sweep.cpp).
+void bindSweep(pybind11::module_& m);
 }

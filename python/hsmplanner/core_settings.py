@@ -2,14 +2,15 @@
 lists them); Python passes only what the caller gave."""
 
 
-def core_settings(kind, **values):
-    """A default-constructed core settings struct `kind` with the fields given (None keeps the default)."""
-    settings = kind()
+def core_settings(settings_type, /, **values):
+    """A default-constructed core settings struct of `settings_type` with the fields given (None keeps the
+    default)."""
+    settings = settings_type()
     for name, value in values.items():
         if value is None:
             continue
         if not hasattr(settings, name):
-            raise TypeError("%s has no setting %r" % (kind.__name__, name))
+            raise TypeError("%s has no setting %r" % (settings_type.__name__, name))
         setattr(settings, name, value)
     return settings
 

@@ -1,5 +1,6 @@
-"""5-axis roughing by partition of the volume to remove (the roughing paper, §3), part 1: the volume, its faces,
-its sub-volumes. The rules and the choices where the paper is silent are in cpp/roughing/roughing.hpp.
+"""5-axis roughing by partition of the volume to remove (the roughing paper, §3): the volume, its faces, its
+sub-volumes (part 1; cpp/roughing/roughing.hpp), and their toolpaths (part 2; planar slicings S1 and S3 so far,
+cpp/roughing/sweep.hpp) with an independent clearance check (cpp/roughing/clearance.hpp).
 
     wheel = hsmplanner.roughing.impeller(blades=7)
     volume = hsmplanner.roughing.volume_to_remove(wheel.stock_brep, wheel.part_brep)
@@ -7,6 +8,9 @@ its sub-volumes. The rules and the choices where the paper is silent are in cpp/
     [c.name for c in channel.face_classes]          # crossable / facing_crossable / not_crossable
     result = hsmplanner.roughing.partition(channel, wheel.part_brep, "S5", step=8.0)
     [(s.slice, s.volume) for s in result.sub_volumes]
+    paths = hsmplanner.roughing.sweep(hsmplanner.roughing.partition(channel, wheel.part_brep, "S3"), channel,
+                                      wheel.part_brep, wheel.stock_brep)   # Ø8 r1 torus, 70 % radial
+    hsmplanner.roughing.check_clearance(paths, wheel.part_brep).minimum   # ≥ allowance − 0.01 mm
 
 Shapes are FreeCAD Part shapes or BREP text; results carry BREP text (`brep`) and plain attributes.
 """
@@ -15,6 +19,8 @@ from .core_settings import core_settings, enum_value
 from .geometry import as_brep
 
 FaceClass = _core.roughing.FaceClass
+CutterKind = _core.roughing.CutterKind
+MOVE_KINDS = tuple(_core.roughing.MOVE_KINDS)  # sweep(...).moves["kind"] indexes this
 Strategy = _core.roughing.Strategy
 SurfaceKind = _core.roughing.SurfaceKind
 
@@ -100,3 +106,41 @@ def impeller(**parameters):
     """The radial compressor impeller test part (PartAndStock); parameters of ImpellerParameters (blades,
     hub_inlet_radius, outlet_radius, height, channel_height, lean_deg, wrap_deg, thickness, base_thickness)."""
     return _core.roughing.impeller(core_settings(_core.roughing.ImpellerParameters, **parameters))
+
+
+def cutter(kind="torus", diameter=None, corner_radius=None, flute_length=None, shank_diameter=None, stick_out=None,
+           holder_diameter=None, holder_length=None):
+    """A Cutter (mm): 'torus' (default: the paper's Ø8 r1), 'flat' or 'ball'; a ball's corner radius is half its
+    diameter, a flat one's 0. Checked when used."""
+    kind = enum_value(CutterKind, kind, "cutter kind")
+    result = core_settings(_core.roughing.Cutter, kind=kind, diameter=diameter, corner_radius=corner_radius,
+                           flute_length=flute_length, shank_diameter=shank_diameter, stick_out=stick_out,
+                           holder_diameter=holder_diameter, holder_length=holder_length)
+    if kind == CutterKind.ball:
+        result.corner_radius = 0.5 * result.diameter
+    elif kind == CutterKind.flat:
+        result.corner_radius = 0.0
+    return result
+
+
+def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=None, allowance=None, tolerance=None,
+          ramp_angle_deg=None, clearance=None, progress=None):
+    """The sub-volumes of a Partition swept by contour-parallel passes (planar slicings S1 and S3 so far): a
+    SweepResult whose `moves` are arrays (tip, axis, kind, sub_volume), with its passes and lengths. `volume`
+    is the RemovalSolid the partition came from; `part` and `stock` the shapes. ValueError for bad settings."""
+    settings = core_settings(_core.roughing.SweepSettings, cutter=tool, radial_engagement=radial_engagement,
+                             allowance=allowance, tolerance=tolerance, ramp_angle_deg=ramp_angle_deg,
+                             clearance=clearance)
+    return _core.roughing.sweep(partition_result, _solid(volume), as_brep(part), as_brep(stock), settings, progress)
+
+
+def check_clearance(paths, part, tool=None, limit=None, spacing=1.0, deflection=0.01):
+    """How close the tool comes to the part along `paths` (a SweepResult, or a dict of (N, 3) `tip` and `axis`
+    arrays), measured independently on the part's triangles every `spacing` mm: a ClearanceReport (minimum,
+    positions, too_close under `limit`, default the default allowance − 0.01 mm, worst_move)."""
+    moves = paths.moves if hasattr(paths, "moves") else paths
+    tool = tool if tool is not None else _core.roughing.Cutter()
+    if limit is None:
+        limit = _core.roughing.SweepSettings().allowance - 0.01
+    return _core.roughing.check_clearance(moves["tip"], moves["axis"], as_brep(part), tool, float(limit),
+                                          float(spacing), float(deflection))

@@ -4,6 +4,7 @@ FreeCAD reads back as valid solids, progress and cancellation, and the issue's b
 import math
 import unittest
 
+import numpy as np
 import Part
 
 import hsmplanner
@@ -168,3 +169,48 @@ class Impeller(unittest.TestCase):
                 # The tool axis is radial, pointing out through the outlet.
                 self.assertAlmostEqual((axis[0] * radial[0] + axis[1] * radial[1]) / norm, 1.0, places=6)
                 self.assertAlmostEqual(axis[2], 0.0, places=9)
+
+
+class Sweep(unittest.TestCase):
+    """Part 2 from Python: the slanted slot swept by S1 and S3, checked independently."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.shapes = roughing.slanted_slot_block(slot_width=30.0, length=100.0)
+        cls.volume = roughing.volume_to_remove(cls.shapes.stock_brep, cls.shapes.part_brep)
+
+    def swept(self, name, **settings):
+        result = roughing.partition(self.volume, self.shapes.part_brep, name)
+        return result, roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)
+
+    def test_s1_one_axis_and_clear_of_the_part(self):
+        _, paths = self.swept("S1")
+        axes = paths.moves["axis"]
+        self.assertGreater(len(axes), 20)
+        np.testing.assert_allclose(axes, np.tile(axes[0], (len(axes), 1)), atol=1e-12)
+        kinds = [roughing.MOVE_KINDS[k] for k in paths.moves["kind"]]
+        self.assertIn("cut", kinds)
+        self.assertIn("ramp", kinds)
+        report = roughing.check_clearance(paths, self.shapes.part_brep)
+        self.assertEqual(report.too_close, 0)
+        self.assertGreaterEqual(report.minimum, 0.49)
+        self.assertGreater(paths.cutting_length, 100.0)
+
+    def test_s3_along_the_setup_and_a_flat_cutter(self):
+        result, paths = self.swept("S3", tool=roughing.cutter("flat", diameter=6.0), allowance=0.3)
+        np.testing.assert_allclose(paths.moves["axis"][0], result.setup_direction, atol=1e-9)
+        report = roughing.check_clearance(paths, self.shapes.part_brep, roughing.cutter("flat", diameter=6.0), 0.29)
+        self.assertEqual(report.too_close, 0)
+
+    def test_bad_settings_name_the_input(self):
+        result = roughing.partition(self.volume, self.shapes.part_brep, "S1")
+        for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in ]0, 1]"),
+                                  (dict(allowance=-0.5), "allowance = -0.5 is outside"),
+                                  (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
+            with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):
+                roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)
+        with self.assertRaisesRegex(ValueError, "S5 offsets of the hub is not swept yet"):
+            roughing.sweep(roughing.partition(self.volume, self.shapes.part_brep, "S5"), self.volume,
+                           self.shapes.part_brep, self.shapes.stock_brep)
+        with self.assertRaisesRegex(ValueError, "cutter kind 'drill' is unknown"):
+            roughing.cutter("drill")

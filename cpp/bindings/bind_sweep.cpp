@@ -1,0 +1,131 @@
+// Bindings of the roughing sweep and its clearance check (cpp/roughing/sweep.hpp, clearance.hpp): thin, the
+// moves as numpy arrays.
+#include "bindings/bindings.hpp"
+
+#include "geometry/brep.hpp"
+#include "roughing/clearance.hpp"
+#include "roughing/sweep.hpp"
+
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace hsm::bindings {
+
+namespace {
+using namespace roughing;
+
+// The moves as a dict of arrays: tip (N, 3), axis (N, 3), kind (N, index in MOVE_KINDS), sub_volume (N).
+py::dict moveArrays(const std::vector<ToolMove>& moves) {
+  const auto n = static_cast<py::ssize_t>(moves.size());
+  py::array_t<double> tip({n, py::ssize_t(3)}), axis({n, py::ssize_t(3)});
+  py::array_t<long> kind(n), sub(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const ToolMove& m = moves[static_cast<size_t>(i)];
+    for (int k = 0; k < 3; ++k) {
+      tip.mutable_at(i, k) = m.tip[k];
+      axis.mutable_at(i, k) = m.axis[k];
+    }
+    kind.mutable_at(i) = static_cast<long>(m.kind);
+    sub.mutable_at(i) = m.subVolume;
+  }
+  py::dict d;
+  d["tip"] = tip;
+  d["axis"] = axis;
+  d["kind"] = kind;
+  d["sub_volume"] = sub;
+  return d;
+}
+
+std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array_t<double>& axes) {
+  if (tips.ndim() != 2 || tips.shape(1) != 3 || axes.ndim() != 2 || axes.shape(1) != 3 || axes.shape(0) != tips.shape(0))
+    throw InputError("tips and axes must be (N, 3) arrays of the same N");
+  std::vector<ToolMove> moves(static_cast<size_t>(tips.shape(0)));
+  for (py::ssize_t i = 0; i < tips.shape(0); ++i) {
+    ToolMove& m = moves[static_cast<size_t>(i)];
+    m.tip = Eigen::Vector3d(tips.at(i, 0), tips.at(i, 1), tips.at(i, 2));
+    m.axis = Eigen::Vector3d(axes.at(i, 0), axes.at(i, 1), axes.at(i, 2));
+    if (!m.tip.allFinite() || !(m.axis.norm() > 1e-9))
+      throw InputError("move " + std::to_string(i) + ": its tip must be finite and its axis not zero");
+    m.axis.normalize();
+  }
+  return moves;
+}
+}  // namespace
+
+void bindSweep(py::module_& m) {
+  py::enum_<CutterKind>(m, "CutterKind").value("flat", CutterKind::Flat).value("torus", CutterKind::Torus)
+      .value("ball", CutterKind::Ball);
+  py::class_<Cutter>(m, "Cutter", "The cutter and its holder, mm")
+      .def(py::init<>())
+      .def_readwrite("kind", &Cutter::kind)
+      .def_readwrite("diameter", &Cutter::diameter)
+      .def_readwrite("corner_radius", &Cutter::cornerRadius)
+      .def_readwrite("flute_length", &Cutter::fluteLength)
+      .def_readwrite("shank_diameter", &Cutter::shankDiameter)
+      .def_readwrite("stick_out", &Cutter::stickOut, "from the tip to the holder")
+      .def_readwrite("holder_diameter", &Cutter::holderDiameter)
+      .def_readwrite("holder_length", &Cutter::holderLength)
+      .def("profile_radius", &Cutter::profileRadius, py::arg("height"), "radius at a height above the tip");
+  py::class_<SweepSettings>(m, "SweepSettings", "Sweeping of the sub-volumes (mm, degrees)")
+      .def(py::init<>())
+      .def_readwrite("cutter", &SweepSettings::cutter)
+      .def_readwrite("radial_engagement", &SweepSettings::radialEngagement, "share of the diameter, ]0, 1]")
+      .def_readwrite("allowance", &SweepSettings::allowance)
+      .def_readwrite("tolerance", &SweepSettings::tolerance)
+      .def_readwrite("ramp_angle_deg", &SweepSettings::rampAngleDeg)
+      .def_readwrite("clearance", &SweepSettings::clearance)
+      .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection);
+  std::vector<std::string> kinds;
+  for (MoveKind k : {MoveKind::Rapid, MoveKind::Plunge, MoveKind::Ramp, MoveKind::Cut, MoveKind::Link})
+    kinds.push_back(moveKindName(k));
+  m.attr("MOVE_KINDS") = kinds;
+  py::class_<Pass>(m, "Pass")
+      .def_readonly("sub_volume", &Pass::subVolume)
+      .def_readonly("ring", &Pass::ring, "0 for the domain's boundary, k for its k-th offset")
+      .def_readonly("points", &Pass::points);
+  py::class_<SweepResult>(m, "SweepResult", "Lengths in mm")
+      .def_property_readonly("moves", [](const SweepResult& r) { return moveArrays(r.moves); })
+      .def_readonly("passes", &SweepResult::passes)
+      .def_readonly("cutting_length", &SweepResult::cuttingLength)
+      .def_readonly("ramp_length", &SweepResult::rampLength)
+      .def_readonly("link_length", &SweepResult::linkLength)
+      .def_readonly("rapid_length", &SweepResult::rapidLength)
+      .def_readonly("retracts", &SweepResult::retracts)
+      .def_readonly("ramps", &SweepResult::ramps)
+      .def_readonly("plunges", &SweepResult::plunges)
+      .def_readonly("warnings", &SweepResult::warnings);
+  m.def(
+      "sweep",
+      [](const Partition& partition, const RemovalSolid& solid, const std::string& partBrep,
+         const std::string& stockBrep, SweepSettings settings, const py::object& progress) {
+        const TopoDS_Shape part = geometry::readBrep(partBrep), stock = geometry::readBrep(stockBrep);
+        settings.progress = progressCallback(progress);
+        py::gil_scoped_release release;
+        return guarded("sweep", [&] { return sweep(partition, solid, part, stock, settings); });
+      },
+      py::arg("partition"), py::arg("solid"), py::arg("part_brep"), py::arg("stock_brep"), py::arg("settings"),
+      py::arg("progress") = py::none());
+  py::class_<ClearanceReport>(m, "ClearanceReport")
+      .def_readonly("minimum", &ClearanceReport::minimum, "mm, the least distance from the tool to the part")
+      .def_readonly("positions", &ClearanceReport::positions)
+      .def_readonly("too_close", &ClearanceReport::tooClose)
+      .def_readonly("worst_move", &ClearanceReport::worstMove)
+      .def_readonly("worst_tip", &ClearanceReport::worstTip);
+  m.def(
+      "check_clearance",
+      [](const py::array_t<double>& tips, const py::array_t<double>& axes, const std::string& partBrep,
+         const Cutter& cutter, double limit, double spacing, double deflection) {
+        const std::vector<ToolMove> moves = movesFrom(tips, axes);
+        const TopoDS_Shape part = geometry::readBrep(partBrep);
+        py::gil_scoped_release release;
+        return guarded("clearance check", [&] { return checkClearance(moves, part, cutter, limit, spacing, deflection); });
+      },
+      py::arg("tips"), py::arg("axes"), py::arg("part_brep"), py::arg("cutter"), py::arg("limit"),
+      py::arg("spacing") = 1.0, py::arg("deflection") = 0.01);
+}
+
+}  // namespace hsm::bindings
