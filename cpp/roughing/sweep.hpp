@@ -1,15 +1,18 @@
 // 5-axis roughing, part 2: sweeping the sub-volumes of a partition (roughing.hpp) into toolpaths.
 //
 // Each sub-volume is swept by contour-parallel passes ("offsets of the boundaries", Chen 2011) on its slicing
-// surface, the tool axis normal to it with zero lead and tilt (the paper's choice). This file has the planar
-// slicings, S1 and S3: 3-axis and 3+2-axis paths, one fixed tool axis per partition.
+// surface, the tool axis normal to it with zero lead and tilt (the paper's choice). Swept so far: planes (S1,
+// S3: 3-axis and 3+2-axis paths, one fixed tool axis) and coaxial cylinders (S2: 4-axis paths, the axis radial),
+// the cylinders unrolled at each level's radius, (r·θ, z), which is exact for the passes (straight moves are
+// split so that their chords stay within the tolerance of the cylinder). S4 and S5 are not swept yet.
 //
-// A slice of a planar partition lies between two planes; the tool's tip sits on its far plane (the tool axis
-// points out through the near one, towards the spindle) and clears the slice's material above it. At that level:
+// A slice lies between two surfaces; the tool's tip sits on the far one (the tool axis points out through the
+// near one, towards the spindle) and clears the slice's material above it. At that level, laid flat:
 //   region    the slice projected on the plane (its sections at the top, the middle and the bottom, united);
-//   shadow    the part wherever it stands above the tip's plane, or within the allowance below it, projected
-//             on the plane (the union of its triangles' projections, cut at that height): a straight tool
-//             along the axis must keep its radius and the allowance away from it;
+//   shadow    the part wherever it stands above the tip's surface, or within the allowance below it, projected
+//             along the tool axis (the union of its triangles' projections, cut at that height; on cylinders
+//             projected radially and measured at the tip's radius, which is on the safe side: farther out, the
+//             same angle is a longer distance): a straight tool must keep its radius and the allowance away;
 //   domain    region shrunk by the tool radius less an overhang of 10 % of the diameter (the outer pass goes
 //             slightly past the slice's outline, through the crossable faces), minus the shadow grown by the
 //             radius, the allowance and the mesh's deflection: where the tool's centre may go;
@@ -92,7 +95,7 @@ struct SweepResult {
   std::vector<std::string> warnings;
 };
 
-// The partition's sub-volumes swept (S1 and S3; the other strategies are not swept yet: InputError). `solid`
+// The partition's sub-volumes swept (S1, S2, S3; S4 and S5 are not swept yet: InputError). `solid`
 // is the partition's volume to remove, `stock` and `part` the shapes it came from. Cancelled when `progress`
 // returns false. InputError for bad settings (an engagement outside ]0, 1], an allowance below 0, …).
 SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part,

@@ -44,9 +44,9 @@ double bestOf(int runs, const std::function<void()>& work) {
 }
 }  // namespace
 
-// Part 2: S1 and S3 swept on every channel (partitions not counted), one core.
+// Part 2: S1, S2 and S3 swept on every channel (partitions not counted), one core.
 void sweeps(const PartAndStock& wheel, const VolumeToRemove& volume, int runs) {
-  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::SetupPlanes}) {
+  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes}) {
     std::vector<Partition> partitions;
     for (const RemovalSolid& solid : volume.solids) partitions.push_back(partition(solid, wheel.part, strategy));
     size_t moves = 0, passes = 0;

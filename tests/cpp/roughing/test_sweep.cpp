@@ -170,6 +170,7 @@ TEST(Sweep, BadSettingsAreRefusedByName) {
   s.cutter.fluteLength = 60.0;
   EXPECT_NE(message(s).find("longer than its stick-out"), std::string::npos);
   EXPECT_NE(message({}, Strategy::StockOffsets).find("not swept yet"), std::string::npos);
+  EXPECT_NE(message({}, Strategy::HubOffsets).find("not swept yet"), std::string::npos);
 }
 
 TEST(Clearance, AgreesWithOcctAndFindsAGouge) {
@@ -201,4 +202,41 @@ TEST(Clearance, AgreesWithOcctAndFindsAGouge) {
   ASSERT_GE(gouge.worstMove, 0);
   EXPECT_NE(lowered[static_cast<size_t>(gouge.worstMove)].kind, MoveKind::Rapid);
   EXPECT_THROW(checkClearance(r.moves, part, settings.cutter, 0.49, 0.0), InputError);
+}
+
+TEST(Sweep, ImpellerCylindersKeepTheAxisRadialAndClearOfTheBlades) {
+  // S2 on one channel of the impeller: coaxial cylinders about the outlet, a 4-axis path.
+  const PartAndStock wheel = impeller();
+  const VolumeToRemove volume = volumeToRemove(wheel.stock, wheel.part);
+  const RemovalSolid& channel = volume.solids.front();
+  const Partition partition = roughing::partition(channel, wheel.part, Strategy::CoaxialCylinders);
+  const SweepSettings settings;
+  const SweepResult r = sweep(partition, channel, wheel.part, wheel.stock, settings);
+  ASSERT_FALSE(r.passes.empty());
+  const Eigen::Vector3d origin = partition.subVolumes.front().surface.origin;
+  const Eigen::Vector3d z = partition.subVolumes.front().surface.direction.normalized();
+  int radial = 0;
+  double spread = 0.0;
+  for (const ToolMove& m : r.moves) {
+    Eigen::Vector3d w = m.tip - origin;
+    w -= z * z.dot(w);
+    EXPECT_GE(m.axis.dot(w.normalized()), 0.9999);
+    spread = std::max(spread, 1.0 - m.axis.dot(r.moves.front().axis));
+    ++radial;
+  }
+  EXPECT_GT(radial, 50);
+  EXPECT_GT(std::acos(1.0 - spread) * 180.0 / M_PI, 5.0) << "the axis turns about the cylinders' axis: a 4-axis path";
+  // Every level's passes lie on its cylinder (cut moves at one radius per pass).
+  for (const Pass& pass : r.passes) {
+    double low = 1e300, high = -1e300;
+    for (const Eigen::Vector3d& p : pass.points) {
+      Eigen::Vector3d w = p - origin;
+      w -= z * z.dot(w);
+      low = std::min(low, w.norm());
+      high = std::max(high, w.norm());
+    }
+    EXPECT_LT(high - low, 1e-6);
+  }
+  const ClearanceReport clear = checkClearance(r.moves, wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
+  EXPECT_EQ(clear.tooClose, 0) << "closest " << clear.minimum << " mm at move " << clear.worstMove;
 }

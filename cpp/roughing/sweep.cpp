@@ -1,5 +1,6 @@
-// Planar slicings swept by contour-parallel passes (sweep.hpp): the region, shadow and domain of each level in
-// Clipper's integer plane, its offsets, then entries, loops and links as tool moves.
+// Slicings swept by contour-parallel passes (sweep.hpp): each level laid flat (planes as they are, cylinders
+// unrolled), its region, shadow and domain in Clipper's integer plane, its offsets, then entries, loops and
+// links as tool moves.
 #include "roughing/sweep.hpp"
 
 #include "common/error.hpp"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace hsm::roughing {
 
@@ -20,20 +22,81 @@ constexpr double kScale = 1e4;  // Clipper units per mm: 0.1 µm
 constexpr int kMaxRings = 10000;
 constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
 
-// The plane of the passes: tool axis `a` (towards the spindle), u and v across it.
-struct Frame {
-  Eigen::Vector3d a, u, v;
-  explicit Frame(const Eigen::Vector3d& axis) : a(axis.normalized()) {
-    u = a.unitOrthogonal();
-    v = a.cross(u);
+// How a slicing surface is laid flat for the passes: plane coordinates (Clipper units) of a point, its height
+// along the tool axis there (tip planes, cylinder radii), and back. Planes (S1, S3) are laid flat as they are;
+// coaxial cylinders (S2) unrolled at the level's radius, (r·θ, z), the tool axis radial.
+class Projection {
+public:
+  virtual ~Projection() = default;
+  virtual double height(const Eigen::Vector3d& p) const = 0;
+  virtual cl::IntPoint plane(const Eigen::Vector3d& p) const = 0;
+  virtual Eigen::Vector3d point(const cl::IntPoint& q, double h) const = 0;
+  virtual Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const = 0;  // unit, towards the spindle
+  virtual void setLevel(double tipHeight) { (void)tipHeight; }
+  // Longest straight move between two points of the flat passes that stays within `tolerance` of the surface
+  // at height h (∞ on planes), and the longest 3-D edge of a triangle laid flat as a straight-edged one.
+  virtual double maxSegment(double h, double tolerance) const {
+    (void)h, (void)tolerance;
+    return std::numeric_limits<double>::infinity();
   }
-  double height(const Eigen::Vector3d& p) const { return a.dot(p); }
-  cl::IntPoint plane(const Eigen::Vector3d& p) const {
-    return {static_cast<cl::cInt>(std::llround(u.dot(p) * kScale)), static_cast<cl::cInt>(std::llround(v.dot(p) * kScale))};
+  virtual double maxTriangleEdge() const { return std::numeric_limits<double>::infinity(); }
+};
+
+class PlaneProjection : public Projection {
+public:
+  explicit PlaneProjection(const Eigen::Vector3d& axis) : a_(axis.normalized()) {
+    u_ = a_.unitOrthogonal();
+    v_ = a_.cross(u_);
   }
-  Eigen::Vector3d point(const cl::IntPoint& q, double h) const {
-    return u * (static_cast<double>(q.X) / kScale) + v * (static_cast<double>(q.Y) / kScale) + a * h;
+  double height(const Eigen::Vector3d& p) const override { return a_.dot(p); }
+  cl::IntPoint plane(const Eigen::Vector3d& p) const override {
+    return {static_cast<cl::cInt>(std::llround(u_.dot(p) * kScale)), static_cast<cl::cInt>(std::llround(v_.dot(p) * kScale))};
   }
+  Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
+    return u_ * (static_cast<double>(q.X) / kScale) + v_ * (static_cast<double>(q.Y) / kScale) + a_ * h;
+  }
+  Eigen::Vector3d axisAt(const Eigen::Vector3d&) const override { return a_; }
+
+private:
+  Eigen::Vector3d a_, u_, v_;
+};
+
+class CylinderProjection : public Projection {
+public:
+  // Cylinders about the line (origin, direction); angles measured from `middle` (a radial direction through the
+  // volume: the volume does not reach the seam half a turn away).
+  CylinderProjection(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, const Eigen::Vector3d& middle)
+      : o_(origin), z_(direction.normalized()) {
+    e1_ = (middle - z_ * z_.dot(middle)).normalized();
+    e2_ = z_.cross(e1_);
+  }
+  void setLevel(double tipHeight) override { r_ = tipHeight; }
+  double height(const Eigen::Vector3d& p) const override { return radial(p).norm(); }
+  cl::IntPoint plane(const Eigen::Vector3d& p) const override {
+    const Eigen::Vector3d w = radial(p);
+    const double theta = std::atan2(e2_.dot(w), e1_.dot(w));
+    return {static_cast<cl::cInt>(std::llround(r_ * theta * kScale)),
+            static_cast<cl::cInt>(std::llround(z_.dot(p - o_) * kScale))};
+  }
+  Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
+    const double theta = static_cast<double>(q.X) / kScale / r_;
+    return o_ + z_ * (static_cast<double>(q.Y) / kScale) + (e1_ * std::cos(theta) + e2_ * std::sin(theta)) * h;
+  }
+  Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const override { return radial(p).normalized(); }
+  double maxSegment(double h, double tolerance) const override {
+    // A chord of the circle of radius h dips h·(1 − cos(Δθ/2)) inside it: keep that within the tolerance.
+    const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance / std::max(h, tolerance)));
+    return r_ * step;
+  }
+  double maxTriangleEdge() const override { return 2.0; }
+
+private:
+  Eigen::Vector3d radial(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d w = p - o_;
+    return w - z_ * z_.dot(w);
+  }
+  Eigen::Vector3d o_, z_, e1_, e2_;
+  double r_ = 1.0;
 };
 
 cl::Paths offset(const cl::Paths& paths, double mm, double tolerance) {
@@ -75,35 +138,70 @@ Window windowAround(const cl::Paths& paths, double margin) {
   return w;
 }
 
-// The union of the mesh's triangles projected on the plane, each cut to its part at or above `fromHeight`
-// (−∞: whole), leaving out those outside `window`: what stands over the plane, seen along the axis.
-cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Frame& frame, double fromHeight,
+// The triangle p laid flat, cut to its part at or above `fromHeight`, added to `pieces` (split first into
+// smaller ones where the projection bends straight edges).
+void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight, int depth,
+                  cl::Paths& pieces) {
+  const double longest = std::max({(p[1] - p[0]).norm(), (p[2] - p[1]).norm(), (p[0] - p[2]).norm()});
+  if (longest > projection.maxTriangleEdge() && depth < 8) {
+    const Eigen::Vector3d m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
+    const Eigen::Vector3d parts[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
+    for (const auto& part : parts) addProjected(projection, part, fromHeight, depth + 1, pieces);
+    return;
+  }
+  const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
+  if (std::max({h[0], h[1], h[2]}) < fromHeight) return;
+  std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (h[i] >= fromHeight) kept.push_back(p[i]);
+    if ((h[i] >= fromHeight) != (h[j] >= fromHeight))
+      kept.push_back(p[i] + (p[j] - p[i]) * ((fromHeight - h[i]) / (h[j] - h[i])));
+  }
+  cl::Path path;
+  for (const Eigen::Vector3d& q : kept) path.push_back(projection.plane(q));
+  if (path.size() < 3) return;
+  if (!cl::Orientation(path)) cl::ReversePath(path);  // all counter-clockwise: their union is non-zero
+  if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
+}
+
+// The union of the mesh's triangles laid flat, each cut to its part at or above `fromHeight` (−∞: whole),
+// leaving out those outside `window`: what stands over the surface, seen along the tool axis.
+cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                          const Window& window = {}) {
   cl::Paths pieces;
   pieces.reserve(mesh.triangles.size());
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
-    const double h[3] = {frame.height(p[0]), frame.height(p[1]), frame.height(p[2])};
-    if (std::max({h[0], h[1], h[2]}) < fromHeight) continue;
-    if (window.misses(frame.plane(p[0]), frame.plane(p[1]), frame.plane(p[2]))) continue;
-    std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (h[i] >= fromHeight) kept.push_back(p[i]);
-      if ((h[i] >= fromHeight) != (h[j] >= fromHeight))
-        kept.push_back(p[i] + (p[j] - p[i]) * ((fromHeight - h[i]) / (h[j] - h[i])));
-    }
-    cl::Path path;
-    for (const Eigen::Vector3d& q : kept) path.push_back(frame.plane(q));
-    if (path.size() < 3) continue;
-    if (!cl::Orientation(path)) cl::ReversePath(path);  // all counter-clockwise: their union is non-zero
-    if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
+    if (std::max({projection.height(p[0]), projection.height(p[1]), projection.height(p[2])}) < fromHeight) continue;
+    if (window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2]))) continue;
+    addProjected(projection, p, fromHeight, 0, pieces);
   }
   cl::Clipper clipper;
   clipper.AddPaths(pieces, cl::ptSubject, true);
   cl::Paths result;
   clipper.Execute(cl::ctUnion, result, cl::pftNonZero, cl::pftNonZero);
   return result;
+}
+
+// Points added along each edge longer than `longest` (mm; ∞: none): straight in the flat passes, the moves
+// between them stay within the tolerance of the surface.
+void densify(cl::Paths& paths, double longest) {
+  if (!std::isfinite(longest)) return;
+  for (cl::Path& path : paths) {
+    cl::Path dense;
+    for (size_t i = 0; i < path.size(); ++i) {
+      const cl::IntPoint& a = path[i];
+      const cl::IntPoint& b = path[(i + 1) % path.size()];
+      dense.push_back(a);
+      const double length = std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kScale;
+      const int pieces = static_cast<int>(std::ceil(length / longest));
+      for (int k = 1; k < pieces; ++k)
+        dense.push_back({static_cast<cl::cInt>(a.X + (b.X - a.X) * double(k) / pieces),
+                         static_cast<cl::cInt>(a.Y + (b.Y - a.Y) * double(k) / pieces)});
+    }
+    path = std::move(dense);
+  }
 }
 
 double pathLength(const cl::Path& path) {
@@ -159,16 +257,30 @@ struct Level {
   std::vector<cl::Paths> rings;
 };
 
-class PlanarSweeper {
+// The projection of a partition's slicing surfaces: planes along their normal; cylinders unrolled, angles from
+// the middle of the volume (the mean of its axis field's points).
+std::unique_ptr<Projection> projectionOf(const Partition& partition) {
+  const SubVolume& first = partition.subVolumes.front();
+  if (first.surface.kind == SurfaceKind::Plane) return std::make_unique<PlaneProjection>(-first.surface.direction);
+  Eigen::Vector3d middle = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : first.axisPoints) middle += p - first.surface.origin;
+  if (first.axisPoints.empty() || !(middle.norm() > 1e-9))
+    throw ComputationError("the cylinders' sub-volume has no axis field to place its angles on");
+  // The passes stand on the inner cylinder of each slice, the tool pointing out: the volume is inside the
+  // reference cylinder. (A volume outside it, a bore's, is not swept.)
+  if (!first.axisDirections.empty() && first.axisDirections.front().dot(first.axisPoints.front() - first.surface.origin) < 0.0)
+    throw InputError("S2 with the volume outside its cylinder (a bore) is not swept: the tool would point at the axis");
+  return std::make_unique<CylinderProjection>(first.surface.origin, first.surface.direction, middle);
+}
+
+class Sweeper {
 public:
-  PlanarSweeper(const Partition& partition, const TopoDS_Shape& part, const TopoDS_Shape& stock,
-                const SweepSettings& settings)
-      : partition_(partition), settings_(settings),
-        frame_(-partition.subVolumes.front().surface.direction),
+  Sweeper(const Partition& partition, const TopoDS_Shape& part, const TopoDS_Shape& stock, const SweepSettings& settings)
+      : partition_(partition), settings_(settings), projection_(projectionOf(partition)),
         partMesh_(geometry::meshFaces(part, settings.meshDeflection)) {
     const geometry::TriangleMesh stockMesh = geometry::meshFaces(stock, std::max(0.05, settings.meshDeflection));
     double high = -std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, frame_.height(p));
+    for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, projection_->height(p));
     safeHeight_ = high + settings.clearance;
   }
 
@@ -194,17 +306,18 @@ private:
     const SubVolume& sub = partition_.subVolumes[index];
     Level level;
     level.subVolume = index;
-    level.top = frame_.height(sub.surface.origin);
+    level.top = sub.surface.kind == SurfaceKind::Cylinder ? sub.surface.radius : projection_->height(sub.surface.origin);
     const geometry::TriangleMesh mesh = geometry::meshFaces(sub.shape, settings_.meshDeflection);
     double low = std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector3d& p : mesh.vertices) low = std::min(low, frame_.height(p));
+    for (const Eigen::Vector3d& p : mesh.vertices) low = std::min(low, projection_->height(p));
     level.tip = std::max(level.top - partition_.step, low);
     raiseOverFloor(level);
+    projection_->setLevel(level.tip);
     const double radius = settings_.cutter.radius();
-    level.region = projectedUnion(mesh, frame_, -std::numeric_limits<double>::infinity());
+    level.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
     const double margin = radius + settings_.allowance + settings_.meshDeflection + 1.0;
-    const cl::Paths shadow = projectedUnion(partMesh_, frame_, level.tip - settings_.allowance,
+    const cl::Paths shadow = projectedUnion(partMesh_, *projection_, level.tip - settings_.allowance,
                                             windowAround(level.region, margin));
     const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter), settings_.tolerance);
     // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
@@ -216,6 +329,7 @@ private:
       cl::Paths ring = k == 0 ? level.domain : offset(level.domain, -k * step, settings_.tolerance);
       cl::CleanPolygons(ring, settings_.tolerance * kScale);
       if (ring.empty()) break;
+      densify(ring, projection_->maxSegment(level.tip, settings_.tolerance));
       level.rings.push_back(std::move(ring));
     }
     return level;
@@ -228,8 +342,8 @@ private:
     for (const Eigen::Vector3i& t : partMesh_.triangles) {
       const Eigen::Vector3d& p0 = partMesh_.vertices[t[0]];
       const Eigen::Vector3d n = (partMesh_.vertices[t[1]] - p0).cross(partMesh_.vertices[t[2]] - p0);
-      if (!(n.norm() > 0.0) || n.normalized().dot(frame_.a) < 1.0 - 1e-6) continue;
-      const double h = frame_.height(p0);
+      if (!(n.norm() > 0.0) || n.normalized().dot(projection_->axisAt(p0)) < 1.0 - 1e-6) continue;
+      const double h = projection_->height(p0);
       if (h > level.tip - settings_.allowance - 1e-9 && h < level.tip + settings_.allowance) floor = std::max(floor, h);
     }
     if (std::isfinite(floor) && floor + settings_.allowance < level.top) level.tip = floor + settings_.allowance;
@@ -246,13 +360,25 @@ private:
         case MoveKind::Rapid: result_.rapidLength += length; break;
       }
     }
-    result_.moves.push_back({kind, tip, frame_.a, subVolume});
+    result_.moves.push_back({kind, tip, projection_->axisAt(tip), subVolume});
   }
 
   void retract() {
-    const Eigen::Vector3d& at = result_.moves.back().tip;
-    add(MoveKind::Rapid, at + frame_.a * (safeHeight_ - frame_.height(at)), -1);
+    const Eigen::Vector3d at = result_.moves.back().tip;
+    add(MoveKind::Rapid, projection_->point(projection_->plane(at), safeHeight_), -1);
     ++result_.retracts;
+  }
+
+  // At the safe height, from where the tool is to above `to`, in steps that keep it there (cylinders: arcs).
+  void travel(const cl::IntPoint& to) {
+    const cl::IntPoint from = projection_->plane(result_.moves.back().tip);
+    const double length = std::hypot(double(to.X - from.X), double(to.Y - from.Y)) / kScale;
+    const double longest = projection_->maxSegment(safeHeight_, std::max(1.0, settings_.clearance / 2.0));
+    const int pieces = std::isfinite(longest) ? std::max(1, static_cast<int>(std::ceil(length / longest))) : 1;
+    for (int k = 1; k <= pieces; ++k)
+      add(MoveKind::Rapid, projection_->point({static_cast<cl::cInt>(from.X + (to.X - from.X) * double(k) / pieces),
+                                               static_cast<cl::cInt>(from.Y + (to.Y - from.Y) * double(k) / pieces)},
+                                              safeHeight_), -1);
   }
 
   // Where an entry reaches the level: on the loop's segment from point `index` to the next, at `point`.
@@ -264,15 +390,14 @@ private:
   // Down to the loop's start: a plunge where the tool's disk is clear of the slice's material, else a ramp
   // along the loop from the slice's near side. The full loop is then cut from where the tool reaches the level.
   Arrival enter(const Level& level, const cl::Path& loop, size_t start) {
-    const Eigen::Vector3d first = frame_.point(loop[start], level.top + 1.0);
-    if (result_.moves.empty()) add(MoveKind::Rapid, frame_.point(loop[start], safeHeight_), -1);
-    else if (frame_.height(result_.moves.back().tip) > safeHeight_ - 1e-9)
-      add(MoveKind::Rapid, frame_.point(loop[start], safeHeight_), -1);
+    const Eigen::Vector3d first = projection_->point(loop[start], level.top + 1.0);
+    if (result_.moves.empty()) add(MoveKind::Rapid, projection_->point(loop[start], safeHeight_), -1);
+    else if (projection_->height(result_.moves.back().tip) > safeHeight_ - 1e-9) travel(loop[start]);
     add(MoveKind::Rapid, first, level.subVolume);
     const bool clear = !insidePaths(loop[start], level.region) &&
                        distanceToBoundary(loop[start], level.region) >= settings_.cutter.radius();
     if (clear) {
-      add(MoveKind::Plunge, frame_.point(loop[start], level.tip), level.subVolume);
+      add(MoveKind::Plunge, projection_->point(loop[start], level.tip), level.subVolume);
       ++result_.plunges;
       return {start, loop[start]};
     }
@@ -293,7 +418,7 @@ private:
       const double f = take / segment;
       const cl::IntPoint q{static_cast<cl::cInt>(loop[i].X + f * (loop[j].X - loop[i].X)),
                            static_cast<cl::cInt>(loop[i].Y + f * (loop[j].Y - loop[i].Y))};
-      add(MoveKind::Ramp, frame_.point(q, level.top + 1.0 - drop * travelled / rampLength), level.subVolume);
+      add(MoveKind::Ramp, projection_->point(q, level.top + 1.0 - drop * travelled / rampLength), level.subVolume);
       if (take < segment) {  // the ramp ends inside the segment
         ++result_.ramps;
         return {i, q};
@@ -310,11 +435,11 @@ private:
     pass.subVolume = level.subVolume;
     pass.ring = ring;
     for (size_t k = 1; k <= loop.size(); ++k) {
-      const Eigen::Vector3d p = frame_.point(loop[(from.index + k) % loop.size()], level.tip);
+      const Eigen::Vector3d p = projection_->point(loop[(from.index + k) % loop.size()], level.tip);
       add(MoveKind::Cut, p, level.subVolume);
       pass.points.push_back(p);
     }
-    add(MoveKind::Cut, frame_.point(from.point, level.tip), level.subVolume);
+    add(MoveKind::Cut, projection_->point(from.point, level.tip), level.subVolume);
     result_.passes.push_back(std::move(pass));
   }
 
@@ -324,7 +449,7 @@ private:
       std::vector<bool> done(level.rings[k].size(), false);
       for (size_t n = 0; n < level.rings[k].size(); ++n) {
         // The nearest loop to where the tool is, and its nearest point.
-        const cl::IntPoint here = entered ? frame_.plane(result_.moves.back().tip) : level.rings[k][0][0];
+        const cl::IntPoint here = entered ? projection_->plane(result_.moves.back().tip) : level.rings[k][0][0];
         size_t best = 0, bestPoint = 0;
         double bestDistance = std::numeric_limits<double>::infinity();
         for (size_t l = 0; l < level.rings[k].size(); ++l) {
@@ -340,7 +465,7 @@ private:
         if (loop.size() < 3) continue;
         Arrival from{bestPoint, loop[bestPoint]};
         if (entered && segmentInside(here, loop[bestPoint], level.domain, settings_.tolerance)) {
-          add(MoveKind::Link, frame_.point(loop[bestPoint], level.tip), level.subVolume);
+          link(here, loop[bestPoint], level);
         } else {
           if (entered) retract();
           from = enter(level, loop, bestPoint);
@@ -352,9 +477,21 @@ private:
     retract();
   }
 
+  // A straight move at the level in the flat passes (points added where the surface bends).
+  void link(const cl::IntPoint& from, const cl::IntPoint& to, const Level& level) {
+    cl::Paths segment{cl::Path{from, to}};
+    const double length = std::hypot(double(to.X - from.X), double(to.Y - from.Y)) / kScale;
+    const double longest = projection_->maxSegment(level.tip, settings_.tolerance);
+    const int pieces = std::isfinite(longest) ? std::max(1, static_cast<int>(std::ceil(length / longest))) : 1;
+    for (int k = 1; k <= pieces; ++k)
+      add(MoveKind::Link, projection_->point({static_cast<cl::cInt>(from.X + (to.X - from.X) * double(k) / pieces),
+                                              static_cast<cl::cInt>(from.Y + (to.Y - from.Y) * double(k) / pieces)},
+                                             level.tip), level.subVolume);
+  }
+
   const Partition& partition_;
   const SweepSettings& settings_;
-  Frame frame_;
+  std::unique_ptr<Projection> projection_;
   geometry::TriangleMesh partMesh_;
   double safeHeight_ = 0.0;
   SweepResult result_;
@@ -430,10 +567,10 @@ SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const T
                   const TopoDS_Shape& stock, const SweepSettings& settings) {
   (void)solid;
   checkSettings(settings);
-  if (partition.strategy != Strategy::PlanesParallelToFace && partition.strategy != Strategy::SetupPlanes)
-    throw InputError(strategyName(partition.strategy) + " is not swept yet: planar slicings (S1, S3) are");
+  if (partition.strategy == Strategy::StockOffsets || partition.strategy == Strategy::HubOffsets)
+    throw InputError(strategyName(partition.strategy) + " is not swept yet: planes (S1, S3) and cylinders (S2) are");
   if (partition.subVolumes.empty()) throw InputError("the partition has no sub-volumes to sweep");
-  return PlanarSweeper(partition, part, stock, settings).run();
+  return Sweeper(partition, part, stock, settings).run();
 }
 
 }  // namespace hsm::roughing
