@@ -39,7 +39,15 @@ public:
     (void)h, (void)tolerance;
     return std::numeric_limits<double>::infinity();
   }
-  virtual double maxTriangleEdge() const { return std::numeric_limits<double>::infinity(); }
+  // Whether a triangle must be split before it is laid flat with straight edges, or cannot be laid flat.
+  virtual bool bends(const Eigen::Vector3d (&p)[3]) const {
+    (void)p;
+    return false;
+  }
+  virtual bool skip(const Eigen::Vector3d (&p)[3]) const {
+    (void)p;
+    return false;
+  }
 };
 
 class PlaneProjection : public Projection {
@@ -88,12 +96,28 @@ public:
     const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance / std::max(h, tolerance)));
     return r_ * step;
   }
-  double maxTriangleEdge() const override { return 2.0; }
+  // Unrolled, a straight edge bows by about r·Δθ²/8: split triangles spanning more than 2° (0.006 mm at r 40).
+  bool bends(const Eigen::Vector3d (&p)[3]) const override {
+    const double span = angularSpan(p);
+    return span > 2.0 * M_PI / 180.0 && span < M_PI;
+  }
+  // A triangle across the seam, half a turn from the volume's middle: its unrolled image would wrap round; it
+  // is left out (a volume spanning more than about 340° is not swept with S2).
+  bool skip(const Eigen::Vector3d (&p)[3]) const override { return angularSpan(p) >= M_PI; }
 
 private:
   Eigen::Vector3d radial(const Eigen::Vector3d& p) const {
     const Eigen::Vector3d w = p - o_;
     return w - z_ * z_.dot(w);
+  }
+  double angularSpan(const Eigen::Vector3d (&p)[3]) const {
+    double low = 1e300, high = -1e300;
+    for (const Eigen::Vector3d& q : p) {
+      const Eigen::Vector3d w = radial(q);
+      const double theta = std::atan2(e2_.dot(w), e1_.dot(w));
+      low = std::min(low, theta), high = std::max(high, theta);
+    }
+    return high - low;
   }
   Eigen::Vector3d o_, z_, e1_, e2_;
   double r_ = 1.0;
@@ -140,13 +164,14 @@ Window windowAround(const cl::Paths& paths, double margin) {
 
 // The triangle p laid flat, cut to its part at or above `fromHeight`, added to `pieces` (split first into
 // smaller ones where the projection bends straight edges).
-void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight, int depth,
-                  cl::Paths& pieces) {
-  const double longest = std::max({(p[1] - p[0]).norm(), (p[2] - p[1]).norm(), (p[0] - p[2]).norm()});
-  if (longest > projection.maxTriangleEdge() && depth < 8) {
+void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight,
+                  const Window& window, int depth, cl::Paths& pieces) {
+  if (projection.skip(p) || window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2])))
+    return;
+  if (depth < 6 && projection.bends(p)) {
     const Eigen::Vector3d m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
     const Eigen::Vector3d parts[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
-    for (const auto& part : parts) addProjected(projection, part, fromHeight, depth + 1, pieces);
+    for (const auto& part : parts) addProjected(projection, part, fromHeight, window, depth + 1, pieces);
     return;
   }
   const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
@@ -174,8 +199,7 @@ cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& p
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
     if (std::max({projection.height(p[0]), projection.height(p[1]), projection.height(p[2])}) < fromHeight) continue;
-    if (window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2]))) continue;
-    addProjected(projection, p, fromHeight, 0, pieces);
+    addProjected(projection, p, fromHeight, window, 0, pieces);
   }
   cl::Clipper clipper;
   clipper.AddPaths(pieces, cl::ptSubject, true);
