@@ -65,7 +65,7 @@ struct SweepSettings {
   double tolerance = 0.01;        // mm: chords of the passes and of the shapes' sections
   double rampAngleDeg = 3.0;      // entries into material ramp at most this steep
   double clearance = 5.0;         // mm beyond the stock along the tool axis where links travel
-  double meshDeflection = 0.02;   // mm: the part's triangles, for its shadow (added to the allowance)
+  double meshDeflection = 0.05;   // mm: the part's triangles, for its shadow (added to the allowance)
   ProgressCallback progress;
 };
 
