@@ -69,6 +69,7 @@ demo: build
 	scripts/run-freecadcmd.sh examples/feedrate_study.py $(OUT)
 	scripts/run-freecadcmd.sh examples/machining_direction.py $(OUT)
 	scripts/run-freecadcmd.sh examples/roughing_partition.py $(OUT)
+	scripts/run-freecadcmd.sh examples/roughing_paths.py $(OUT)
 
 bench: build
 	$(BUILD_DIR)/bin/bench_curvenet

@@ -144,3 +144,34 @@ def check_clearance(paths, part, tool=None, limit=None, spacing=1.0, deflection=
         limit = _core.roughing.SweepSettings().allowance - 0.01
     return _core.roughing.check_clearance(moves["tip"], moves["axis"], as_brep(part), tool, float(limit),
                                           float(spacing), float(deflection))
+
+
+def machine_axes(paths, machine):
+    """The moves of a sweep (a SweepResult or its `moves` dict) on a machine (a MachineModel): the tool tip
+    (workpiece frame, for a tool-tip-programmed post) and the rotary angles (deg, the machine's axes in chain
+    order, each nearest the previous: the inverse kinematics' choice rule). A 3-axis machine takes only moves
+    along its tool axis; a move the machine cannot orient raises ValueError naming the move and the machine.
+    Returns (tips (N, 3), angles (N, 2), the rotary axes' names)."""
+    import numpy as np
+
+    moves = paths.moves if hasattr(paths, "moves") else paths
+    tips, axes = np.asarray(moves["tip"], dtype=float), np.asarray(moves["axis"], dtype=float)
+    names = [a.name for a in machine.rotary_axes]
+    angles = np.zeros((len(tips), 2))
+    if not names:
+        tool = np.asarray(machine.tool_axis, dtype=float)
+        bad = np.where(axes @ tool < 1.0 - 1e-9)[0]
+        if len(bad):
+            raise ValueError("move %d tilts the tool (axis %s) but machine '%s' has no rotary axes: use a 4- or "
+                             "5-axis machine, or a 3-axis strategy (S1)" % (bad[0], tuple(np.round(axes[bad[0]], 4)),
+                                                                          machine.name))
+        return tips, angles, names
+    previous = [0.0, 0.0]
+    for i, (tip, axis) in enumerate(zip(tips, axes)):
+        try:
+            _, found, _ = _core.inverse_kinematics(machine, tip, axis, previous)
+        except ValueError as error:
+            raise ValueError("move %d: %s" % (i, error)) from None
+        angles[i] = found
+        previous = list(found)
+    return tips, angles, names

@@ -107,3 +107,23 @@ class MachiningDirectionExample(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class RoughingPathsExample(unittest.TestCase):
+    def test_sweeps_checks_posts_and_simulates_each_strategy(self):
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "roughing_paths.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
+        import csv
+        with open(os.path.join(out, "roughing_paths.csv")) as stream:
+            rows = list(csv.DictReader(stream))
+        self.assertEqual([r["strategy"] for r in rows], ["S1", "S2", "S3"])
+        for row in rows:
+            self.assertEqual(row["too_close"], "0", row)
+            self.assertGreaterEqual(float(row["closest_mm"]), 0.49, row)
+            self.assertGreater(float(row["840d_time_s"]), float(row["840d_length_over_feed_s"]) * 0.99, row)
+            self.assertTrue(os.path.getsize(os.path.join(out, "roughing_%s_840d.mpf" % row["strategy"])) > 1000)
+            self.assertTrue(os.path.getsize(os.path.join(out, "roughing_%s_linuxcnc.ngc" % row["strategy"])) > 1000)
+        self.assertIn("C ", rows[1]["840d_held_by"], "S2 turns C about the impeller's axis")
+        with open(os.path.join(out, "roughing_paths.png"), "rb") as stream:
+            self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")

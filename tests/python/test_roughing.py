@@ -202,6 +202,21 @@ class Sweep(unittest.TestCase):
         report = roughing.check_clearance(paths, self.shapes.part_brep, roughing.cutter("flat", diameter=6.0), 0.29)
         self.assertEqual(report.too_close, 0)
 
+    def test_machine_axes_give_the_tool_axes_back(self):
+        from hsmplanner import _core, feedsim
+        _, paths = self.swept("S3")
+        trunnion = feedsim.load_machine("mikron-ucp710-ac-840d")
+        tips, angles, names = roughing.machine_axes(paths, trunnion)
+        self.assertEqual(names, ["A", "C"])
+        for angle, axis in zip(angles[::25], paths.moves["axis"][::25]):
+            np.testing.assert_allclose(_core.forward_kinematics(trunnion, [0, 0, 0], list(angle))[1], axis, atol=1e-9)
+        with self.assertRaisesRegex(ValueError, "tilts the tool .* but machine 'mikron-ucp710-840d' has no rotary axes"):
+            roughing.machine_axes(paths, feedsim.load_machine("mikron-ucp710-840d"))
+        _, flat = self.swept("S1")
+        tips, angles, names = roughing.machine_axes(flat, feedsim.load_machine("mikron-ucp710-840d"))
+        self.assertEqual(names, [])
+        np.testing.assert_allclose(tips, flat.moves["tip"])
+
     def test_bad_settings_name_the_input(self):
         result = roughing.partition(self.volume, self.shapes.part_brep, "S1")
         for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in ]0, 1]"),

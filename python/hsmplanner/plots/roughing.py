@@ -87,3 +87,40 @@ def save_slice_volumes(rows, path, title):
     figure.suptitle(title, fontsize=9)
     figure.set_layout_engine("tight")
     figure.savefig(path)
+
+
+def save_sweeps(sweeps, path, title, view=(28, -60), axis_every_mm=6.0, axis_length_mm=5.0):
+    """One 3D panel per sweep: [(label, SweepResult), …]; cuts coloured by level, ramps and links grey, rapids
+    dotted, and a tick of the tool axis every few millimetres of cutting (4- and 5-axis paths show it turn)."""
+    from hsmplanner.roughing import MOVE_KINDS
+
+    cut, ramp, link, rapid = (MOVE_KINDS.index(k) for k in ("cut", "ramp", "link", "rapid"))
+    columns = min(3, len(sweeps))
+    rows = (len(sweeps) + columns - 1) // columns
+    figure = new_figure(4.6 * columns, 4.2 * rows)
+    for k, (label, paths) in enumerate(sweeps):
+        axes = figure.add_subplot(rows, columns, k + 1, projection="3d")
+        moves = paths.moves
+        tips, kinds, levels = moves["tip"], moves["kind"], moves["sub_volume"]
+        travelled = 0.0
+        for i in range(1, len(tips)):
+            a, b = tips[i - 1], tips[i]
+            segment = np.vstack([a, b])
+            if kinds[i] == cut:
+                axes.plot(*segment.T, color=slice_color(max(0, levels[i])), linewidth=0.9)
+                travelled += np.linalg.norm(b - a)
+                if travelled >= axis_every_mm:
+                    travelled = 0.0
+                    tick = np.vstack([b, b + axis_length_mm * moves["axis"][i]])
+                    axes.plot(*tick.T, color="#555555", linewidth=0.5)
+            elif kinds[i] in (ramp, link):
+                axes.plot(*segment.T, color="#888888", linewidth=0.6)
+            elif kinds[i] == rapid:
+                axes.plot(*segment.T, color="#bbbbbb", linewidth=0.4, linestyle=":")
+        axes.view_init(*view)
+        axes.set_title("%s: %d passes, %.0f mm cutting" % (label, len(paths.passes), paths.cutting_length), fontsize=8)
+        axes.tick_params(labelsize=6)
+    figure.suptitle(title, fontsize=9)
+    figure.subplots_adjust(left=0.0, right=1.0, top=0.9, bottom=0.02, wspace=0.05, hspace=0.12)
+    figure.savefig(path)
+    return path
