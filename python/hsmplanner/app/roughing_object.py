@@ -286,6 +286,23 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         obj.InputSignature = signature
         self.show(obj)
 
+    def computed(self, obj):
+        """(VolumeToRemove, part BREP, stock BREP, [(region index, Partition)]) of the object's inputs, from
+        the caches when they hold them (a reopened document computes them again): for the operations that
+        sweep the sub-volumes. Raises as a recompute does."""
+        if not hasattr(self, "partition_cache"):
+            self.forget()
+        part_shape, stock_shape = self.inputs(obj)
+        settings = self.settings(obj)
+        volume_key = (shape_fingerprint(part_shape), shape_fingerprint(stock_shape))
+        if self.volume_cache is None or self.volume_cache[0] != volume_key:
+            part_brep = hsmplanner.as_brep(part_shape.copy())
+            self.volume_cache = (volume_key, roughing.volume_to_remove(stock_shape.copy(), part_brep), part_brep)
+            self.partition_cache.clear()
+        _, volume, part_brep = self.volume_cache
+        partitions = self.partitions(obj, volume, part_brep, volume_key, settings, None)
+        return volume, part_brep, hsmplanner.as_brep(stock_shape.copy()), partitions
+
     def partitions(self, obj, volume, part_brep, volume_key, settings, progress):
         """[(region index, Partition)] of the regions asked for (Region), from the cache when computed before."""
         if settings["strategy"] is None:

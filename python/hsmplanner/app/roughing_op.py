@@ -1,0 +1,106 @@
+"""Path/CAM operation "Volume roughing": the sub-volumes of a Roughing volume object swept into a toolpath
+(cpp/roughing/sweep.hpp), on the machine chosen for it (its rotary axes give the A/B/C of the moves).
+
+Thin, as FreeCAD's own operations: properties wired to hsmplanner.roughing through app/roughing_commands.
+The tool is the operation's tool controller: a torus (FreeCAD's bullnose: corner radius = diameter / 2 −
+FlatRadius), a flat end mill or a ball end. Post the result with our 840D post (TRAORI) or the LinuxCNC 5-axis
+post, with --machine the operation's Machine; a strategy that tilts the tool on a 3-axis Machine is refused
+when the operation computes. Proxy classes are recorded in saved documents: never rename them.
+"""
+import FreeCAD
+
+from hsmplanner import feedsim, roughing
+
+from .compat import cam_module
+from .property_limits import PropertyLimits
+from .roughing_commands import sweep_commands
+
+PathOp = cam_module("op")
+
+_DEFAULTS = roughing._core.roughing.SweepSettings()  # each default written once, in C++
+DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
+LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0)}
+
+
+def cutter_of(tool):
+    """The core Cutter of a FreeCAD tool (ToolBit or legacy): its kind from the shape, diameter and corner."""
+    shape = str(getattr(tool, "ShapeName", "") or getattr(tool, "BitShape", "") or "").lower()
+    diameter = float(getattr(tool, "Diameter", 0.0))
+    if diameter <= 0:
+        raise ValueError("the tool controller's tool has no diameter: choose a torus, flat or ball end mill")
+    if "bullnose" in shape or "torus" in shape:
+        flat = float(getattr(tool, "FlatRadius", 0.0))
+        return roughing.cutter("torus", diameter=diameter, corner_radius=0.5 * diameter - flat)
+    if "ballend" in shape:
+        return roughing.cutter("ball", diameter=diameter)
+    if "endmill" in shape or getattr(tool, "ToolType", "") == "EndMill":
+        return roughing.cutter("flat", diameter=diameter)
+    raise ValueError("tool shape '%s' is not a roughing cutter: use a bullnose (torus), endmill or ballend ToolBit"
+                     % (shape or "unknown"))
+
+
+class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
+    LIMITS = LIMITS
+
+    def opFeatures(self, obj):
+        return PathOp.FeatureTool | PathOp.FeatureCoolant
+
+    def initOperation(self, obj):
+        obj.addProperty("App::PropertyLink", "Volume", "Roughing", "the Roughing volume whose sub-volumes are swept "
+                        "(its Strategy, Step and Region)")
+        obj.addProperty("App::PropertyEnumeration", "Machine", "Roughing", "the machine whose rotary axes the "
+                        "moves' A/B/C are (post with --machine=this)")
+        obj.Machine = feedsim.machine_names()
+        obj.Machine = DEFAULT_MACHINE
+        obj.addProperty("App::PropertyPercent", "RadialEngagement", "Roughing", "step between passes, % of the "
+                        "tool diameter")
+        obj.RadialEngagement = int(round(100 * _DEFAULTS.radial_engagement))
+        obj.addProperty("App::PropertyLength", "Allowance", "Roughing", "stock left on the part")
+        obj.Allowance = _DEFAULTS.allowance
+        obj.addProperty("App::PropertyAngle", "RampAngle", "Roughing", "entries into material ramp at most this steep")
+        obj.RampAngle = _DEFAULTS.ramp_angle_deg
+        for name, kind, tip in (("Passes", "App::PropertyInteger", "passes of the last computation"),
+                                ("CuttingLength", "App::PropertyLength", "cutting path of the last computation"),
+                                ("ClosestApproach", "App::PropertyLength",
+                                 "least distance from the tool to the part, checked independently")):
+            obj.addProperty(kind, name, "Result", tip)
+            obj.setEditorMode(name, 1)
+
+    def opExecute(self, obj):
+        if obj.Volume is None:
+            raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
+        volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
+        if not partitions:
+            raise ValueError("%s has no strategy: choose one (S1, S2 or S3) to partition the volume" % obj.Volume.Label)
+        cutter = cutter_of(obj.ToolController.Tool)
+        machine = feedsim.load_machine(obj.Machine)
+        passes, length, closest = 0, 0.0, float("inf")
+        for index, partition in partitions:
+            paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
+                                   radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
+                                   ramp_angle_deg=obj.RampAngle.Value)
+            for warning in paths.warnings:
+                FreeCAD.Console.PrintWarning("%s: region %d: %s\n" % (obj.Label, index + 1, warning))
+            report = roughing.check_clearance(paths, part_brep, cutter, obj.Allowance.Value - 0.01)
+            if report.too_close:
+                FreeCAD.Console.PrintWarning("%s: region %d: %d tool positions come within %.3f mm of the part "
+                                             "(allowance %.3f mm)\n" % (obj.Label, index + 1, report.too_close,
+                                                                       report.minimum, obj.Allowance.Value))
+            passes += len(paths.passes)
+            length += paths.cutting_length
+            closest = min(closest, report.minimum)
+            self.commandlist.extend(sweep_commands(paths, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
+        obj.Passes = passes
+        obj.CuttingLength = length
+        obj.ClosestApproach = max(0.0, closest)
+
+
+def SetupProperties():
+    return ["RadialEngagement", "Allowance", "RampAngle", "Machine"]
+
+
+def CreateVolumeRoughing(name, obj=None, parentJob=None):
+    if obj is None:
+        obj = FreeCAD.ActiveDocument.addObject("Path::FeaturePython", name)
+    obj.Proxy = ObjectVolumeRoughing(obj, name, parentJob)
+    return obj
