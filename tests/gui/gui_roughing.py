@@ -309,4 +309,45 @@ def a_jobs_stock_is_offered_first(run):
     run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
 
 
+@run.step
+def volume_roughing_operation_in_the_job(run):
+    """The Volume roughing command in the Job of the last step: its panel takes the Roughing volume (S3 on the
+    slot) and the trunnion machine; OK computes a tilted path clear of the part."""
+    from PySide2 import QtWidgets
+
+    from hsmplanner.app import roughing_op
+
+    document = FreeCAD.ActiveDocument
+    job = next(o for o in document.Objects if hasattr(o, "Operations"))
+    slot = document.getObject("RoughingVolume")
+    slot.Strategy = [s for s in slot.getEnumerationsOfProperty("Strategy") if s.startswith("S3")][0]
+    document.recompute()
+    roughing_op.torus_controller(job)
+    document.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(job)
+    Gui.runCommand("HSM_VolumeRoughing")
+    run.wait_until(run.task_dialog_open, 20.0, "the Volume roughing panel")
+    op = next(o for o in document.Objects if hasattr(o, "Proxy") and type(o.Proxy).__name__ == "ObjectVolumeRoughing")
+    forms = [w for w in QtWidgets.QApplication.allWidgets() if hasattr(w, "volume") and hasattr(w, "machine")]
+    run.check("the panel lists the Roughing volume", bool(forms) and forms[0].volume.findText(slot.Label) >= 0,
+              str([forms[0].volume.itemText(i) for i in range(forms[0].volume.count())] if forms else "no form"))
+    if forms:
+        forms[0].volume.setCurrentText(slot.Label)
+        forms[0].machine.setCurrentText(roughing_op.DEFAULT_MACHINE)
+    run.screenshot("volume_roughing_panel")
+    Gui.Control.closeDialog()  # as Cancel: the operation stays, its Volume set from here
+    run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
+    op.Volume = slot
+    document.recompute()
+    run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the operation computed")
+    run.notes["volume roughing"] = {"passes": op.Passes, "cutting mm": op.CuttingLength.Value,
+                                    "closest mm": op.ClosestApproach.Value}
+    run.check("a path with passes, clear of the part", op.Passes > 0 and op.ClosestApproach.Value >= 0.48,
+              str(run.notes["volume roughing"]))
+    run.check("its moves tilt A", any(abs(c.Parameters.get("A", 0.0)) > 1.0 for c in op.Path.Commands))
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("volume_roughing_path")
+
+
 run.start()

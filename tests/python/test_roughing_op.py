@@ -8,26 +8,9 @@ import numpy as np
 
 import hsmplanner
 from hsmplanner.app import roughing_object, roughing_op, roughing_parts
-from hsmplanner.app.compat import cam_module, create_job
+from hsmplanner.app.compat import create_job
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
 from helpers import temporary_directory
-
-
-def torus_controller(job, diameter=8.0, corner=1.0, feed_mm_min=2000.0):
-    """A bullnose ToolBit (the paper's Ø8 r1 torus) and its controller, the Job's only one."""
-    for old in list(job.Tools.Group):
-        job.Tools.removeObject(old)
-        job.Document.removeObject(old.Name)
-    tool_bit, tool_controller = cam_module("tool_bit"), cam_module("tool_controller")
-    bit = tool_bit.Factory.Create("Torus", tool_bit.findToolShape("bullnose.fcstd"))
-    bit.Diameter = diameter
-    bit.FlatRadius = 0.5 * diameter - corner
-    controller = tool_controller.Create("TC: Torus", bit, 3)
-    controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
-    controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % (0.5 * feed_mm_min))
-    controller.SpindleSpeed = 12000
-    job.Tools.addObject(controller)
-    return controller
 
 
 class VolumeRoughing(unittest.TestCase):
@@ -40,7 +23,7 @@ class VolumeRoughing(unittest.TestCase):
         cls.document.recompute()
         cls.volume = roughing_object.create(part, stock, Strategy="S3")
         cls.job = create_job([part])
-        cls.controller = torus_controller(cls.job)
+        cls.controller = roughing_op.torus_controller(cls.job)
         cls.op = roughing_op.CreateVolumeRoughing("Roughing", parentJob=cls.job)
         cls.op.Volume = cls.volume
         cls.document.recompute()

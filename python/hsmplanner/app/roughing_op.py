@@ -39,6 +39,28 @@ def cutter_of(tool):
                      % (shape or "unknown"))
 
 
+def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, spindle_rpm=12000, number=3):
+    """A bullnose ToolBit (default: the roughing paper's Ø8 r1 torus) and its tool controller, made the Job's
+    only one (headless FreeCAD 0.20 cannot choose among several for a new operation)."""
+    for old in list(job.Tools.Group):
+        job.Tools.removeObject(old)
+        job.Document.removeObject(old.Name)
+    tool_bit, tool_controller = cam_module("tool_bit"), cam_module("tool_controller")
+    shape = tool_bit.findToolShape("bullnose.fcstd")
+    if not shape:
+        raise RuntimeError("FreeCAD's bullnose.fcstd tool shape is missing from this installation")
+    bit = tool_bit.Factory.Create("Torus%g" % diameter, shape)
+    bit.Diameter = diameter
+    bit.FlatRadius = 0.5 * diameter - corner_radius
+    bit.Label = "Torus Ø%g r%g" % (diameter, corner_radius)
+    controller = tool_controller.Create("TC: Torus Ø%g r%g" % (diameter, corner_radius), bit, number)
+    controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
+    controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % (0.5 * feed_mm_min))
+    controller.SpindleSpeed = spindle_rpm
+    job.Tools.addObject(controller)
+    return controller
+
+
 class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
     LIMITS = LIMITS
 

@@ -6,7 +6,7 @@ from hsmplanner.resources import icon
 
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
                  "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "Separator",
-                 "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume"]
+                 "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume", "HSM_VolumeRoughing"]
 
 
 class CommandMasterBottomFeature:

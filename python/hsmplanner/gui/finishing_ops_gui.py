@@ -1,12 +1,13 @@
-"""Task panels and commands of the finishing operations, on FreeCAD's own operation GUI (PathOpGui):
-the Job's tool controllers, heights and coolant pages come with them."""
+"""Task panels and commands of our Path operations (guide-curve and parallel-plane finishing, volume
+roughing), on FreeCAD's own operation GUI (PathOpGui): the Job's tool controllers, heights and coolant pages
+come with them."""
 import os
 
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtWidgets
 
-from hsmplanner.app import finishing, finishing_ops
+from hsmplanner.app import finishing, finishing_ops, roughing_op
 from hsmplanner.app.compat import cam_module
 from hsmplanner.resources import icon
 
@@ -140,6 +141,69 @@ class ParallelPlaneFinishingPage(_FinishingPage):
         return super().getSignalsForUpdate(obj) + [self.form.angle.valueChanged]
 
 
+class VolumeRoughingPage(PathOpGui.TaskPanelPage):
+    """Tool controller (a bullnose is the torus), coolant, the Roughing volume, the machine of the A/B/C, the
+    radial engagement, allowance and ramp angle; the results of the last computation."""
+
+    def getForm(self):
+        form = QtWidgets.QWidget()
+        layout = QtWidgets.QFormLayout(form)
+        form.toolController = QtWidgets.QComboBox()
+        form.coolantController = QtWidgets.QComboBox()
+        form.volume = QtWidgets.QComboBox()
+        form.machine = QtWidgets.QComboBox()
+        form.machine.setToolTip("the machine whose rotary axes the moves' A/B/C are: post with --machine=this")
+        form.engagement = _spin(70.0, roughing_op.LIMITS["RadialEngagement"], decimals=0, suffix=" %")
+        form.allowance = _spin(0.5, roughing_op.LIMITS["Allowance"], decimals=2)
+        form.ramp = _spin(3.0, roughing_op.LIMITS["RampAngle"], decimals=1, suffix=" °")
+        form.result = QtWidgets.QLabel()
+        form.result.setWordWrap(True)
+        for label, widget in (("Tool controller", form.toolController), ("Coolant", form.coolantController),
+                              ("Roughing volume", form.volume), ("Machine", form.machine),
+                              ("Radial engagement", form.engagement), ("Allowance", form.allowance),
+                              ("Ramp angle", form.ramp), ("", form.result)):
+            layout.addRow(label, widget)
+        return form
+
+    def volumes(self):
+        return [o for o in FreeCAD.ActiveDocument.Objects
+                if hasattr(o, "Proxy") and type(o.Proxy).__name__ == "RoughingVolume"]
+
+    def getFields(self, obj):
+        self.updateToolController(obj, self.form.toolController)
+        self.updateCoolant(obj, self.form.coolantController)
+        volumes = {v.Label: v for v in self.volumes()}
+        obj.Volume = volumes.get(self.form.volume.currentText())
+        obj.Machine = self.form.machine.currentText()
+        obj.RadialEngagement = int(self.form.engagement.value())
+        obj.Allowance = self.form.allowance.value()
+        obj.RampAngle = self.form.ramp.value()
+
+    def setFields(self, obj):
+        self.setupToolController(obj, self.form.toolController)
+        self.setupCoolant(obj, self.form.coolantController)
+        for box, items, current in ((self.form.volume, [v.Label for v in self.volumes()],
+                                     obj.Volume.Label if obj.Volume is not None else None),
+                                    (self.form.machine, obj.getEnumerationsOfProperty("Machine"), obj.Machine)):
+            box.blockSignals(True)
+            box.clear()
+            box.addItems(items)
+            if current:
+                box.setCurrentText(current)
+            box.blockSignals(False)
+        self.form.engagement.setValue(obj.RadialEngagement)
+        self.form.allowance.setValue(obj.Allowance.Value)
+        self.form.ramp.setValue(obj.RampAngle.Value)
+        self.form.result.setText("%d passes, %.0f mm cutting; closest to the part %.3f mm" % (
+            obj.Passes, obj.CuttingLength.Value, obj.ClosestApproach.Value) if obj.Passes else "")
+
+    def getSignalsForUpdate(self, obj):
+        f = self.form
+        return [f.toolController.currentIndexChanged, f.coolantController.currentIndexChanged,
+                f.volume.currentIndexChanged, f.machine.currentIndexChanged, f.engagement.valueChanged,
+                f.allowance.valueChanged, f.ramp.valueChanged]
+
+
 def _no_gate():
     """Selection for these operations is free (PathSelection only knows FreeCAD's own operations)."""
     FreeCADGui.Selection.removeSelectionGate()
@@ -207,6 +271,10 @@ COMMANDS = {
     "HSM_ParallelPlaneFinishing": CommandFinishing(
         "ParallelPlaneFinishing", finishing_ops.CreateParallelPlaneFinishing, ParallelPlaneFinishingPage,
         "ParallelPlaneFinishing", "Parallel plane finishing", "Ball-end passes in parallel planes at an angle"),
+    "HSM_VolumeRoughing": CommandFinishing(
+        "VolumeRoughing", roughing_op.CreateVolumeRoughing, VolumeRoughingPage, "VolumeRoughing", "Volume roughing",
+        "Contour-parallel passes through the sub-volumes of a Roughing volume (S1, S2, S3), the tool axis normal "
+        "to their slicing surfaces, on a 3-, 4- or 5-axis machine"),
 }
 
 
