@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <RWStl.hxx>
 #include <Standard_Failure.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
@@ -69,6 +70,10 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
     }
   }
   return mesh;
+}
+
+TriangleMesh meshFacesAfresh(const TopoDS_Shape& shape, double deflection) {
+  return meshFaces(BRepBuilderAPI_Copy(shape, Standard_True, Standard_False).Shape(), deflection);
 }
 
 void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing) {

@@ -23,6 +23,10 @@ struct TriangleMesh {
 // Tessellates the faces of `shape` within `deflection` mm (chordal) and 0.5 rad (angular). Faces are
 // numbered as FreeCAD numbers them (Face1, Face2… in TopExp order); `faces` selects some (empty: all).
 TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces = {});
+// The same on a copy of the shape's geometry: OCCT keeps a shape's finest triangulation, so meshFaces gives
+// what the shape was meshed with before when that was finer; this one depends on `deflection` alone (a
+// result that must not depend on what ran before: the roughing's setup search and sweeps).
+TriangleMesh meshFacesAfresh(const TopoDS_Shape& shape, double deflection);
 
 // The boundary edges of face `face` of `shape` as polylines with chords of at most `spacing` mm.
 void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing);

@@ -37,7 +37,7 @@ constexpr double kMinResolutionDeg = 0.5;
 // each column meets the solid's faces, and the stretches between entries and exits hold its points.
 std::vector<Eigen::Vector3d> gridPoints(const TopoDS_Shape& solid, double spacing) {
   Bnd_Box box;
-  BRepBndLib::Add(solid, box);
+  BRepBndLib::Add(solid, box, Standard_False);  // the geometry's bounds, not a triangulation's: the grid must not depend on what meshed the solid before
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
   const double cells = std::ceil((x1 - x0) / spacing) * std::ceil((y1 - y0) / spacing) * std::ceil((z1 - z0) / spacing);
@@ -181,7 +181,7 @@ ReachProblem reachProblem(const RemovalSolid& solid, const TopoDS_Shape& part, c
     throw InputError("the setup grid of " + number(settings.setupGrid) + " mm puts no point inside the volume: use a finer grid");
   Bnd_Box box;
   BRepBndLib::Add(part, box);
-  problem.mesh = geometry::meshFaces(part, std::max(1e-3, 5e-3 * std::sqrt(box.SquareExtent())));
+  problem.mesh = geometry::meshFacesAfresh(part, std::max(1e-3, 5e-3 * std::sqrt(box.SquareExtent())));
   return problem;
 }
 

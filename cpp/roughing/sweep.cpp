@@ -309,7 +309,7 @@ class Sweeper {
 public:
   Sweeper(const Partition& partition, const TopoDS_Shape& part, const TopoDS_Shape& stock, const SweepSettings& settings)
       : partition_(partition), settings_(settings), projection_(projectionOf(partition)),
-        partMesh_(geometry::meshFaces(part, settings.meshDeflection)) {
+        partMesh_(geometry::meshFacesAfresh(part, settings.meshDeflection)) {
     const geometry::TriangleMesh stockMesh = geometry::meshFaces(stock, std::max(0.05, settings.meshDeflection));
     double high = -std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, projection_->height(p));
@@ -339,7 +339,7 @@ private:
     Level level;
     level.subVolume = index;
     level.top = sub.surface.kind == SurfaceKind::Cylinder ? sub.surface.radius : projection_->height(sub.surface.origin);
-    const geometry::TriangleMesh mesh = geometry::meshFaces(sub.shape, settings_.meshDeflection);
+    const geometry::TriangleMesh mesh = geometry::meshFacesAfresh(sub.shape, settings_.meshDeflection);
     double low = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : mesh.vertices) low = std::min(low, projection_->height(p));
     level.tip = std::max(level.top - partition_.step, low);
