@@ -84,6 +84,8 @@ Sides sides(const MachineModel& m) {
 }  // namespace
 
 ToolPose forwardKinematics(const MachineModel& m, const MachinePosition& position) {
+  if (!position.linear.allFinite() || !std::isfinite(position.angles[0]) || !std::isfinite(position.angles[1]))
+    throw InputError("forward kinematics: the machine position must be finite numbers (mm, deg)");
   const Motion table = chainMotion(m, position.angles, true), head = chainMotion(m, position.angles, false);
   ToolPose pose;
   // machine tip = X Y Z + head(0); workpiece point = table⁻¹(machine point)
@@ -151,6 +153,8 @@ std::vector<AngleSolution> orientationSolutions(const MachineModel& m, const Eig
 }
 
 InverseResult inverseKinematics(const MachineModel& m, const ToolPose& pose, const RotaryAngles& previous) {
+  if (!pose.tip.allFinite() || !std::isfinite(previous[0]) || !std::isfinite(previous[1]))
+    throw InputError("inverse kinematics: the tool tip and the previous angles must be finite numbers (mm, deg)");
   InverseResult result;
   const std::vector<AngleSolution> solutions = orientationSolutions(m, pose.axis);
   result.solutions = static_cast<int>(solutions.size());

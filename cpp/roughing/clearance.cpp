@@ -14,7 +14,7 @@
 namespace hsm::roughing {
 
 namespace {
-constexpr long kMaxPositions = 10000000;
+constexpr long kMaxPositions = 2000000;  // about 1 ms each on the impeller: bounded work
 
 // Triangles bucketed in a uniform grid of cubes, for the ones near a tool position.
 class TriangleGrid {
@@ -33,7 +33,7 @@ public:
       for (int k = 0; k < 3; ++k) radius = std::max(radius, (mesh.vertices[mesh.triangles[t][k]] - centre).norm());
       centres_.push_back(centre);
       radii_.push_back(radius);
-      forCells(box, [&](long key) { cells_[key].push_back(static_cast<int>(t)); }, 0);
+      forCells(box, [&](long key, const Eigen::Vector3d&) { cells_[key].push_back(static_cast<int>(t)); });
     }
   }
 
@@ -71,10 +71,6 @@ private:
     for (int i = lo.x(); i <= hi.x(); ++i)
       for (int j = lo.y(); j <= hi.y(); ++j)
         for (int k = lo.z(); k <= hi.z(); ++k) each(key(i, j, k), Eigen::Vector3d((i + 0.5) * cell_, (j + 0.5) * cell_, (k + 0.5) * cell_));
-  }
-  template <class Each>
-  void forCells(const Eigen::AlignedBox3d& box, Each&& each, int) const {
-    forCells(box, [&](long key, const Eigen::Vector3d&) { each(key); });
   }
   static long key(int i, int j, int k) {
     return (static_cast<long>(i) & 0x1FFFFF) | ((static_cast<long>(j) & 0x1FFFFF) << 21) |

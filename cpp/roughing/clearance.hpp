@@ -38,7 +38,7 @@ public:
 
   // The moves (rapids too: a rapid must not hit the part either) sampled every `spacing` mm; `limit` counts the
   // positions closer than it (e.g. the allowance − 0.01 mm). InputError for a spacing outside 0.01–100 mm, and
-  // when the moves would need more than 10 million positions.
+  // when the moves would need more than 2 million positions.
   ClearanceReport check(const std::vector<ToolMove>& moves, const Cutter& cutter, double limit,
                         double spacing = 1.0) const;
 

@@ -511,7 +511,6 @@ private:
 
   // A straight move at the level in the flat passes (points added where the surface bends).
   void link(const cl::IntPoint& from, const cl::IntPoint& to, const Level& level) {
-    cl::Paths segment{cl::Path{from, to}};
     const double length = std::hypot(double(to.X - from.X), double(to.Y - from.Y)) / kScale;
     const double longest = projection_->maxSegment(level.tip, settings_.tolerance);
     const int pieces = std::isfinite(longest) ? std::max(1, static_cast<int>(std::ceil(length / longest))) : 1;
@@ -535,9 +534,10 @@ void checkSettings(const SweepSettings& s) {
     if (!(value >= low && value <= high))
       throw InputError(what + " = " + number(value) + " is outside [" + number(low) + ", " + number(high) + "]: " + fix);
   };
-  if (!(s.radialEngagement > 0.0 && s.radialEngagement <= 1.0))
+  // At least 1 % of the diameter: below it the rings of a level would run into the thousands.
+  if (!(s.radialEngagement >= 0.01 && s.radialEngagement <= 1.0))
     throw InputError("radial engagement = " + number(s.radialEngagement) +
-                     " must be in ]0, 1] (a share of the tool's diameter; the paper uses 0.7)");
+                     " must be in [0.01, 1] (a share of the tool's diameter; the paper uses 0.7)");
   check(s.allowance, 0.0, 10.0, "allowance", "the stock left on the part, mm (default 0.5)");
   check(s.tolerance, 1e-4, 1.0, "tolerance", "mm (default 0.01)");
   check(s.rampAngleDeg, 0.5, 90.0, "ramp angle", "degrees (default 3)");

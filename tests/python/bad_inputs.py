@@ -286,6 +286,52 @@ CASES = [
            "roughing_error(o)", "ValueError", "use a coarser grid"),
     holds("roughing volume cancelled keeps its previous result and stays valid", "result = cancelled_roughing()",
           "result == (True, True, True)"),
+    # --- roughing sweep and clearance, 5-axis kinematics (issues 15, 16): absurd numbers and shapes ---------
+    raises("sweep radial engagement NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, radial_engagement=float('nan'))",
+           "ValueError", "radial engagement = nan must be in [0.01, 1]"),
+    raises("sweep radial engagement 1e-9 (endless rings)", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, radial_engagement=1e-9)",
+           "ValueError", "must be in [0.01, 1]"),
+    raises("sweep radial engagement 1e9", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, radial_engagement=1e9)",
+           "ValueError", "must be in [0.01, 1]"),
+    raises("sweep allowance -1", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, allowance=-1.0)",
+           "ValueError", "allowance = -1 is outside [0, 10]"),
+    raises("sweep tolerance 1e-9", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, tolerance=1e-9)",
+           "ValueError", "tolerance = 1e-09 is outside"),
+    raises("sweep ramp angle 0", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, ramp_angle_deg=0.0)",
+           "ValueError", "ramp angle = 0 is outside"),
+    raises("sweep cutter diameter NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, tool=r.cutter(diameter=float('nan')))",
+           "ValueError", "cutter diameter = nan mm is outside [0.1, 100] mm"),
+    raises("sweep cutter diameter 1e9", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, tool=r.cutter(diameter=1e9))",
+           "ValueError", "is outside [0.1, 100] mm"),
+    raises("sweep with an empty part", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, '', w.stock_brep)", "ValueError", "BREP"),
+    raises("clearance spacing 0", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[0, 0, 40]], 'axis': [[0, 0, 1]]}, w.part_brep, spacing=0.0)",
+           "ValueError", "spacing 0 mm is outside [0.01, 100] mm"),
+    raises("clearance spacing NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[0, 0, 40]], 'axis': [[0, 0, 1]]}, w.part_brep, spacing=float('nan'))",
+           "ValueError", "spacing nan mm is outside"),
+    raises("clearance tips of the wrong shape", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[0, 0]], 'axis': [[0, 0, 1]]}, w.part_brep)",
+           "ValueError", "tips and axes must be (N, 3) arrays"),
+    raises("clearance with a NaN tip", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[float('nan'), 0, 0]], 'axis': [[0, 0, 1]]}, w.part_brep)",
+           "ValueError", "move 0: its tip must be finite and its axis not zero"),
+    raises("clearance with a zero axis", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[0, 0, 0]], 'axis': [[0, 0, 0]]}, w.part_brep)",
+           "ValueError", "its axis not zero"),
+    raises("clearance over 2 million positions", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.check_clearance({'tip': [[0, 0, 0], [1e6, 0, 0]], "
+           "'axis': [[0, 0, 1], [0, 0, 1]]}, w.part_brep, spacing=0.01)", "ValueError", "use a larger spacing"),
+    holds("clearance of no moves", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nresult = r.check_clearance({'tip': np.zeros((0, 3)), 'axis': np.zeros((0, 3))}, "
+          "w.part_brep).positions", "result == 0"),
+    raises("forward kinematics at NaN angles", "m = h.feedsim.load_machine('mikron-ucp710-ac-840d')\n"
+           "h._core.forward_kinematics(m, [0, 0, 0], [float('nan'), 0])", "ValueError", "must be finite numbers"),
+    raises("inverse kinematics of a zero tool axis", "m = h.feedsim.load_machine('mikron-ucp710-ac-840d')\n"
+           "h._core.inverse_kinematics(m, [0, 0, 0], [0, 0, 0])", "ValueError", "cannot point the tool along (0, 0, 0)"),
+    raises("inverse kinematics from a NaN tip", "m = h.feedsim.load_machine('mikron-ucp710-ac-840d')\n"
+           "h._core.inverse_kinematics(m, [float('nan'), 0, 0], [0, 0, 1])", "ValueError", "must be finite numbers"),
+    raises("machine with a rotary axis at 1e9 deg/min", "import json\nm = json.load(open(REPO + "
+           "'/resources/machines/mikron-ucp710-ac-840d.json')); m['rotary_axes'][0]['max_velocity_deg_min'] = 1e9\n"
+           "h.simulate('G1 X1 F100\\n', m)", "ValueError", "rotary axis A: max velocity = 1e+09 deg/min is outside [0.06, 6e+06] deg/min"),
+    raises("machine with three rotary axes", "import json\nm = json.load(open(REPO + "
+           "'/resources/machines/mikron-ucp710-ac-840d.json')); m['rotary_axes'].append(dict(m['rotary_axes'][0], name='B')); del m['kinematics']\n"
+           "h.simulate('G1 X1 F100\\n', m)", "ValueError", "a machine has at most two"),
+    holds("a 5-axis block turning C 1e9 degrees is bounded work", "result = h.simulate('TRAORI\\nG1 X1 C999999999 F100\\n', "
+          "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),
 ]
 
 

@@ -219,7 +219,7 @@ class Sweep(unittest.TestCase):
 
     def test_bad_settings_name_the_input(self):
         result = roughing.partition(self.volume, self.shapes.part_brep, "S1")
-        for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in ]0, 1]"),
+        for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in \\[0.01, 1\\]"),
                                   (dict(allowance=-0.5), "allowance = -0.5 is outside"),
                                   (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
             with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):

@@ -159,7 +159,7 @@ TEST(Sweep, BadSettingsAreRefusedByName) {
   };
   SweepSettings s;
   s.radialEngagement = 0.0;
-  EXPECT_NE(message(s).find("radial engagement = 0 must be in ]0, 1]"), std::string::npos);
+  EXPECT_NE(message(s).find("radial engagement = 0 must be in [0.01, 1]"), std::string::npos);
   s = {};
   s.allowance = -1.0;
   EXPECT_NE(message(s).find("allowance = -1 is outside"), std::string::npos);
