@@ -37,7 +37,7 @@ const char* speedLimitName(SpeedLimit limit) {
   return names[static_cast<int>(limit)];
 }
 
-JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda, bool& singular) {
+JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda) {
   const MachineModel& m = machine_;
   const Eigen::Vector3d point = b.isArc() ? b.pointAt(lambda * b.length()) : b.start + lambda * (b.end - b.start);
   RotaryAngles angles = previous_;
@@ -46,7 +46,6 @@ JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda, bool& singul
     const Eigen::Vector3d axis = slerp(from, b.orientationEnd, lambda);
     ToolPose pose{point, axis};
     const InverseResult inverse = inverseKinematics(m, pose, previous_);
-    singular = singular || inverse.singular;
     angles = inverse.position.angles;
   } else {  // the rotary axes interpolate linearly
     for (size_t i = 0; i < m.rotaryAxes.size(); ++i)
@@ -62,15 +61,15 @@ JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda, bool& singul
 }
 
 void FiveAxisCutter::sample(const Block& block, const RotaryAngles& startAngles, int& pieces,
-                            std::vector<JointVector>& q, bool& singular) {
+                            std::vector<JointVector>& q) {
   for (int attempt = 0;; ++attempt) {
     // Near a singularity the angles swing more than the orientation turns: cut finer until no piece turns
     // an axis more than 2°, or the bound is reached.
     previous_ = startAngles;
-    q.assign(1, jointsAt(block, 0.0, singular));
+    q.assign(1, jointsAt(block, 0.0));
     double widest = 0.0;
     for (int i = 1; i <= pieces; ++i) {
-      q.push_back(jointsAt(block, double(i) / pieces, singular));
+      q.push_back(jointsAt(block, double(i) / pieces));
       widest = std::max(widest, (q[i].tail<2>() - q[i - 1].tail<2>()).cwiseAbs().maxCoeff());
     }
     if (widest <= 2.0 * kDegreesPerPiece || pieces >= kMaxPiecesPerBlock || attempt >= 4) break;
@@ -117,9 +116,8 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   pieces = std::clamp(pieces, 1, kMaxPiecesPerBlock);
 
   std::vector<JointVector> q;
-  bool singular = false;
   try {
-    sample(block, startAngles, pieces, q, singular);
+    sample(block, startAngles, pieces, q);
   } catch (const InputError& error) {
     throw InputError(where + error.what());
   }
@@ -178,7 +176,6 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   previous_ = {q.back()[3], q.back()[4]};
   programmed_ = block.rotaryEnd;
   orientation_ = block.orientationVectors ? block.orientationEnd : toolAxisAt(m, previous_);
-  (void)singular;
 }
 
 }  // namespace hsm::kinematics

@@ -56,10 +56,9 @@ public:
   void cut(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece);
 
 private:
-  JointVector jointsAt(const Block& block, double lambda, bool& singular);
+  JointVector jointsAt(const Block& block, double lambda);
   // The machine axes at `pieces` + 1 points, refined near singularities (pieces may grow).
-  void sample(const Block& block, const RotaryAngles& startAngles, int& pieces, std::vector<JointVector>& q,
-              bool& singular);
+  void sample(const Block& block, const RotaryAngles& startAngles, int& pieces, std::vector<JointVector>& q);
   const MachineModel& machine_;
   RotaryAngles previous_{0.0, 0.0};
   // Where the previous block left the program: A B C as programmed, the tool axis (zero before any vector).
