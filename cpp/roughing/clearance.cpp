@@ -202,8 +202,14 @@ ClearanceReport ClearanceChecker::check(const std::vector<ToolMove>& moves, cons
   if (!(spacing >= 0.01 && spacing <= 100.0))
     throw InputError("clearance check: spacing " + number(spacing) + " mm is outside [0.01, 100] mm");
   long total = static_cast<long>(moves.size());
+  // Samples of a move: every `spacing` mm of the tip's path or of the holder's end's, whichever is more (a
+  // 5-axis move turns the axis as it goes).
+  auto samplesOf = [&](size_t i) {
+    const double turn = std::acos(std::clamp(moves[i].axis.normalized().dot(moves[i - 1].axis.normalized()), -1.0, 1.0));
+    return 1 + static_cast<long>(std::max((moves[i].tip - moves[i - 1].tip).norm(), turn * cutter.stickOut) / spacing);
+  };
   for (size_t i = 1; i < moves.size(); ++i) {
-    total += static_cast<long>((moves[i].tip - moves[i - 1].tip).norm() / spacing);
+    total += samplesOf(i) - 1;
     if (total > kMaxPositions)
       throw InputError("clearance check: more than " + std::to_string(kMaxPositions) + " positions at " + number(spacing) +
                        " mm: use a larger spacing");
@@ -239,11 +245,17 @@ ClearanceReport ClearanceChecker::check(const std::vector<ToolMove>& moves, cons
       report.worstTip = tip;
     }
   };
+  // Along a move the tip goes straight and the axis turns evenly between its ends (as a controller's
+  // orientation interpolation does between the ends' vectors).
   for (size_t i = 0; i < moves.size(); ++i) {
     const Eigen::Vector3d from = i > 0 ? moves[i - 1].tip : moves[i].tip;
-    const int samples = i > 0 ? 1 + static_cast<int>((moves[i].tip - from).norm() / spacing) : 1;
-    for (int k = 1; k <= samples; ++k)
-      checkAt(from + (moves[i].tip - from) * (double(k) / samples), moves[i].axis, static_cast<int>(i));
+    const Eigen::Vector3d fromAxis = i > 0 ? moves[i - 1].axis.normalized() : moves[i].axis.normalized();
+    const long samples = i > 0 ? samplesOf(i) : 1;
+    for (long k = 1; k <= samples; ++k) {
+      const double f = double(k) / double(samples);
+      const Eigen::Vector3d axis = ((1.0 - f) * fromAxis + f * moves[i].axis.normalized()).normalized();
+      checkAt(from + (moves[i].tip - from) * f, axis, static_cast<int>(i));
+    }
   }
   return report;
 }

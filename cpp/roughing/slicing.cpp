@@ -1,5 +1,6 @@
 #include "roughing/slicing.hpp"
 
+#include "roughing/meridian.hpp"
 #include "roughing/rays.hpp"
 
 #include "common/error.hpp"
@@ -71,13 +72,17 @@ Eigen::Vector3d inwardNormal(const TopoDS_Face& face, double u, double v) {
   return {n.X(), n.Y(), n.Z()};
 }
 
-Eigen::Vector3d centreInward(const TopoDS_Face& face, Eigen::Vector3d& point) {
+}  // namespace
+
+Eigen::Vector3d inwardNormalAtCentre(const TopoDS_Face& face, Eigen::Vector3d& point) {
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
   const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
   point = toEigen(BRepAdaptor_Surface(face).Value(u, v).XYZ());
   return inwardNormal(face, u, v);
 }
+
+namespace {
 
 class PlaneFamily : public SlicingFamily {
 public:
@@ -149,7 +154,7 @@ public:
     double u0, u1, v0, v1;
     BRepTools::UVBounds(reference, u0, u1, v0, v1);
     Eigen::Vector3d point;
-    const Eigen::Vector3d inward = centreInward(reference, point);
+    const Eigen::Vector3d inward = inwardNormalAtCentre(reference, point);
     gp_Pnt p;
     gp_Vec du, dv;
     surface->D1(0.5 * (u0 + u1), 0.5 * (v0 + v1), p, du, dv);
@@ -205,47 +210,22 @@ private:
 class RevolutionFamily : public SlicingFamily {
 public:
   RevolutionFamily(const TopoDS_Face& reference, const gp_Ax1& axis, const Box& box)
-      : axisPoint_(toEigen(axis.Location().XYZ())), axis_(toEigen(axis.Direction().XYZ())), box_(box) {
-    e1_ = axis_.unitOrthogonal();
-    // The meridian: the surface along v at the face's middle u, over the surface's v range where it is a
-    // bounded curve (a B-spline's, beyond the face), else over the face's (a periodic meridian, an ellipse's
-    // whole turn, would loop): the ends are extended along their tangents below.
-    BRepAdaptor_Surface surface(reference, Standard_False);
-    double u0, u1, v0, v1;
-    BRepTools::UVBounds(reference, u0, u1, v0, v1);
-    const bool whole = !surface.IsVPeriodic() && std::isfinite(surface.FirstVParameter()) &&
-                       std::isfinite(surface.LastVParameter()) && !surface.IsVClosed();
-    const double vFirst = whole ? surface.FirstVParameter() : v0;
-    const double vLast = whole ? surface.LastVParameter() : v1;
-    const int n = 81;
-    for (int i = 0; i < n; ++i) meridian_.push_back(plane(toEigen(surface.Value(0.5 * (u0 + u1), vFirst + (vLast - vFirst) * i / (n - 1)).XYZ())));
-    // The side of the volume: the face's inward normal at its centre, in the meridian plane.
-    Eigen::Vector3d centre;
-    const Eigen::Vector3d inward = centreInward(reference, centre);
-    const Eigen::Vector2d c = plane(centre);
-    const Eigen::Vector2d towards = plane(centre + 1e-3 * box.size * inward) - c;
-    const size_t k = nearest(c);
-    sign_ = normalAt(k).dot(towards) >= 0.0 ? 1.0 : -1.0;
-  }
-  double depth(const gp_Pnt& p) const override {
-    const Eigen::Vector2d q = plane(toEigen(p.XYZ()));
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t i = 0; i + 1 < meridian_.size(); ++i) {
-      const Eigen::Vector2d a = meridian_[i], m = meridian_[i + 1] - a;
-      const double t = std::clamp(m.dot(q - a) / std::max(m.squaredNorm(), 1e-300), 0.0, 1.0);
-      best = std::min(best, (q - (a + t * m)).squaredNorm());
-    }
-    return std::sqrt(best);
-  }
+      : meridian_(reference, toEigen(axis.Location().XYZ()), toEigen(axis.Direction().XYZ()), kMeridianSamples,
+                  box.size),
+        e1_(meridian_.axis().unitOrthogonal()), box_(box) {}
+  double depth(const gp_Pnt& p) const override { return meridian_.distance(meridian_.plane(toEigen(p.XYZ()))); }
   TopoDS_Shape surfaceAt(double d) const override {
     // The offset meridian, fitted through the offset points, with straight extensions along its end
     // tangents beyond the volume (edges of their own: a fit through far-off points would swing, even across
     // the axis), revolved about the axis.
+    const std::vector<Eigen::Vector2d>& samples = meridian_.samples();
     std::vector<Eigen::Vector2d> points;
-    for (size_t i = 0; i < meridian_.size(); ++i) points.push_back(meridian_[i] + sign_ * d * normalAt(i));
+    for (size_t i = 0; i < samples.size(); ++i) points.push_back(samples[i] + d * meridian_.sampleNormal(i));
     const Eigen::Vector2d first = (points[0] - points[1]).normalized(), last = (points.back() - points[points.size() - 2]).normalized();
+    const Eigen::Vector3d& axisPoint = meridian_.axisPoint();
+    const Eigen::Vector3d& axis = meridian_.axis();
     auto at = [&](const Eigen::Vector2d& q) {
-      return toPoint(axisPoint_ + q.y() * axis_ + std::max(q.x(), 1e-3) * e1_);  // (ρ, z) in the plane of e1
+      return toPoint(axisPoint + q.y() * axis + std::max(q.x(), 1e-3) * e1_);  // (ρ, z) in the plane of e1
     };
     // An extension stops at the axis: a meridian that reaches it closes the surface there.
     auto extended = [&](const Eigen::Vector2d& end, const Eigen::Vector2d& along) {
@@ -258,14 +238,14 @@ public:
     if (!fit.IsDone())
       throw ComputationError("the offset of the surface of revolution by " + number(d) + " mm could not be fitted: "
                              "use a smaller step");
-    BRepBuilderAPI_MakeWire meridian;
+    BRepBuilderAPI_MakeWire wire;
     const gp_Pnt start = fit.Curve()->StartPoint(), end = fit.Curve()->EndPoint();
     const gp_Pnt before = at(extended(points.front(), first)), after = at(extended(points.back(), last));
-    if (before.Distance(start) > 1e-6) meridian.Add(BRepBuilderAPI_MakeEdge(before, start).Edge());
-    meridian.Add(BRepBuilderAPI_MakeEdge(fit.Curve()).Edge());
-    if (after.Distance(end) > 1e-6) meridian.Add(BRepBuilderAPI_MakeEdge(end, after).Edge());
-    if (!meridian.IsDone()) throw ComputationError("the offset meridian at " + number(d) + " mm is degenerate: use another step");
-    BRepPrimAPI_MakeRevol revolve(meridian.Wire(), gp_Ax1(toPoint(axisPoint_), gp_Dir(axis_.x(), axis_.y(), axis_.z())), 2.0 * M_PI);
+    if (before.Distance(start) > 1e-6) wire.Add(BRepBuilderAPI_MakeEdge(before, start).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(fit.Curve()).Edge());
+    if (after.Distance(end) > 1e-6) wire.Add(BRepBuilderAPI_MakeEdge(end, after).Edge());
+    if (!wire.IsDone()) throw ComputationError("the offset meridian at " + number(d) + " mm is degenerate: use another step");
+    BRepPrimAPI_MakeRevol revolve(wire.Wire(), gp_Ax1(toPoint(axisPoint), gp_Dir(axis.x(), axis.y(), axis.z())), 2.0 * M_PI);
     if (!revolve.IsDone())
       throw ComputationError("the offset meridian at " + number(d) + " mm could not be revolved: use another step");
     return revolve.Shape();
@@ -273,32 +253,27 @@ public:
   SlicingSurface surfaceDescription(double d, int reference) const override {
     SlicingSurface s;
     s.kind = SurfaceKind::Revolution;
-    s.origin = axisPoint_;
-    s.direction = axis_;
+    s.origin = meridian_.axisPoint();
+    s.direction = meridian_.axis();
     s.referenceFace = reference;
     s.offset = d;
     return s;
   }
 
+  // The meridian's normal into the volume, exact: a difference of the distance, which has no sign, would be
+  // noise on the reference surface itself (slice 0).
+  Eigen::Vector3d depthGradient(const Eigen::Vector3d& p, double) const override {
+    const auto place = meridian_.locate(meridian_.plane(p));
+    const Eigen::Vector2d n = meridian_.normal(place ? place->s : 0.0);
+    Eigen::Vector3d radial = p - meridian_.axisPoint();
+    radial -= meridian_.axis().dot(radial) * meridian_.axis();
+    if (!(radial.norm() > 1e-12)) return Eigen::Vector3d::Zero();
+    return (radial.normalized() * n.x() + meridian_.axis() * n.y()).normalized();
+  }
+
 private:
-  Eigen::Vector2d plane(const Eigen::Vector3d& p) const {  // (ρ, z) about the axis
-    const Eigen::Vector3d w = p - axisPoint_;
-    const double z = axis_.dot(w);
-    return {(w - z * axis_).norm(), z};
-  }
-  size_t nearest(const Eigen::Vector2d& q) const {
-    size_t best = 0;
-    for (size_t i = 1; i < meridian_.size(); ++i)
-      if ((meridian_[i] - q).squaredNorm() < (meridian_[best] - q).squaredNorm()) best = i;
-    return best;
-  }
-  Eigen::Vector2d normalAt(size_t i) const {  // a unit normal of the meridian polyline at point i
-    const Eigen::Vector2d t = meridian_[std::min(i + 1, meridian_.size() - 1)] - meridian_[i > 0 ? i - 1 : 0];
-    return Eigen::Vector2d(-t.y(), t.x()).normalized();
-  }
-  Eigen::Vector3d axisPoint_, axis_, e1_;
-  std::vector<Eigen::Vector2d> meridian_;
-  double sign_ = 1.0;
+  Meridian meridian_;
+  Eigen::Vector3d e1_;
   Box box_;
 };
 
@@ -341,16 +316,21 @@ void SlicingFamily::axisField(const TopoDS_Shape& slice, double d, std::vector<E
   const size_t stride = std::max<size_t>(1, on.size() / 50);
   const double h = 1e-3 * std::max(1.0, box.size);
   for (size_t i = 0; i < on.size(); i += stride) {
-    Eigen::Vector3d gradient;
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = h;
-      gradient[k] = (depth(toPoint(on[i] + e)) - depth(toPoint(on[i] - e))) / (2.0 * h);
-    }
+    const Eigen::Vector3d gradient = depthGradient(on[i], h);
     if (!(gradient.norm() > 1e-12) || !gradient.allFinite()) continue;
     points.push_back(on[i]);
     directions.push_back(-gradient.normalized());
   }
+}
+
+Eigen::Vector3d SlicingFamily::depthGradient(const Eigen::Vector3d& p, double h) const {
+  Eigen::Vector3d gradient;
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[k] = h;
+    gradient[k] = (depth(toPoint(p + e)) - depth(toPoint(p - e))) / (2.0 * h);
+  }
+  return gradient;
 }
 
 std::unique_ptr<SlicingFamily> planesAlong(const TopoDS_Shape& solid, const Eigen::Vector3d& normal) {
@@ -361,7 +341,7 @@ std::unique_ptr<SlicingFamily> planesAlong(const TopoDS_Shape& solid, const Eige
 std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_Face& reference, Strategy strategy) {
   const Box box = boxOf(solid);
   Eigen::Vector3d point;
-  const Eigen::Vector3d inward = centreInward(reference, point);
+  const Eigen::Vector3d inward = inwardNormalAtCentre(reference, point);
   const BRepAdaptor_Surface surface(reference);
   const bool plane = surface.GetType() == GeomAbs_Plane, cylinder = surface.GetType() == GeomAbs_Cylinder;
   if (strategy == Strategy::PlanesParallelToFace || plane) return std::make_unique<PlaneFamily>(point, inward, box);

@@ -26,6 +26,9 @@ public:
   virtual void axisField(const TopoDS_Shape& slice, double depth, std::vector<Eigen::Vector3d>& points,
                          std::vector<Eigen::Vector3d>& directions) const;
 
+  // The gradient of the depth at p (central differences h apart unless the family knows it exactly).
+  virtual Eigen::Vector3d depthGradient(const Eigen::Vector3d& p, double h) const;
+
   // Least and largest depth over the solid (its mesh nodes, within a fine deflection).
   std::pair<double, double> depthRange(const TopoDS_Shape& solid) const;
 };
@@ -34,6 +37,9 @@ public:
 std::unique_ptr<SlicingFamily> planesAlong(const TopoDS_Shape& solid, const Eigen::Vector3d& normal);
 // The family of a strategy following the reference face of the solid (S1, S2, S4, S5).
 std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_Face& reference, Strategy strategy);
+
+// The face's normal into the solid it bounds at the middle of its parameter box, and that point.
+Eigen::Vector3d inwardNormalAtCentre(const TopoDS_Face& face, Eigen::Vector3d& point);
 
 // A point inside a solid (its centre of mass when inside, else a point found along a line through it).
 gp_Pnt insidePoint(const TopoDS_Shape& solid);

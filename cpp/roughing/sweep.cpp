@@ -6,124 +6,19 @@
 #include "common/error.hpp"
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
-
-#include <polyclipping/clipper.hpp>
+#include "roughing/projection.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 
 namespace hsm::roughing {
 
 namespace {
-namespace cl = ClipperLib;
-constexpr double kScale = 1e4;  // Clipper units per mm: 0.1 µm
 constexpr int kMaxRings = 10000;
 constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
-
-// How a slicing surface is laid flat for the passes: plane coordinates (Clipper units) of a point, its height
-// along the tool axis there (tip planes, cylinder radii), and back. Planes (S1, S3) are laid flat as they are;
-// coaxial cylinders (S2) unrolled at the level's radius, (r·θ, z), the tool axis radial.
-class Projection {
-public:
-  virtual ~Projection() = default;
-  virtual double height(const Eigen::Vector3d& p) const = 0;
-  virtual cl::IntPoint plane(const Eigen::Vector3d& p) const = 0;
-  virtual Eigen::Vector3d point(const cl::IntPoint& q, double h) const = 0;
-  virtual Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const = 0;  // unit, towards the spindle
-  virtual void setLevel(double tipHeight) { (void)tipHeight; }
-  // Longest straight move between two points of the flat passes that stays within `tolerance` of the surface
-  // at height h (∞ on planes), and the longest 3-D edge of a triangle laid flat as a straight-edged one.
-  virtual double maxSegment(double h, double tolerance) const {
-    (void)h, (void)tolerance;
-    return std::numeric_limits<double>::infinity();
-  }
-  // Whether a triangle must be split before it is laid flat with straight edges, or cannot be laid flat.
-  virtual bool bends(const Eigen::Vector3d (&p)[3]) const {
-    (void)p;
-    return false;
-  }
-  virtual bool skip(const Eigen::Vector3d (&p)[3]) const {
-    (void)p;
-    return false;
-  }
-  virtual bool cullsBackFaces() const { return false; }
-};
-
-class PlaneProjection : public Projection {
-public:
-  explicit PlaneProjection(const Eigen::Vector3d& axis) : a_(axis.normalized()) {
-    u_ = a_.unitOrthogonal();
-    v_ = a_.cross(u_);
-  }
-  double height(const Eigen::Vector3d& p) const override { return a_.dot(p); }
-  cl::IntPoint plane(const Eigen::Vector3d& p) const override {
-    return {static_cast<cl::cInt>(std::llround(u_.dot(p) * kScale)), static_cast<cl::cInt>(std::llround(v_.dot(p) * kScale))};
-  }
-  Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
-    return u_ * (static_cast<double>(q.X) / kScale) + v_ * (static_cast<double>(q.Y) / kScale) + a_ * h;
-  }
-  Eigen::Vector3d axisAt(const Eigen::Vector3d&) const override { return a_; }
-  bool cullsBackFaces() const override { return true; }
-
-private:
-  Eigen::Vector3d a_, u_, v_;
-};
-
-class CylinderProjection : public Projection {
-public:
-  // Cylinders about the line (origin, direction); angles measured from `middle` (a radial direction through the
-  // volume: the volume does not reach the seam half a turn away).
-  CylinderProjection(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, const Eigen::Vector3d& middle)
-      : o_(origin), z_(direction.normalized()) {
-    e1_ = (middle - z_ * z_.dot(middle)).normalized();
-    e2_ = z_.cross(e1_);
-  }
-  void setLevel(double tipHeight) override { r_ = tipHeight; }
-  double height(const Eigen::Vector3d& p) const override { return radial(p).norm(); }
-  cl::IntPoint plane(const Eigen::Vector3d& p) const override {
-    const Eigen::Vector3d w = radial(p);
-    const double theta = std::atan2(e2_.dot(w), e1_.dot(w));
-    return {static_cast<cl::cInt>(std::llround(r_ * theta * kScale)),
-            static_cast<cl::cInt>(std::llround(z_.dot(p - o_) * kScale))};
-  }
-  Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
-    const double theta = static_cast<double>(q.X) / kScale / r_;
-    return o_ + z_ * (static_cast<double>(q.Y) / kScale) + (e1_ * std::cos(theta) + e2_ * std::sin(theta)) * h;
-  }
-  Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const override { return radial(p).normalized(); }
-  double maxSegment(double h, double tolerance) const override {
-    // A chord of the circle of radius h dips h·(1 − cos(Δθ/2)) inside it: keep that within the tolerance.
-    const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance / std::max(h, tolerance)));
-    return r_ * step;
-  }
-  // Unrolled, a straight edge bows by about r·Δθ²/8: split triangles spanning more than 2° (0.006 mm at r 40).
-  bool bends(const Eigen::Vector3d (&p)[3]) const override {
-    const double span = angularSpan(p);
-    return span > 2.0 * M_PI / 180.0 && span < M_PI;
-  }
-  // A triangle across the seam, half a turn from the volume's middle: its unrolled image would wrap round; it
-  // is left out (a volume spanning more than about 340° is not swept with S2).
-  bool skip(const Eigen::Vector3d (&p)[3]) const override { return angularSpan(p) >= M_PI; }
-
-private:
-  Eigen::Vector3d radial(const Eigen::Vector3d& p) const {
-    const Eigen::Vector3d w = p - o_;
-    return w - z_ * z_.dot(w);
-  }
-  double angularSpan(const Eigen::Vector3d (&p)[3]) const {
-    double low = 1e300, high = -1e300;
-    for (const Eigen::Vector3d& q : p) {
-      const Eigen::Vector3d w = radial(q);
-      const double theta = std::atan2(e2_.dot(w), e1_.dot(w));
-      low = std::min(low, theta), high = std::max(high, theta);
-    }
-    return high - low;
-  }
-  Eigen::Vector3d o_, z_, e1_, e2_;
-  double r_ = 1.0;
-};
 
 cl::Paths offset(const cl::Paths& paths, double mm, double tolerance) {
   cl::ClipperOffset offsetter(2.0, std::max(1.0, tolerance * kScale));
@@ -164,18 +59,25 @@ Window windowAround(const cl::Paths& paths, double margin) {
   return w;
 }
 
-// The triangle p laid flat, cut to its part at or above `fromHeight`, added to `pieces` (split first into
-// smaller ones where the projection bends straight edges).
-void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight,
-                  const Window& window, int depth, cl::Paths& pieces) {
-  if (projection.skip(p) || window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2])))
-    return;
-  if (depth < 6 && projection.bends(p)) {
-    const Eigen::Vector3d m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
-    const Eigen::Vector3d parts[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
-    for (const auto& part : parts) addProjected(projection, part, fromHeight, window, depth + 1, pieces);
+// The straight edge a–b laid flat, from a (included) towards b (excluded): points added at midpoints while the
+// projection bows it.
+void addFlatEdge(const Projection& projection, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int depth,
+                 cl::Path& path) {
+  if (depth < 6 && projection.bends(a, b)) {
+    const Eigen::Vector3d m = 0.5 * (a + b);
+    addFlatEdge(projection, a, m, depth + 1, path);
+    addFlatEdge(projection, m, b, depth + 1, path);
     return;
   }
+  path.push_back(projection.plane(a));
+}
+
+// The triangle p laid flat, cut to its part at or above `fromHeight`, added to `pieces`: the polygon of its
+// edges' images (bowed where the projection bends straight edges).
+void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight,
+                  const Window& window, cl::Paths& pieces) {
+  if (projection.skip(p) || window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2])))
+    return;
   const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
   if (std::max({h[0], h[1], h[2]}) < fromHeight) return;
   std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
@@ -186,34 +88,62 @@ void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], d
       kept.push_back(p[i] + (p[j] - p[i]) * ((fromHeight - h[i]) / (h[j] - h[i])));
   }
   cl::Path path;
-  for (const Eigen::Vector3d& q : kept) path.push_back(projection.plane(q));
+  for (size_t i = 0; i < kept.size(); ++i) addFlatEdge(projection, kept[i], kept[(i + 1) % kept.size()], 0, path);
   if (path.size() < 3) return;
   if (!cl::Orientation(path)) cl::ReversePath(path);  // all counter-clockwise: their union is non-zero
   if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
 }
 
-// The union of the mesh's triangles laid flat, each cut to its part at or above `fromHeight` (−∞: whole),
-// leaving out those outside `window`: what stands over the surface, seen along the tool axis. The mesh is of
-// closed solids, its triangles facing out: on planes only those facing the spindle are needed (a ray along the
-// tool axis from any point of the solid leaves it through one of them), half the union's work. (Unrolled
-// cylinders keep every triangle: culled there, S2's levels lost part of their region, 121 against 150 mm of
-// cutting on an impeller channel, for a reason not found yet.)
-cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
-                         const Window& window = {}) {
-  cl::Paths pieces;
-  pieces.reserve(mesh.triangles.size());
+// The mesh's triangles laid flat, each cut to its part at or above `fromHeight` (−∞: whole), leaving out those
+// outside `window`, gathered in bins by `binOf(triangle)`: what stands over the surface, seen along the tool
+// axis. The mesh is of closed solids, its triangles facing out: on planes only those facing the spindle are
+// needed (a ray along the tool axis from any point of the solid leaves it through one of them), half the
+// union's work. (Unrolled cylinders keep every triangle: culled there, S2's levels lost part of their region,
+// 121 against 150 mm of cutting on an impeller channel, for a reason not found yet.)
+template <class BinOf>
+std::map<int, cl::Paths> projectedPieces(const geometry::TriangleMesh& mesh, const Projection& projection,
+                                         double fromHeight, const Window& window, BinOf&& binOf) {
+  std::map<int, cl::Paths> bins;
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
     if (std::max({projection.height(p[0]), projection.height(p[1]), projection.height(p[2])}) < fromHeight) continue;
     const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
     if (projection.cullsBackFaces() && normal.dot(projection.axisAt((p[0] + p[1] + p[2]) / 3.0)) <= 0.0) continue;
-    addProjected(projection, p, fromHeight, window, 0, pieces);
+    addProjected(projection, p, fromHeight, window, bins[binOf(p)]);
   }
+  return bins;
+}
+
+cl::Paths united(const cl::Paths& pieces) {
   cl::Clipper clipper;
   clipper.AddPaths(pieces, cl::ptSubject, true);
   cl::Paths result;
   clipper.Execute(cl::ctUnion, result, cl::pftNonZero, cl::pftNonZero);
   return result;
+}
+
+// The union of the mesh's triangles laid flat (projectedPieces).
+cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
+                         const Window& window = {}) {
+  return united(projectedPieces(mesh, projection, fromHeight, window, [](const Eigen::Vector3d(&)[3]) { return 0; })[0]);
+}
+
+// Where the tool's centre may not go: the part's triangles at or above `fromHeight` laid flat, each grown by
+// `clearance` true mm, that is by the clearance over the least scale of the plane where the triangle is (bins
+// of scales 5 % apart, each bin's union grown once by its least scale's share).
+cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
+                    const Window& window, double clearance, double tolerance) {
+  const double ratio = 1.05;
+  const auto bins = projectedPieces(mesh, projection, fromHeight, window, [&](const Eigen::Vector3d(&p)[3]) {
+    const double scale = std::min({projection.scaleAt(p[0]), projection.scaleAt(p[1]), projection.scaleAt(p[2])});
+    return static_cast<int>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(ratio)));
+  });
+  cl::Paths grown;
+  for (const auto& [bin, pieces] : bins) {
+    const cl::Paths part = offset(united(pieces), clearance / std::pow(ratio, bin), tolerance);
+    grown.insert(grown.end(), part.begin(), part.end());
+  }
+  return united(grown);
 }
 
 // Points added along each edge longer than `longest` (mm; ∞: none): straight in the flat passes, the moves
@@ -289,26 +219,11 @@ struct Level {
   std::vector<cl::Paths> rings;
 };
 
-// The projection of a partition's slicing surfaces: planes along their normal; cylinders unrolled, angles from
-// the middle of the volume (the mean of its axis field's points).
-std::unique_ptr<Projection> projectionOf(const Partition& partition) {
-  const SubVolume& first = partition.subVolumes.front();
-  if (first.surface.kind == SurfaceKind::Plane) return std::make_unique<PlaneProjection>(-first.surface.direction);
-  Eigen::Vector3d middle = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : first.axisPoints) middle += p - first.surface.origin;
-  if (first.axisPoints.empty() || !(middle.norm() > 1e-9))
-    throw ComputationError("the cylinders' sub-volume has no axis field to place its angles on");
-  // The passes stand on the inner cylinder of each slice, the tool pointing out: the volume is inside the
-  // reference cylinder. (A volume outside it, a bore's, is not swept.)
-  if (!first.axisDirections.empty() && first.axisDirections.front().dot(first.axisPoints.front() - first.surface.origin) < 0.0)
-    throw InputError("S2 with the volume outside its cylinder (a bore) is not swept: the tool would point at the axis");
-  return std::make_unique<CylinderProjection>(first.surface.origin, first.surface.direction, middle);
-}
-
 class Sweeper {
 public:
-  Sweeper(const Partition& partition, const TopoDS_Shape& part, const TopoDS_Shape& stock, const SweepSettings& settings)
-      : partition_(partition), settings_(settings), projection_(projectionOf(partition)),
+  Sweeper(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part, const TopoDS_Shape& stock,
+          const SweepSettings& settings)
+      : partition_(partition), settings_(settings), projection_(projectionOf(partition, solid)),
         partMesh_(geometry::meshFacesAfresh(part, settings.meshDeflection)) {
     const geometry::TriangleMesh stockMesh = geometry::meshFaces(stock, std::max(0.05, settings.meshDeflection));
     double high = -std::numeric_limits<double>::infinity();
@@ -318,8 +233,11 @@ public:
 
   SweepResult run() {
     const int count = static_cast<int>(partition_.subVolumes.size());
-    for (int i = 0; i < count; ++i) {
-      if (settings_.progress && !settings_.progress(double(i) / count)) throw Cancelled("sweep");
+    // From the crossable face inwards: S5's slices are numbered from the hub, the tool comes from the skin.
+    const bool fromLast = partition_.strategy == Strategy::HubOffsets;
+    for (int k = 0; k < count; ++k) {
+      if (settings_.progress && !settings_.progress(double(k) / count)) throw Cancelled("sweep");
+      const int i = fromLast ? count - 1 - k : k;
       Level level = makeLevel(i);
       if (level.rings.empty()) {
         result_.warnings.push_back("slice " + std::to_string(partition_.subVolumes[i].slice) +
@@ -334,29 +252,55 @@ public:
   }
 
 private:
+  // The height of the slice's slicing surface (sweep.hpp: the near side, or S5's far side).
+  double surfaceHeight(const SubVolume& sub) const {
+    if (sub.surface.kind == SurfaceKind::Cylinder) return sub.surface.radius;
+    if (sub.surface.kind == SurfaceKind::Plane) return projection_->height(sub.surface.origin);
+    if (sub.axisPoints.empty()) throw ComputationError("slice " + std::to_string(sub.slice) + " has no point on its surface");
+    return projection_->height(sub.axisPoints.front());
+  }
+
   Level makeLevel(int index) {
     const SubVolume& sub = partition_.subVolumes[index];
     Level level;
     level.subVolume = index;
-    level.top = sub.surface.kind == SurfaceKind::Cylinder ? sub.surface.radius : projection_->height(sub.surface.origin);
     const geometry::TriangleMesh mesh = geometry::meshFacesAfresh(sub.shape, settings_.meshDeflection);
-    double low = std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector3d& p : mesh.vertices) low = std::min(low, projection_->height(p));
-    level.tip = std::max(level.top - partition_.step, low);
-    raiseOverFloor(level);
-    projection_->setLevel(level.tip);
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const Eigen::Vector3d& p : mesh.vertices) {
+      const double h = projection_->height(p);
+      low = std::min(low, h), high = std::max(high, h);
+    }
     const double radius = settings_.cutter.radius();
+    const double surface = surfaceHeight(sub);
+    if (partition_.strategy == Strategy::HubOffsets) {
+      // The slicing surface is the slice's far side; the reference (the hub, a floor) is part of the part: the
+      // tip stays the allowance above it, and the lift of the tool's rim over a concave hub.
+      projection_->setLevel(surface, mesh);
+      const double lift = rimLift();
+      level.top = std::min(surface + partition_.step, high);
+      level.tip = std::max(surface, surface - sub.surface.offset + settings_.allowance + lift + settings_.meshDeflection);
+      level.top = std::max(level.top, level.tip + settings_.tolerance);
+    } else {
+      level.top = surface;
+      level.tip = std::max(level.top - partition_.step, low);
+      projection_->setLevel(level.tip, mesh);
+      raiseOverFloor(level);
+    }
+    projection_->setLevel(level.tip, mesh);
+    const double lift = rimLift();
     level.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
-    const double margin = radius + settings_.allowance + settings_.meshDeflection + 1.0;
-    const cl::Paths shadow = projectedUnion(partMesh_, *projection_, level.tip - settings_.allowance,
-                                            windowAround(level.region, margin));
-    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter), settings_.tolerance);
+    const double margin = (radius + settings_.allowance + settings_.meshDeflection + 1.0) / projection_->smallestScale();
     // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
-    const cl::Paths keepOut = offset(shadow, radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
-                                     settings_.tolerance);
+    const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, level.tip - settings_.allowance - lift,
+                                        windowAround(level.region, 1.5 * margin),
+                                        radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
+                                        settings_.tolerance);
+    const double scale = projection_->largestScale();
+    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter) / scale, settings_.tolerance);
     level.domain = boolean(cl::ctDifference, inner, keepOut);
-    const double step = settings_.radialEngagement * settings_.cutter.diameter;
+    // Passes never farther apart than the engagement asked, where the plane is most stretched.
+    const double step = settings_.radialEngagement * settings_.cutter.diameter / scale;
     for (int k = 0; k < kMaxRings; ++k) {
       cl::Paths ring = k == 0 ? level.domain : offset(level.domain, -k * step, settings_.tolerance);
       cl::CleanPolygons(ring, settings_.tolerance * kScale);
@@ -365,6 +309,12 @@ private:
       level.rings.push_back(std::move(ring));
     }
     return level;
+  }
+
+  // How much nearer the surface the rim of the tool's disk (grown by the allowance) is than its centre.
+  double rimLift() const {
+    const double r = settings_.cutter.radius() + settings_.allowance;
+    return 0.5 * r * r * projection_->concavity();
   }
 
   // A face of the part parallel to the plane within the allowance under the tip (a floor): the tip stays the
@@ -378,7 +328,8 @@ private:
       const double h = projection_->height(p0);
       if (h > level.tip - settings_.allowance - 1e-9 && h < level.tip + settings_.allowance) floor = std::max(floor, h);
     }
-    if (std::isfinite(floor) && floor + settings_.allowance < level.top) level.tip = floor + settings_.allowance;
+    const double raised = floor + settings_.allowance + rimLift();
+    if (std::isfinite(floor) && raised < level.top) level.tip = raised;
   }
 
   void add(MoveKind kind, const Eigen::Vector3d& tip, int subVolume) {
@@ -597,12 +548,9 @@ void checkCutter(const Cutter& c) {
 
 SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part,
                   const TopoDS_Shape& stock, const SweepSettings& settings) {
-  (void)solid;
   checkSettings(settings);
-  if (partition.strategy == Strategy::StockOffsets || partition.strategy == Strategy::HubOffsets)
-    throw InputError(strategyName(partition.strategy) + " is not swept yet: planes (S1, S3) and cylinders (S2) are");
   if (partition.subVolumes.empty()) throw InputError("the partition has no sub-volumes to sweep");
-  return Sweeper(partition, part, stock, settings).run();
+  return Sweeper(partition, solid, part, stock, settings).run();
 }
 
 }  // namespace hsm::roughing

@@ -1,5 +1,5 @@
 """5-axis roughing by partition of the volume to remove (the roughing paper, §3): the volume, its faces, its
-sub-volumes (part 1; cpp/roughing/roughing.hpp), and their toolpaths (part 2; S1, S2, S3 so far,
+sub-volumes (part 1; cpp/roughing/roughing.hpp), and their toolpaths (part 2; S1–S5,
 cpp/roughing/sweep.hpp) with an independent clearance check (cpp/roughing/clearance.hpp).
 
     wheel = hsmplanner.roughing.impeller(blades=7)
@@ -125,7 +125,8 @@ def cutter(kind="torus", diameter=None, corner_radius=None, flute_length=None, s
 
 def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=None, allowance=None, tolerance=None,
           ramp_angle_deg=None, clearance=None, progress=None):
-    """The sub-volumes of a Partition swept by contour-parallel passes (S1, S2, S3 so far; S4 and S5 next): a
+    """The sub-volumes of a Partition swept by contour-parallel passes (S1–S5; S4 and S5 on offsets of planes,
+    cylinders and surfaces of revolution, not of free-form faces): a
     SweepResult whose `moves` are arrays (tip, axis, kind, sub_volume), with its passes and lengths. `volume`
     is the RemovalSolid the partition came from; `part` and `stock` the shapes. ValueError for bad settings."""
     settings = core_settings(_core.roughing.SweepSettings, cutter=tool, radial_engagement=radial_engagement,

@@ -202,6 +202,21 @@ class Sweep(unittest.TestCase):
         report = roughing.check_clearance(paths, self.shapes.part_brep, roughing.cutter("flat", diameter=6.0), 0.29)
         self.assertEqual(report.too_close, 0)
 
+    def test_s5_stands_on_the_floor_and_leaves_the_allowance(self):
+        # S5 follows the slot's floor (30° from the horizontal): the tool axis is the floor's normal, away from it,
+        # and the lowest level's tip stays the allowance above the floor.
+        result, paths = self.swept("S5")
+        normal = np.array([np.sin(np.radians(30.0)), 0.0, np.cos(np.radians(30.0))])
+        axes = paths.moves["axis"]
+        self.assertGreater(len(axes), 20)
+        np.testing.assert_allclose(axes @ normal, np.ones(len(axes)), atol=1e-9)
+        cuts = paths.moves["tip"][paths.moves["kind"] == roughing.MOVE_KINDS.index("cut")]
+        floor_point = np.asarray(result.sub_volumes[0].surface.origin)
+        lowest = (cuts - floor_point) @ normal
+        self.assertAlmostEqual(lowest.min(), 0.5, delta=0.06)
+        report = roughing.check_clearance(paths, self.shapes.part_brep)
+        self.assertEqual(report.too_close, 0)
+
     def test_machine_axes_give_the_tool_axes_back(self):
         from hsmplanner import _core, feedsim
         _, paths = self.swept("S3")
@@ -224,8 +239,5 @@ class Sweep(unittest.TestCase):
                                   (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
             with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):
                 roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)
-        with self.assertRaisesRegex(ValueError, "S5 offsets of the hub is not swept yet"):
-            roughing.sweep(roughing.partition(self.volume, self.shapes.part_brep, "S5"), self.volume,
-                           self.shapes.part_brep, self.shapes.stock_brep)
         with self.assertRaisesRegex(ValueError, "cutter kind 'drill' is unknown"):
             roughing.cutter("drill")

@@ -93,7 +93,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
         volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
         if not partitions:
-            raise ValueError("%s has no strategy: choose one (S1, S2 or S3) to partition the volume" % obj.Volume.Label)
+            raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
         cutter = cutter_of(obj.ToolController.Tool)
         machine = feedsim.load_machine(obj.Machine)
         passes, length, closest = 0, 0.0, float("inf")

@@ -273,7 +273,7 @@ COMMANDS = {
         "ParallelPlaneFinishing", "Parallel plane finishing", "Ball-end passes in parallel planes at an angle"),
     "HSM_VolumeRoughing": CommandFinishing(
         "VolumeRoughing", roughing_op.CreateVolumeRoughing, VolumeRoughingPage, "VolumeRoughing", "Volume roughing",
-        "Contour-parallel passes through the sub-volumes of a Roughing volume (S1, S2, S3), the tool axis normal "
+        "Contour-parallel passes through the sub-volumes of a Roughing volume (S1-S5), the tool axis normal "
         "to their slicing surfaces, on a 3-, 4- or 5-axis machine"),
 }
 

@@ -7,6 +7,11 @@
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 #include <gtest/gtest.h>
 
@@ -169,8 +174,6 @@ TEST(Sweep, BadSettingsAreRefusedByName) {
   s = {};
   s.cutter.fluteLength = 60.0;
   EXPECT_NE(message(s).find("longer than its stick-out"), std::string::npos);
-  EXPECT_NE(message({}, Strategy::StockOffsets).find("not swept yet"), std::string::npos);
-  EXPECT_NE(message({}, Strategy::HubOffsets).find("not swept yet"), std::string::npos);
 }
 
 TEST(Clearance, AgreesWithOcctAndFindsAGouge) {
@@ -240,3 +243,75 @@ TEST(Sweep, ImpellerCylindersKeepTheAxisRadialAndClearOfTheBlades) {
   const ClearanceReport clear = checkClearance(r.moves, wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
   EXPECT_EQ(clear.tooClose, 0) << "closest " << clear.minimum << " mm at move " << clear.worstMove;
 }
+
+namespace {
+struct ImpellerCase {
+  PartAndStock wheel = impeller();
+  VolumeToRemove volume = volumeToRemove(wheel.stock, wheel.part);
+};
+const ImpellerCase& wheelCase() {
+  static const ImpellerCase c;
+  return c;
+}
+}  // namespace
+
+// S4 and S5 on a channel of the impeller: continuous 5-axis paths on offsets of the skin and of the hub.
+// Checked independently of the sweep's meridian: OCCT projects every cut point on the reference surface (the
+// face's own untrimmed surface): the point lies at the level's offset from it, the tool axis along the
+// projection's line (normal to the offsets), and the tool clears the part (the mesh check).
+class ImpellerOffsets : public ::testing::TestWithParam<Strategy> {};
+
+TEST_P(ImpellerOffsets, AxesNormalToTheOffsetsAndClearOfTheBlades) {
+  const ImpellerCase& c = wheelCase();
+  const RemovalSolid& channel = c.volume.solids.front();
+  const Partition partition = roughing::partition(channel, c.wheel.part, GetParam());
+  const SweepSettings settings;
+  const SweepResult r = sweep(partition, channel, c.wheel.part, c.wheel.stock, settings);
+  ASSERT_FALSE(r.passes.empty()) << strategyName(GetParam());
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(channel.solid, TopAbs_FACE, faces);
+  const Handle(Geom_Surface) reference = BRep_Tool::Surface(TopoDS::Face(faces(partition.referenceFace)));
+  double spread = 0.0;
+  int checked = 0;
+  for (const Pass& pass : r.passes) {
+    double low = 1e300, high = -1e300;
+    for (size_t k = 0; k < pass.points.size(); k += 7) {
+      const Eigen::Vector3d& p = pass.points[k];
+      GeomAPI_ProjectPointOnSurf foot(gp_Pnt(p.x(), p.y(), p.z()), reference);
+      ASSERT_GT(foot.NbPoints(), 0);
+      const gp_Pnt q = foot.NearestPoint();
+      const Eigen::Vector3d towards = (p - Eigen::Vector3d(q.X(), q.Y(), q.Z())).normalized();
+      low = std::min(low, foot.LowerDistance()), high = std::max(high, foot.LowerDistance());
+      // The same tip's axis (the move ending there).
+      for (const ToolMove& m : r.moves)
+        if ((m.tip - p).norm() < 1e-9) {
+          EXPECT_GE(std::abs(m.axis.dot(towards)), 0.9999) << "a tool axis off the offsets' normal";
+          spread = std::max(spread, std::acos(std::clamp(m.axis.dot(r.moves.front().axis), -1.0, 1.0)));
+          ++checked;
+          break;
+        }
+    }
+    EXPECT_LT(high - low, 0.02) << "a pass off its offset surface: " << low << " to " << high << " mm";
+  }
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(spread * 180.0 / M_PI, 20.0) << "the axis turns along the passes: a continuous 5-axis path";
+  const ClearanceReport clear = checkClearance(r.moves, c.wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
+  EXPECT_EQ(clear.tooClose, 0) << "closest " << clear.minimum << " mm at move " << clear.worstMove;
+  // Neighbouring passes of a level never farther apart than the engagement asked (measured in space).
+  const double step = settings.radialEngagement * settings.cutter.diameter;
+  for (const Pass& inner : r.passes) {
+    if (inner.ring == 0) continue;
+    for (size_t k = 0; k < inner.points.size(); k += 5) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Pass& outer : r.passes)
+        if (outer.subVolume == inner.subVolume && outer.ring == inner.ring - 1)
+          d = std::min(d, distanceToLoop(inner.points[k], outer.points));
+      EXPECT_LE(d, step + 0.05);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sweep, ImpellerOffsets, ::testing::Values(Strategy::StockOffsets, Strategy::HubOffsets),
+                         [](const ::testing::TestParamInfo<Strategy>& info) {
+                           return info.param == Strategy::StockOffsets ? std::string("S4") : std::string("S5");
+                         });

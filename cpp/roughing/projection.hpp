@@ -1,0 +1,72 @@
+// How the sweep (sweep.cpp) lays a slicing surface flat for its 2-D passes (internal to the roughing): plane
+// coordinates of a point in Clipper's integers, its height along the tool axis, and back.
+//   planes (S1, S3; S4, S5 on planar faces)   as they are, the height along the normal;
+//   coaxial cylinders (S2)                    unrolled at the level's radius, (r·θ, z), the tool axis radial;
+//   offsets of a surface of revolution (S4, S5)   (ρ_ref·θ, s): the angle about the axis times the largest
+//       radius of the level's tip surface, and the arc length along the reference meridian; the height is the
+//       signed distance across the meridian (roughing/meridian.hpp), the tool axis the offsets' normal.
+// The last is not isometric: a flat millimetre is `scaleAt` true millimetres at a point (less towards the axis,
+// more on the offsets of a convex meridian). The sweep grows the part's shadow by its clearance over the least
+// scale where the part is, and spaces the passes by the engagement over the largest scale on the level: the
+// passes are never farther apart than asked and never nearer the part than the allowance (first order; the
+// surface's bending under the tool's disk is `concavity`).
+#pragma once
+
+#include "geometry/mesh.hpp"
+#include "roughing/roughing.hpp"
+
+#include <Eigen/Core>
+#include <polyclipping/clipper.hpp>
+
+#include <limits>
+#include <memory>
+
+namespace hsm::roughing {
+
+namespace cl = ClipperLib;
+inline constexpr double kScale = 1e4;  // Clipper units per mm: 0.1 µm
+
+class Projection {
+public:
+  virtual ~Projection() = default;
+  virtual double height(const Eigen::Vector3d& p) const = 0;       // NaN where the point has no coordinates
+  virtual cl::IntPoint plane(const Eigen::Vector3d& p) const = 0;
+  virtual Eigen::Vector3d point(const cl::IntPoint& q, double h) const = 0;
+  virtual Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const = 0;  // unit, towards the spindle
+  // The level whose passes are laid flat next: its tip's height and the slice's mesh.
+  virtual void setLevel(double tipHeight, const geometry::TriangleMesh& slice) { (void)tipHeight, (void)slice; }
+  // Longest straight move between two points of the flat passes that stays within `tolerance` of the surface
+  // at height h (∞ on planes).
+  virtual double maxSegment(double h, double tolerance) const {
+    (void)h, (void)tolerance;
+    return std::numeric_limits<double>::infinity();
+  }
+  // Whether the straight edge a–b, laid flat, bows off its image's chord (it is then laid flat in halves);
+  // whether a triangle cannot be laid flat.
+  virtual bool bends(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    (void)a, (void)b;
+    return false;
+  }
+  virtual bool skip(const Eigen::Vector3d (&p)[3]) const {
+    (void)p;
+    return false;
+  }
+  virtual bool cullsBackFaces() const { return false; }
+  // True mm per flat mm: the least over directions at a point, at its own height (≥ 1 on planes and on
+  // cylinders above the tip), and the largest and least over the level's tip surface.
+  virtual double scaleAt(const Eigen::Vector3d& p) const {
+    (void)p;
+    return 1.0;
+  }
+  virtual double largestScale() const { return 1.0; }
+  virtual double smallestScale() const { return 1.0; }
+  // How far (1/mm) the level's tip surface curves up towards the tool: a disk of radius r on it has its rim
+  // r²·concavity/2 nearer the surface than its centre.
+  virtual double concavity() const { return 0.0; }
+};
+
+// The projection of a partition's slicing surfaces. InputError for surfaces the sweep does not lay flat (a
+// free-form reference face that is not a surface of revolution, a bore's cylinders).
+std::unique_ptr<Projection> projectionOf(const Partition& partition, const RemovalSolid& solid);
+
+}  // namespace hsm::roughing
