@@ -175,10 +175,10 @@ public:
       if (!placeOf(q)) return true;
     return false;
   }
-  double scaleAt(const Eigen::Vector3d& p) const override {
+  Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
     const auto place = placeOf(p);
-    if (!place) return 1.0;
-    return std::min(meridian_->plane(p).x() / rhoRef_, meridian_->stretch(place->s, place->d));
+    if (!place) return {1.0, 1.0};
+    return {meridian_->plane(p).x() / rhoRef_, meridian_->stretch(place->s, place->d)};
   }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }

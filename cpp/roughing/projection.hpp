@@ -5,9 +5,9 @@
 //   offsets of a surface of revolution (S4, S5)   (ρ_ref·θ, s): the angle about the axis times the largest
 //       radius of the level's tip surface, and the arc length along the reference meridian; the height is the
 //       signed distance across the meridian (roughing/meridian.hpp), the tool axis the offsets' normal.
-// The last is not isometric: a flat millimetre is `scaleAt` true millimetres at a point (less towards the axis,
-// more on the offsets of a convex meridian). The sweep grows the part's shadow by its clearance over the least
-// scale where the part is, and spaces the passes by the engagement over the largest scale on the level: the
+// The last is not isometric: a flat millimetre is `scalesAt` true millimetres at a point, one scale along x
+// (less towards the axis), one along y (more on the offsets of a convex meridian). The sweep grows the part's
+// shadow by its clearance over the scales where the part is, and spaces the passes by the engagement over the largest scale on the level: the
 // passes are never farther apart than asked and never nearer the part than the allowance (first order; the
 // surface's bending under the tool's disk is `concavity`).
 #pragma once
@@ -52,11 +52,11 @@ public:
     return false;
   }
   virtual bool cullsBackFaces() const { return false; }
-  // True mm per flat mm: the least over directions at a point, at its own height (≥ 1 on planes and on
+  // True mm per flat mm at a point, at its own height, along the plane's x and y (≥ 1 on planes and on
   // cylinders above the tip), and the largest and least over the level's tip surface.
-  virtual double scaleAt(const Eigen::Vector3d& p) const {
+  virtual Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const {
     (void)p;
-    return 1.0;
+    return {1.0, 1.0};
   }
   virtual double largestScale() const { return 1.0; }
   virtual double smallestScale() const { return 1.0; }

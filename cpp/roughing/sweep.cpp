@@ -128,19 +128,33 @@ cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& p
   return united(projectedPieces(mesh, projection, fromHeight, window, [](const Eigen::Vector3d(&)[3]) { return 0; })[0]);
 }
 
+// Clipper paths with x scaled by `factor`.
+cl::Paths scaledX(cl::Paths paths, double factor) {
+  for (cl::Path& path : paths)
+    for (cl::IntPoint& q : path) q.X = static_cast<cl::cInt>(std::llround(double(q.X) * factor));
+  return paths;
+}
+
 // Where the tool's centre may not go: the part's triangles at or above `fromHeight` laid flat, each grown by
-// `clearance` true mm, that is by the clearance over the least scale of the plane where the triangle is (bins
-// of scales 5 % apart, each bin's union grown once by its least scale's share).
+// `clearance` true mm, that is by the clearance over the plane's scale along x and along y where the triangle
+// is (an ellipse's growth: bins of scales 5 % apart, each bin's union stretched along x to its y scale, grown
+// by the clearance over the bin's least y scale, and stretched back).
 cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                     const Window& window, double clearance, double tolerance) {
   const double ratio = 1.05;
-  const auto bins = projectedPieces(mesh, projection, fromHeight, window, [&](const Eigen::Vector3d(&p)[3]) {
-    const double scale = std::min({projection.scaleAt(p[0]), projection.scaleAt(p[1]), projection.scaleAt(p[2])});
+  auto level = [&](double scale) {
     return static_cast<int>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(ratio)));
+  };
+  const auto bins = projectedPieces(mesh, projection, fromHeight, window, [&](const Eigen::Vector3d(&p)[3]) {
+    const Eigen::Vector2d s = projection.scalesAt(p[0]).cwiseMin(projection.scalesAt(p[1])).cwiseMin(projection.scalesAt(p[2]));
+    return level(s.x()) * 4096 + level(s.y());  // both levels within ±142: one key
   });
   cl::Paths grown;
-  for (const auto& [bin, pieces] : bins) {
-    const cl::Paths part = offset(united(pieces), clearance / std::pow(ratio, bin), tolerance);
+  for (const auto& [key, pieces] : bins) {
+    const int ix = static_cast<int>(std::lround(double(key) / 4096.0)), iy = key - ix * 4096;
+    const double sx = std::pow(ratio, ix), sy = std::pow(ratio, iy);
+    // The least scales of the bin (its lower edges): x stretched by sx/sy makes the plane's metric sy both ways.
+    const cl::Paths part = scaledX(offset(scaledX(united(pieces), sx / sy), clearance / sy, tolerance), sy / sx);
     grown.insert(grown.end(), part.begin(), part.end());
   }
   return united(grown);

@@ -1,7 +1,7 @@
 // 5-axis roughing on the paper's test part, the 7-blade impeller. Part 1 (issue 14's figures: stock − part
 // < 2 s, each partition of a channel < 5 s, the setup search of S3 < 5 s, one core): each step's time (best of
 // `runs`), the counts and the check that the sub-volumes add up; the setup search on 1 and 2 threads in the
-// same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the planar sweeps of every
+// same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the sweeps (S1-S5) of every
 // channel, and the 2-D offsets of one level by Clipper and by OCCT's BRepOffsetAPI_MakeOffset.
 // Run: build/bin/bench_roughing [runs]
 #include "roughing/parts.hpp"
@@ -44,9 +44,10 @@ double bestOf(int runs, const std::function<void()>& work) {
 }
 }  // namespace
 
-// Part 2: S1, S2 and S3 swept on every channel (partitions not counted), one core.
+// Part 2: S1 to S5 swept on every channel (partitions not counted), one core.
 void sweeps(const PartAndStock& wheel, const VolumeToRemove& volume, int runs) {
-  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes}) {
+  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
+                            Strategy::StockOffsets, Strategy::HubOffsets}) {
     std::vector<Partition> partitions;
     for (const RemovalSolid& solid : volume.solids) partitions.push_back(partition(solid, wheel.part, strategy));
     size_t moves = 0, passes = 0;
