@@ -117,13 +117,26 @@ class RoughingPathsExample(unittest.TestCase):
         import csv
         with open(os.path.join(out, "roughing_paths.csv")) as stream:
             rows = list(csv.DictReader(stream))
-        self.assertEqual([r["strategy"] for r in rows], ["S1", "S2", "S3"])
-        for row in rows:
+        self.assertEqual([(r["part"], r["strategy"]) for r in rows],
+                         [(part, s) for part in ("impeller", "slot") for s in ("S1", "S2", "S3", "S4", "S5")])
+        swept = [r for r in rows if r["passes"]]
+        self.assertEqual(len(swept), 9, "all but S2 on the slot block (no cylindrical crossable face)")
+        self.assertIn("S2 needs a cylindrical crossable face", rows[6]["note"])
+        for row in swept:
             self.assertEqual(row["too_close"], "0", row)
             self.assertGreaterEqual(float(row["closest_mm"]), 0.49, row)
             self.assertGreater(float(row["840d_time_s"]), float(row["840d_length_over_feed_s"]) * 0.99, row)
-            self.assertTrue(os.path.getsize(os.path.join(out, "roughing_%s_840d.mpf" % row["strategy"])) > 1000)
-            self.assertTrue(os.path.getsize(os.path.join(out, "roughing_%s_linuxcnc.ngc" % row["strategy"])) > 1000)
+            for key, suffix in (("840d", ".mpf"), ("linuxcnc", ".ngc")):
+                name = "roughing_%s_%s_%s%s" % (row["part"], row["strategy"], key, suffix)
+                self.assertTrue(os.path.getsize(os.path.join(out, name)) > 500, name)
         self.assertIn("C ", rows[1]["840d_held_by"], "S2 turns C about the impeller's axis")
-        with open(os.path.join(out, "roughing_paths.png"), "rb") as stream:
-            self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
+        # S4 and S5 on the impeller are continuous 5-axis paths: the axis turns tens of degrees, and the rotary
+        # axes hold the speed; S1 and S3 keep one axis.
+        for row in rows[3:5]:
+            self.assertGreater(float(row["axis_spread_deg"]), 20.0, row)
+            self.assertIn("A ", row["840d_held_by"], row)
+        for row in (rows[0], rows[2]):
+            self.assertEqual(float(row["axis_spread_deg"]), 0.0, row)
+        for picture in ("roughing_paths.png", "roughing_paths_slot.png"):
+            with open(os.path.join(out, picture), "rb") as stream:
+                self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
