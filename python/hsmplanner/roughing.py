@@ -147,11 +147,40 @@ def check_clearance(paths, part, tool=None, limit=None, spacing=1.0, deflection=
                                           float(spacing), float(deflection))
 
 
+def work_plane(paths, tolerance=1e-9):
+    """For a sweep whose tool axis never turns (S1; S3 and planar S4/S5 as 3+2): (R, tilt_deg, about), the
+    rotation R (3x3) that turns the part so that its tool axis points up (+Z) — the least one, about the
+    horizontal `about` (unit) by `tilt_deg` — or None when the axis turns along the path (S2, S4, S5 on
+    curved faces: 4 and 5 axes). R is the identity for a vertical axis."""
+    import numpy as np
+
+    moves = paths.moves if hasattr(paths, "moves") else paths
+    axes = np.asarray(moves["axis"], dtype=float)
+    if not len(axes):
+        return np.eye(3), 0.0, np.array([1.0, 0.0, 0.0])
+    axis = axes[0] / np.linalg.norm(axes[0])
+    if np.any(axes @ axis < 1.0 - tolerance):
+        return None
+    up = np.array([0.0, 0.0, 1.0])
+    about = np.cross(axis, up)
+    sine, cosine = np.linalg.norm(about), float(axis @ up)
+    if sine < 1e-12:
+        if cosine > 0:
+            return np.eye(3), 0.0, np.array([1.0, 0.0, 0.0])
+        return np.diag([1.0, -1.0, -1.0]), 180.0, np.array([1.0, 0.0, 0.0])
+    about /= sine
+    k = np.array([[0, -about[2], about[1]], [about[2], 0, -about[0]], [-about[1], about[0], 0]])
+    rotation = np.eye(3) + sine * k + (1.0 - cosine) * (k @ k)  # Rodrigues: turns `axis` onto +Z
+    return rotation, float(np.degrees(np.arctan2(sine, cosine))), about
+
+
 def machine_axes(paths, machine):
     """The moves of a sweep (a SweepResult or its `moves` dict) on a machine (a MachineModel): the tool tip
     (workpiece frame, for a tool-tip-programmed post) and the rotary angles (deg, the machine's axes in chain
-    order, each nearest the previous: the inverse kinematics' choice rule). A 3-axis machine takes only moves
-    along its tool axis; a move the machine cannot orient raises ValueError naming the move and the machine.
+    order, each nearest the previous: the inverse kinematics' choice rule). A 3-axis machine takes a path of one
+    tool axis, the tips then in the work plane turned so that this axis is Z (3+2; work_plane gives the turn);
+    a path whose axis turns, or a move the machine cannot orient, raises ValueError naming the move and the
+    machine.
     Returns (tips (N, 3), angles (N, 2), the rotary axes' names)."""
     import numpy as np
 
@@ -160,13 +189,16 @@ def machine_axes(paths, machine):
     names = [a.name for a in machine.rotary_axes]
     angles = np.zeros((len(tips), 2))
     if not names:
-        tool = np.asarray(machine.tool_axis, dtype=float)
-        bad = np.where(axes @ tool < 1.0 - 1e-9)[0]
-        if len(bad):
-            raise ValueError("move %d tilts the tool (axis %s) but machine '%s' has no rotary axes: use a 4- or "
-                             "5-axis machine, or a 3-axis strategy (S1)" % (bad[0], tuple(np.round(axes[bad[0]], 4)),
-                                                                          machine.name))
-        return tips, angles, names
+        plane = work_plane(moves)
+        if plane is None:
+            turns = int(np.where(axes @ axes[0] < 1.0 - 1e-9)[0][0])
+            raise ValueError("move %d turns the tool axis (%s, then %s): a 4- or 5-axis path, and machine '%s' has no "
+                             "rotary axes: a 3-axis machine and its post run one tool axis only (S1, or S3 as 3+2 "
+                             "with the work plane rotated); use a 4- or 5-axis machine and post (hsm_siemens840d, "
+                             "hsm_linuxcnc5x)" % (turns, tuple(np.round(axes[0], 4)), tuple(np.round(axes[turns], 4)),
+                                                  machine.name))
+        # 3+2: the tips in the work plane turned so that the tool axis is the machine's Z (see work_plane).
+        return tips @ plane[0].T, angles, names
     previous = [0.0, 0.0]
     for i, (tip, axis) in enumerate(zip(tips, axes)):
         try:

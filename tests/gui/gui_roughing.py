@@ -346,6 +346,12 @@ def volume_roughing_operation_in_the_job(run):
     run.check("a path with passes, clear of the part", op.Passes > 0 and op.ClosestApproach.Value >= 0.48,
               str(run.notes["volume roughing"]))
     run.check("its moves tilt A", any(abs(c.Parameters.get("A", 0.0)) > 1.0 for c in op.Path.Commands))
+    ticks = getattr(op.ViewObject.Proxy, "ticks", None)
+    lines = ticks.getChild(ticks.getNumChildren() - 1) if ticks is not None else None
+    count = lines.numVertices.getNum() if lines is not None else 0
+    run.notes["volume roughing"]["tool-axis ticks"] = count
+    run.check("the 3D view draws a tick of the tool axis every 5 mm of feed", count > op.CuttingLength.Value / 5.0,
+              "%d ticks for %.0f mm of cutting" % (count, op.CuttingLength.Value))
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("volume_roughing_path")
 

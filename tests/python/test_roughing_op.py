@@ -7,8 +7,10 @@ import FreeCAD
 import numpy as np
 
 import hsmplanner
+from hsmplanner import roughing
 from hsmplanner.app import roughing_object, roughing_op, roughing_parts
-from hsmplanner.app.compat import create_job
+from hsmplanner.app.compat import create_job, post_module
+from hsmplanner.app.roughing_commands import sweep_commands
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
 from helpers import temporary_directory
 
@@ -58,15 +60,57 @@ class VolumeRoughing(unittest.TestCase):
             self.op.Machine = roughing_op.DEFAULT_MACHINE
             self.document.recompute()
 
-    def test_a_tilted_strategy_on_a_three_axis_machine_is_refused(self):
+    def test_s3_on_a_three_axis_machine_is_3_plus_2_through_freecads_post(self):
+        # On a 3-axis Machine the setup planes are written 3+2: X Y Z in the work plane turned so that the setup
+        # direction is Z, with comments saying how to set the part up; FreeCAD's own LinuxCNC post writes it.
         self.op.Machine = "mikron-ucp710-840d"
         self.document.recompute()
         try:
-            self.assertFalse(self.op.isValid())
+            self.assertTrue(self.op.isValid(), self.op.State)
+            commands = self.op.Path.Commands
+            self.assertFalse(any(k in c.Parameters for c in commands for k in "ABC"))
+            self.assertTrue(any(c.Name.startswith("(3+2 work plane") for c in commands[:5]), commands[:5])
+            folder = temporary_directory(self)
+            ngc = os.path.join(folder, "roughing_3plus2.ngc")
+            post_module("linuxcnc").export([self.job, self.op], ngc, "--no-show-editor")
+            with open(ngc) as stream:
+                text = stream.read()
+            self.assertIn("3+2 work plane", text)
+            self.assertGreater(hsmplanner.simulate(ngc, "linuxcnc-2.9").summary.cutting_blocks, 50)
+            # Turned back, the path's tips are the 5-axis program's: the same toolpath, another frame.
+            volume, part, stock, partitions = self.volume.Proxy.computed(self.volume)
+            paths = roughing.sweep(partitions[0][1], volume.solids[0], part, stock,
+                                   tool=roughing_op.cutter_of(self.controller.Tool))
+            rotation, tilt, _ = roughing.work_plane(paths)
+            self.assertGreater(tilt, 5.0)
+            tips = np.array([[c.Parameters[k] for k in "XYZ"] for c in commands if "X" in c.Parameters])
+            np.testing.assert_allclose(tips @ rotation, paths.moves["tip"], atol=1e-6)
+            np.testing.assert_allclose(paths.moves["axis"][0] @ rotation.T, [0, 0, 1], atol=1e-12)
         finally:
             self.op.Machine = roughing_op.DEFAULT_MACHINE
             self.document.recompute()
         self.assertTrue(self.op.isValid(), self.op.State)
+
+    def test_a_path_whose_axis_turns_is_refused_on_a_three_axis_machine(self):
+        moves = {"tip": np.array([[0.0, 0, 10], [5.0, 0, 10]]), "kind": np.array([0, 3]),
+                 "axis": np.array([[0.0, 0, 1], [np.sin(0.2), 0, np.cos(0.2)]])}
+        three_axis = hsmplanner.feedsim.load_machine("mikron-ucp710-840d")
+        with self.assertRaisesRegex(ValueError, "move 1 turns the tool axis .* a 3-axis machine and its post run one "
+                                                "tool axis only"):
+            sweep_commands(moves, three_axis, 2000.0)
+
+    def test_tool_axis_ticks_follow_the_machines_angles(self):
+        from hsmplanner.app.roughing_commands import tool_axis_ticks
+        machine = hsmplanner.feedsim.load_machine(self.op.Machine)
+        ticks = tool_axis_ticks(self.op.Path.Commands, machine, every_mm=5.0, length_mm=4.0)
+        self.assertGreater(len(ticks), self.op.CuttingLength.Value / 5.0 * 0.9)
+        np.testing.assert_allclose(np.linalg.norm(ticks[:, 1] - ticks[:, 0], axis=1), 4.0, atol=1e-9)
+        # S3 on the slot: every tick along the setup direction (the A/C angles turned back into the axis).
+        volume, part, stock, partitions = self.volume.Proxy.computed(self.volume)
+        setup = np.asarray(partitions[0][1].setup_direction)
+        np.testing.assert_allclose((ticks[:, 1] - ticks[:, 0]) @ setup, 4.0, atol=1e-6)
+        with self.assertRaisesRegex(ValueError, "tick spacing 0 mm"):
+            tool_axis_ticks(self.op.Path.Commands, machine, every_mm=0.0)
 
     def test_the_cutter_comes_from_the_tool(self):
         cutter = roughing_op.cutter_of(self.controller.Tool)

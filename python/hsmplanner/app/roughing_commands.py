@@ -3,7 +3,9 @@ no document object is created here).
 
 FreeCAD's Path commands carry A, B, C without a machine: they are the angles of the machine chosen for the Job
 (docs/five-axis.md). X Y Z are the tool tip in the workpiece frame, as our 5-axis posts write them (840D
-TRAORI, LinuxCNC with TCP kinematics).
+TRAORI, LinuxCNC with TCP kinematics). On a 3-axis machine a path of one tilted tool axis (S3) is written 3+2:
+X Y Z in the work plane turned so that the axis is Z, with comments saying how to set the part up, for
+FreeCAD's own 3-axis posts; a path whose axis turns is refused with the reason.
 """
 import Path
 
@@ -22,7 +24,7 @@ def sweep_commands(paths, machine, feed_mm_min, entry_feed_mm_min=None):
     entry = entry_feed_mm_min if entry_feed_mm_min else 0.5 * feed_mm_min
     tips, angles, names = roughing.machine_axes(paths, machine)
     kinds = paths.moves["kind"] if hasattr(paths, "moves") else paths["kind"]
-    commands, last = [], [None, None]
+    commands, last = work_plane_comments(paths, machine), [None, None]
     for kind, tip, angle in zip(kinds, tips, angles):
         words = {"X": float(tip[0]), "Y": float(tip[1]), "Z": float(tip[2])}
         for k, name in enumerate(names):
@@ -33,6 +35,69 @@ def sweep_commands(paths, machine, feed_mm_min, entry_feed_mm_min=None):
             words["F"] = (entry if kind in ENTRY else feed_mm_min) / 60.0
         commands.append(Path.Command("G0" if kind == RAPID else "G1", words))
     return commands
+
+
+def work_plane_comments(paths, machine):
+    """On a 3-axis machine, a tilted path (3+2) is written in the work plane turned so that its tool axis is Z:
+    comments saying how to set the part up (what a 3-axis post cannot write as G-code). Empty otherwise."""
+    if machine.rotary_axes:
+        return []
+    plane = roughing.work_plane(paths)
+    if plane is None or plane[1] < 1e-9:
+        return []
+    _, tilt, about = plane
+    axis = (paths.moves if hasattr(paths, "moves") else paths)["axis"][0]
+    return [Path.Command("(3+2 work plane: X Y Z below are the part's frame turned %.4f deg about [%.4f %.4f %.4f])"
+                         % (tilt, about[0], about[1], about[2])),
+            Path.Command("(set the part up so that its direction [%.4f %.4f %.4f] points along the spindle +Z)"
+                         % tuple(float(a) for a in axis))]
+
+
+def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
+    """Segments (N, 2, 3) along the tool axis, `length_mm` long from the tip, every `every_mm` of the feed moves
+    of `commands` (Path commands with A/B/C of `machine`, as sweep_commands writes them): what the 3D view draws
+    to show a 4- or 5-axis path turn the tool. Bounded: at most 20,000 ticks (wider apart on long paths)."""
+    import numpy as np
+
+    from hsmplanner import _core
+
+    if not (every_mm > 0 and length_mm > 0):
+        raise ValueError("tick spacing %g mm and length %g mm must be positive" % (every_mm, length_mm))
+    names = [a.name for a in machine.rotary_axes]
+    position, angles = {"X": 0.0, "Y": 0.0, "Z": 0.0}, {name: 0.0 for name in names}
+    tips, turns, feeds = [], [], []
+    for command in commands:
+        if command.Name not in ("G0", "G1", "G00", "G01"):
+            continue
+        for key, value in command.Parameters.items():
+            if key in position:
+                position[key] = value
+            elif key in angles:
+                angles[key] = value
+        tips.append([position["X"], position["Y"], position["Z"]])
+        turns.append([angles[name] for name in names])
+        feeds.append(command.Name in ("G1", "G01"))
+    if len(tips) < 2:
+        return np.zeros((0, 2, 3))
+    tips = np.asarray(tips)
+    lengths = np.where(feeds[1:], np.linalg.norm(np.diff(tips, axis=0), axis=1), 0.0)
+    every = max(every_mm, float(np.sum(lengths)) / 20000.0)
+    travelled = np.concatenate([[0.0], np.cumsum(lengths)])
+    turns = np.asarray(turns, dtype=float).reshape(len(tips), len(names))
+    segments = []
+    for mark in np.arange(every, travelled[-1] + 1e-9, every):
+        # On the feed move where the mark falls, tip and angles in proportion (the angles as a controller
+        # interpolates them).
+        index = max(1, min(int(np.searchsorted(travelled, mark)), len(tips) - 1))
+        share = (mark - travelled[index - 1]) / max(lengths[index - 1], 1e-12)
+        tip = tips[index - 1] + share * (tips[index] - tips[index - 1])
+        if names:
+            angles_here = turns[index - 1] + share * (turns[index] - turns[index - 1])
+            axis = np.asarray(_core.forward_kinematics(machine, [0.0, 0.0, 0.0], list(angles_here))[1])
+        else:
+            axis = np.asarray(machine.tool_axis, dtype=float)
+        segments.append([tip, tip + length_mm * axis / np.linalg.norm(axis)])
+    return np.asarray(segments).reshape(-1, 2, 3)
 
 
 class ProgramSource:

@@ -7,7 +7,8 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtWidgets
 
-from hsmplanner.app import finishing, finishing_ops, roughing_op
+from hsmplanner import feedsim
+from hsmplanner.app import finishing, finishing_ops, roughing_commands, roughing_op
 from hsmplanner.app.compat import cam_module
 from hsmplanner.resources import icon
 
@@ -235,15 +236,62 @@ class ViewProviderFinishing(PathOpGui.ViewProvider):
         return _no_gate
 
 
+class ViewProviderVolumeRoughing(ViewProviderFinishing):
+    """The operation's view with ticks of the tool axis every 5 mm of feed moves over FreeCAD's path: a 4- or
+    5-axis path shows the tool turn (the angles of the operation's Machine turned back into axes)."""
+
+    TICK_EVERY_MM, TICK_LENGTH_MM = 5.0, 4.0
+
+    def attach(self, vobj):
+        super().attach(vobj)
+        self.ticks = None
+        self.show_ticks(vobj.Object)
+
+    def updateData(self, obj, prop):
+        super().updateData(obj, prop)
+        if prop in ("Path", "Machine"):
+            self.show_ticks(obj)
+
+    def onChanged(self, vobj, prop):
+        if prop == "Visibility":  # the ticks hang off the root node: they follow the path's visibility by hand
+            self.show_ticks(vobj.Object)
+
+    def show_ticks(self, obj):
+        from hsmplanner.gui.feedmap import line_set
+
+        root = getattr(getattr(self, "vobj", None), "RootNode", None)
+        if root is None:
+            return
+        if getattr(self, "ticks", None) is not None:
+            root.removeChild(self.ticks)
+            self.ticks = None
+        try:
+            machine = feedsim.load_machine(obj.Machine)
+            segments = roughing_commands.tool_axis_ticks(obj.Path.Commands, machine, self.TICK_EVERY_MM,
+                                                         self.TICK_LENGTH_MM)
+        except (ValueError, AttributeError, RuntimeError) as error:  # no path yet, a machine file gone
+            FreeCAD.Console.PrintLog("%s: no tool-axis ticks: %s\n" % (obj.Label, error))
+            return
+        if len(segments) and getattr(self.vobj, "Visibility", True):
+            self.ticks = line_set(list(segments), width=1.0)
+            root.addChild(self.ticks)
+
+    def __getstate__(self):
+        state = super().__getstate__()
+        state.pop("ticks", None)
+        return state
+
+
 def icon_name(path_or_name):
     """'GuideCurveFinishing' from a name or from any path to its .svg (documents saved before 0.1 hold paths)."""
     return os.path.splitext(os.path.basename(str(path_or_name)))[0]
 
 
 class CommandFinishing:
-    def __init__(self, name, factory, page, icon_name, menu, tooltip):
+    def __init__(self, name, factory, page, icon_name, menu, tooltip, view_provider=None):
         self.res = PathOpGui.CommandResources(name, factory, page, icon_name, menu, None, tooltip)
         self.icon = icon(icon_name)
+        self.view_provider = view_provider or ViewProviderFinishing
 
     def GetResources(self):
         return {"Pixmap": self.icon, "MenuText": self.res.menuText, "ToolTip": self.res.toolTip}
@@ -256,7 +304,7 @@ class CommandFinishing:
         document = FreeCAD.ActiveDocument
         document.openTransaction("Create %s" % self.res.name)
         obj = self.res.objFactory(self.res.name, obj=None, parentJob=None)
-        view_provider = ViewProviderFinishing(obj.ViewObject, self.res)
+        view_provider = self.view_provider(obj.ViewObject, self.res)
         view_provider.OpIcon = self.icon
         obj.ViewObject.Proxy = view_provider
         document.commitTransaction()
@@ -274,7 +322,7 @@ COMMANDS = {
     "HSM_VolumeRoughing": CommandFinishing(
         "VolumeRoughing", roughing_op.CreateVolumeRoughing, VolumeRoughingPage, "VolumeRoughing", "Volume roughing",
         "Contour-parallel passes through the sub-volumes of a Roughing volume (S1-S5), the tool axis normal "
-        "to their slicing surfaces, on a 3-, 4- or 5-axis machine"),
+        "to their slicing surfaces, on a 3-, 4- or 5-axis machine", ViewProviderVolumeRoughing),
 }
 
 
