@@ -12,7 +12,7 @@ from hsmplanner.app import roughing_object, roughing_op, roughing_parts
 from hsmplanner.app.compat import create_job, post_module
 from hsmplanner.app.roughing_commands import sweep_commands
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
-from helpers import temporary_directory
+from helpers import check_golden, temporary_directory
 
 
 class VolumeRoughing(unittest.TestCase):
@@ -111,6 +111,27 @@ class VolumeRoughing(unittest.TestCase):
         np.testing.assert_allclose((ticks[:, 1] - ticks[:, 0]) @ setup, 4.0, atol=1e-6)
         with self.assertRaisesRegex(ValueError, "tick spacing 0 mm"):
             tool_axis_ticks(self.op.Path.Commands, machine, every_mm=0.0)
+
+    # The slot's S3 path posted for the A/C trunnion 840D (TRAORI, angles) and LinuxCNC's xyzac-trt, against
+    # golden files: any change of the sweep or of the posts shows here, line by line.
+    def test_posted_840d_program_against_its_golden_file(self):
+        mpf = siemens840d_post.export([self.job, self.controller, self.op], "-", "--machine=mikron-ucp710-ac-840d")
+        self.assertIn("TRAORI", mpf)
+        self.assertGreater(hsmplanner.simulate(mpf, "mikron-ucp710-ac-840d", refuse_unknown_words=True)
+                           .summary.cutting_blocks, 50)
+        check_golden(self, mpf, "roughing_slot_s3_840d.mpf")
+
+    def test_posted_linuxcnc_program_against_its_golden_file(self):
+        self.op.Machine = "linuxcnc-2.9-xyzac-trt"
+        self.document.recompute()
+        try:
+            ngc = linuxcnc5x_post.export([self.job, self.controller, self.op], "-", "")
+        finally:
+            self.op.Machine = roughing_op.DEFAULT_MACHINE
+            self.document.recompute()
+        self.assertGreater(hsmplanner.simulate(ngc, "linuxcnc-2.9-xyzac-trt", refuse_unknown_words=True)
+                           .summary.cutting_blocks, 50)
+        check_golden(self, ngc, "roughing_slot_s3_linuxcnc_trt.ngc")
 
     def test_the_cutter_comes_from_the_tool(self):
         cutter = roughing_op.cutter_of(self.controller.Tool)
