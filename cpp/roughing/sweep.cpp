@@ -135,12 +135,17 @@ cl::Paths scaledX(cl::Paths paths, double factor) {
   return paths;
 }
 
-// Where the tool's centre may not go: the part's triangles at or above `fromHeight` laid flat, each grown by
+// Where the tool's centre may not go (as paths to fill non-zero): the part's triangles at or above `fromHeight` laid flat, each grown by
 // `clearance` true mm, that is by the clearance over the plane's scale along x and along y where the triangle
 // is (an ellipse's growth: bins of scales 5 % apart, each bin's union stretched along x to its y scale, grown
 // by the clearance over the bin's least y scale, and stretched back).
 cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
-                    const Window& window, double clearance, double tolerance) {
+                    const Window& window, double clearance, double tolerance, const cl::Paths& within) {
+  // Only what falls on `within` matters (the tool's centre is kept there): each bin's growth is cut to its
+  // bounding rectangle before the difference unites them all.
+  const Window box = windowAround(within, 1.0);
+  const cl::Paths rectangle = {{{cl::cInt(box.x0), cl::cInt(box.y0)}, {cl::cInt(box.x1), cl::cInt(box.y0)},
+                                {cl::cInt(box.x1), cl::cInt(box.y1)}, {cl::cInt(box.x0), cl::cInt(box.y1)}}};
   const double ratio = 1.05;
   auto level = [&](double scale) {
     return static_cast<int>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(ratio)));
@@ -154,10 +159,14 @@ cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projec
     const int ix = static_cast<int>(std::lround(double(key) / 4096.0)), iy = key - ix * 4096;
     const double sx = std::pow(ratio, ix), sy = std::pow(ratio, iy);
     // The least scales of the bin (its lower edges): x stretched by sx/sy makes the plane's metric sy both ways.
-    const cl::Paths part = scaledX(offset(scaledX(united(pieces), sx / sy), clearance / sy, tolerance), sy / sx);
+    const cl::Paths part = boolean(cl::ctIntersection,
+                                   scaledX(offset(scaledX(united(pieces), sx / sy), clearance / sy, tolerance), sy / sx),
+                                   rectangle);
     grown.insert(grown.end(), part.begin(), part.end());
   }
-  return united(grown);
+  // Not united: each bin's paths wind once round what they cover (holes cancel their own outline), so their
+  // sum is non-zero exactly where some bin covers; the difference that uses them unites them on the way.
+  return grown;
 }
 
 // Points added along each edge longer than `longest` (mm; ∞: none): straight in the flat passes, the moves
@@ -305,13 +314,13 @@ private:
     level.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
     const double margin = (radius + settings_.allowance + settings_.meshDeflection + 1.0) / projection_->smallestScale();
+    const double scale = projection_->largestScale();
+    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter) / scale, settings_.tolerance);
     // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
     const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, level.tip - settings_.allowance - lift,
                                         windowAround(level.region, 1.5 * margin),
                                         radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
-                                        settings_.tolerance);
-    const double scale = projection_->largestScale();
-    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter) / scale, settings_.tolerance);
+                                        settings_.tolerance, inner);
     level.domain = boolean(cl::ctDifference, inner, keepOut);
     // Passes never farther apart than the engagement asked, where the plane is most stretched.
     const double step = settings_.radialEngagement * settings_.cutter.diameter / scale;
