@@ -1,0 +1,133 @@
+#include "roughing/dexel.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsm::roughing {
+
+double subtract(Intervals& intervals, double from, double to) {
+  if (!(to > from)) return 0.0;
+  double taken = 0.0;
+  Intervals kept;
+  kept.reserve(intervals.size() + 1);
+  for (const Interval& s : intervals) {
+    if (s.to <= from || s.from >= to) {
+      kept.push_back(s);
+      continue;
+    }
+    taken += std::min(s.to, to) - std::max(s.from, from);
+    if (s.from < from) kept.push_back({s.from, from});
+    if (s.to > to) kept.push_back({to, s.to});
+  }
+  if (taken > 0.0) intervals.swap(kept);
+  return taken;
+}
+
+double overlap(const Intervals& intervals, double from, double to) {
+  double total = 0.0;
+  for (const Interval& s : intervals)
+    if (s.to > from && s.from < to) total += std::min(s.to, to) - std::max(s.from, from);
+  return total;
+}
+
+TriDexel::TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRays) : h_(resolution) {
+  if (!(resolution >= 0.005 && resolution <= 50.0))
+    throw InputError("material-removal resolution " + number(resolution) + " mm is outside [0.005, 50] mm (default 0.2)");
+  if (box.isEmpty()) throw InputError("material-removal: the stock is empty");
+  low_ = box.min() - Eigen::Vector3d::Constant(h_);
+  const Eigen::Vector3d size = box.sizes() + Eigen::Vector3d::Constant(2.0 * h_);
+  long total = 0;
+  double area = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    n_[k][0] = std::max(1, static_cast<int>(std::ceil(size[u] / h_)));
+    n_[k][1] = std::max(1, static_cast<int>(std::ceil(size[v] / h_)));
+    total += static_cast<long>(n_[k][0]) * n_[k][1];
+    area += size[u] * size[v];
+    // Irrational fractions of a spacing: no ray through a grid-aligned edge or vertex of a mesh.
+    jitter_[k][0] = h_ * (0.5 + 1.2345678e-5 * (k + 1));
+    jitter_[k][1] = h_ * (0.5 + 2.7182818e-5 * (k + 1));
+  }
+  if (total > maxRays)
+    throw InputError("material removal at " + number(resolution) + " mm needs " + std::to_string(total) +
+                     " rays (more than " + std::to_string(maxRays) + "): use a resolution of at least " +
+                     number(std::sqrt(area / double(maxRays))) + " mm");
+  for (int k = 0; k < 3; ++k) rays_[k].resize(static_cast<size_t>(n_[k][0]) * n_[k][1]);
+}
+
+long TriDexel::rays() const {
+  return static_cast<long>(rays_[0].size() + rays_[1].size() + rays_[2].size());
+}
+
+Eigen::Vector3d TriDexel::origin(int k, int i, int j) const {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  p[(k + 1) % 3] = low_[(k + 1) % 3] + i * h_ + jitter_[k][0];
+  p[(k + 2) % 3] = low_[(k + 2) % 3] + j * h_ + jitter_[k][1];
+  return p;
+}
+
+void TriDexel::rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const {
+  const int u = (k + 1) % 3, v = (k + 2) % 3;
+  auto first = [&](double x, int axis, int a) {
+    return std::max(0, static_cast<int>(std::ceil((x - low_[axis] - jitter_[k][a]) / h_)));
+  };
+  auto last = [&](double x, int axis, int a, int n) {
+    return std::min(n - 1, static_cast<int>(std::floor((x - low_[axis] - jitter_[k][a]) / h_)));
+  };
+  i0 = first(box.min()[u], u, 0), i1 = last(box.max()[u], u, 0, n_[k][0]);
+  j0 = first(box.min()[v], v, 1), j1 = last(box.max()[v], v, 1, n_[k][1]);
+}
+
+void TriDexel::fill(const geometry::TriangleMesh& mesh) {
+  for (int k = 0; k < 3; ++k) {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    std::vector<std::vector<double>> crossings(rays_[k].size());
+    for (const Eigen::Vector3i& t : mesh.triangles) {
+      const Eigen::Vector3d& a = mesh.vertices[t[0]];
+      const Eigen::Vector3d& b = mesh.vertices[t[1]];
+      const Eigen::Vector3d& c = mesh.vertices[t[2]];
+      // The triangle seen along k: a ray crosses it where its (u, v) is inside (barycentric, half-open edges).
+      const double area = (b[u] - a[u]) * (c[v] - a[v]) - (c[u] - a[u]) * (b[v] - a[v]);
+      if (area == 0.0) continue;
+      Eigen::AlignedBox3d box(a);
+      box.extend(b), box.extend(c);
+      int i0, i1, j0, j1;
+      rangeOf(k, box, i0, i1, j0, j1);
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+          const Eigen::Vector3d o = origin(k, i, j);
+          const double wa = ((b[u] - o[u]) * (c[v] - o[v]) - (c[u] - o[u]) * (b[v] - o[v])) / area;
+          const double wb = ((c[u] - o[u]) * (a[v] - o[v]) - (a[u] - o[u]) * (c[v] - o[v])) / area;
+          const double wc = 1.0 - wa - wb;
+          if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+          crossings[static_cast<size_t>(j) * n_[k][0] + i].push_back(wa * a[k] + wb * b[k] + wc * c[k]);
+        }
+    }
+    for (size_t r = 0; r < crossings.size(); ++r) {
+      std::vector<double>& x = crossings[r];
+      std::sort(x.begin(), x.end());
+      Intervals& out = rays_[k][r];
+      out.clear();
+      for (size_t m = 0; m + 1 < x.size(); m += 2)
+        if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
+    }
+  }
+}
+
+void TriDexel::subtract(const TriDexel& other) {
+  for (int k = 0; k < 3; ++k)
+    for (size_t r = 0; r < rays_[k].size(); ++r)
+      for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
+}
+
+double TriDexel::volume() const {
+  double length = 0.0;
+  for (const Intervals& ray : rays_[2])
+    for (const Interval& s : ray) length += s.to - s.from;
+  return length * h_ * h_;
+}
+
+}  // namespace hsm::roughing

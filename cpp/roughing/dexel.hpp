@@ -1,0 +1,58 @@
+// A tri-dexel model of material (internal to the material-removal simulation, removal.hpp): three grids of
+// parallel rays, along X, Y and Z, `resolution` mm apart; each ray keeps the intervals along it that are
+// inside the material. A solid is read from a closed triangle mesh by its crossings with each ray (even-odd);
+// removal subtracts intervals. Volumes are measured on the Z rays (length × resolution²); the three
+// directions give the thickness of material along any normal within 55° of one of them.
+#pragma once
+
+#include "geometry/mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace hsm::roughing {
+
+struct Interval {
+  double from, to;
+};
+using Intervals = std::vector<Interval>;
+
+// [from, to] taken out of `intervals` (sorted, disjoint); returns the length taken.
+double subtract(Intervals& intervals, double from, double to);
+// Length of the overlap of [from, to] with the intervals.
+double overlap(const Intervals& intervals, double from, double to);
+
+class TriDexel {
+public:
+  // Rays over `box` (grown by one spacing), `resolution` apart; at most `maxRays` in all (InputError beyond:
+  // the message says the resolution that fits).
+  TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRays);
+
+  // The intervals inside the closed mesh, on every ray (the rays sit at cell centres, offset by a fraction
+  // of a micrometre so that none runs exactly through a mesh's edge).
+  void fill(const geometry::TriangleMesh& mesh);
+  // This model minus `other` (the same grid).
+  void subtract(const TriDexel& other);
+
+  double resolution() const { return h_; }
+  long rays() const;
+  double volume() const;  // mm³, on the Z rays
+  // Ray (i, j) of direction k (0: X, 1: Y, 2: Z): u and v are axes (k+1)%3 and (k+2)%3.
+  int count(int k, int axis) const { return n_[k][axis]; }
+  Intervals& at(int k, int i, int j) { return rays_[k][static_cast<size_t>(j) * n_[k][0] + i]; }
+  const Intervals& at(int k, int i, int j) const { return rays_[k][static_cast<size_t>(j) * n_[k][0] + i]; }
+  // Where ray (i, j) of direction k runs: its point at coordinate 0 along k.
+  Eigen::Vector3d origin(int k, int i, int j) const;
+  // The index range [first, last] of rays of direction k whose (u, v) lies in the box's projection.
+  void rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const;
+
+private:
+  double h_;
+  Eigen::Vector3d low_;
+  int n_[3][2];                          // per direction: rays along u and along v
+  double jitter_[3][2];
+  std::vector<Intervals> rays_[3];
+};
+
+}  // namespace hsm::roughing

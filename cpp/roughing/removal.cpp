@@ -1,0 +1,461 @@
+// Material removal by a tool swept through a tri-dexel model (removal.hpp).
+#include "roughing/removal.hpp"
+
+#include "common/error.hpp"
+#include "common/parallel.hpp"
+#include "common/text.hpp"
+#include "geometry/mesh.hpp"
+#include "roughing/dexel.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace hsm::roughing {
+
+namespace {
+
+constexpr long kMaxRays = 20'000'000;  // three models of them: material, part, part not entered
+constexpr long kMaxPositions = 10'000'000;
+constexpr int kCornerSegments = 8;  // a torus corner of radius 1 as 8 cones: within 5 µm of it
+
+// The cutter as a solid of revolution about its axis (z up from the tip): cones (cylinders when r0 = r1)
+// between heights h0 < h1, and spheres centred on the axis.
+struct Cone {
+  double h0, r0, h1, r1;
+};
+struct Ball {
+  double centre, radius;
+};
+struct Shape {
+  std::vector<Cone> cones;
+  std::vector<Ball> balls;
+  double radius = 0.0, length = 0.0;  // bounding cylinder
+};
+
+Shape shapeOf(const Cutter& c) {
+  Shape s;
+  const double R = c.radius(), L = c.fluteLength;
+  s.radius = R, s.length = L;
+  if (c.kind == CutterKind::Flat) {
+    s.cones.push_back({0.0, R, L, R});
+  } else if (c.kind == CutterKind::Ball) {
+    s.balls.push_back({R, R});
+    if (L > R) s.cones.push_back({R, R, L, R});
+  } else {
+    const double r = c.cornerRadius;
+    double h = 0.0, rho = R - r;
+    for (int k = 1; k <= kCornerSegments; ++k) {
+      const double phi = 0.5 * M_PI * k / kCornerSegments;
+      const double h1 = r - r * std::cos(phi), rho1 = R - r + r * std::sin(phi);
+      s.cones.push_back({h, rho, h1, rho1});
+      h = h1, rho = rho1;
+    }
+    if (L > r) s.cones.push_back({r, R, L, R});
+  }
+  return s;
+}
+
+using Span = std::optional<Interval>;
+
+Span intersect(Span a, double from, double to) {
+  if (!a) return a;
+  a->from = std::max(a->from, from), a->to = std::min(a->to, to);
+  return a->to > a->from ? a : Span{};
+}
+
+// The ray q + t·d (tool frame) inside a cone: the slab of its heights, and within it the quadratic of the
+// radius; a cone between two heights is convex, so at most one interval.
+Span coneSpan(const Cone& c, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  double s0 = -std::numeric_limits<double>::infinity(), s1 = -s0;
+  if (std::abs(d.z()) < 1e-12) {
+    if (q.z() < c.h0 || q.z() > c.h1) return {};
+  } else {
+    s0 = (c.h0 - q.z()) / d.z(), s1 = (c.h1 - q.z()) / d.z();
+    if (s0 > s1) std::swap(s0, s1);
+  }
+  const double k = (c.r1 - c.r0) / (c.h1 - c.h0);
+  const double c0 = c.r0 + k * (q.z() - c.h0), c1 = k * d.z();
+  const double A = d.x() * d.x() + d.y() * d.y() - c1 * c1;
+  const double B = 2.0 * (q.x() * d.x() + q.y() * d.y() - c0 * c1);
+  const double C = q.x() * q.x() + q.y() * q.y() - c0 * c0;
+  if (std::abs(A) < 1e-12) {
+    if (std::abs(B) < 1e-12) return C <= 0.0 ? intersect(Interval{s0, s1}, s0, s1) : Span{};
+    const double t = -C / B;
+    return B > 0.0 ? intersect(Interval{s0, t}, s0, s1) : intersect(Interval{t, s1}, s0, s1);
+  }
+  const double disc = B * B - 4.0 * A * C;
+  if (A > 0.0) {
+    if (disc < 0.0) return {};
+    const double root = std::sqrt(disc);
+    return intersect(Interval{(-B - root) / (2.0 * A), (-B + root) / (2.0 * A)}, s0, s1);
+  }
+  if (disc < 0.0) return intersect(Interval{s0, s1}, s0, s1);  // inside everywhere within the slab
+  const double root = std::sqrt(disc);
+  const double t1 = (-B + root) / (2.0 * A), t2 = (-B - root) / (2.0 * A);  // t1 ≤ t2 (A < 0)
+  const Span before = intersect(Interval{s0, t1}, s0, s1), after = intersect(Interval{t2, s1}, s0, s1);
+  if (before && after) return Interval{before->from, after->to};
+  return before ? before : after;
+}
+
+Span ballSpan(const Ball& b, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  const Eigen::Vector3d w = q - Eigen::Vector3d(0.0, 0.0, b.centre);
+  const double half = w.dot(d), disc = half * half - (w.squaredNorm() - b.radius * b.radius);
+  if (disc < 0.0) return {};
+  const double root = std::sqrt(disc);
+  return Interval{-half - root, -half + root};
+}
+
+// One position of the tool: its tip, its frame (axis last) and its box.
+struct Position {
+  Eigen::Vector3d tip, e1, e2, axis;
+  Eigen::AlignedBox3d box;
+  double step = 0.0;  // mm of the tip's path since the position before
+  int move = 0;
+  bool feed = false;
+};
+
+Position positionAt(const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, const Shape& shape) {
+  Position p;
+  p.tip = tip;
+  p.axis = axis.normalized();
+  p.e1 = p.axis.unitOrthogonal();
+  p.e2 = p.axis.cross(p.e1);
+  const Eigen::Vector3d top = tip + shape.length * p.axis;
+  Eigen::Vector3d reach;
+  for (int k = 0; k < 3; ++k) reach[k] = shape.radius * std::sqrt(std::max(0.0, 1.0 - p.axis[k] * p.axis[k]));
+  p.box = Eigen::AlignedBox3d(tip.cwiseMin(top) - reach, tip.cwiseMax(top) + reach);
+  return p;
+}
+
+// The cutter's intervals along ray o + t·e_k (world), united (sorted, merged).
+void cutterSpans(const Shape& shape, const Position& at, const Eigen::Vector3d& o, int k, Intervals& out) {
+  out.clear();
+  const Eigen::Vector3d w = o - at.tip;
+  const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
+  const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
+  for (const Cone& c : shape.cones)
+    if (const Span s = coneSpan(c, q, d)) out.push_back(*s);
+  for (const Ball& b : shape.balls)
+    if (const Span s = ballSpan(b, q, d)) out.push_back(*s);
+  if (out.size() < 2) return;
+  std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.from < b.from; });
+  size_t n = 0;
+  for (size_t i = 1; i < out.size(); ++i) {
+    if (out[i].from <= out[n].to + 1e-12) out[n].to = std::max(out[n].to, out[i].to);
+    else out[++n] = out[i];
+  }
+  out.resize(n + 1);
+}
+
+bool touches(const Intervals& ray, double from, double to) {
+  for (const Interval& s : ray)
+    if (s.to > from && s.from < to) return true;
+  return false;
+}
+
+// Samples of the moves: the tip straight, the axis turned evenly, neighbours at most `step` apart at the tip
+// and at the flutes' end.
+std::vector<Position> positionsOf(const std::vector<ToolMove>& moves, const Shape& shape, double step) {
+  std::vector<Position> out;
+  if (moves.empty()) return out;
+  long total = 1;
+  for (size_t i = 1; i < moves.size(); ++i) {
+    const double turn = std::acos(std::clamp(moves[i].axis.normalized().dot(moves[i - 1].axis.normalized()), -1.0, 1.0));
+    total += 1 + static_cast<long>(std::max((moves[i].tip - moves[i - 1].tip).norm(), turn * shape.length) / step);
+    if (total > kMaxPositions)
+      throw InputError("material removal: the moves need more than " + std::to_string(kMaxPositions) +
+                       " tool positions at this resolution: use a coarser resolution");
+  }
+  out.reserve(static_cast<size_t>(total));
+  out.push_back(positionAt(moves[0].tip, moves[0].axis, shape));
+  out.back().feed = moves[0].kind != MoveKind::Rapid;
+  for (size_t i = 1; i < moves.size(); ++i) {
+    const ToolMove& a = moves[i - 1];
+    const ToolMove& b = moves[i];
+    const double turn = std::acos(std::clamp(b.axis.normalized().dot(a.axis.normalized()), -1.0, 1.0));
+    const double length = (b.tip - a.tip).norm();
+    const int n = 1 + static_cast<int>(std::max(length, turn * shape.length) / step);
+    for (int k = 1; k <= n; ++k) {
+      const double f = double(k) / n;
+      Position p = positionAt(a.tip + f * (b.tip - a.tip), (1.0 - f) * a.axis.normalized() + f * b.axis.normalized(), shape);
+      p.step = length / n;
+      p.move = static_cast<int>(i);
+      p.feed = b.kind != MoveKind::Rapid;
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+// Where the thickness of stock on the part is read for a vertex: a ray of the direction nearest its normal,
+// the part's crossing on it and the side the stock lies.
+struct Sample {
+  int k = -1, i = 0, j = 0;
+  double surface = 0.0;  // coordinate along the ray of the part's crossing
+  bool after = true;     // the stock lies at larger coordinates
+  double cosine = 1.0, weight = 0.0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+double stockAt(const TriDexel& material, const Sample& s) {
+  for (const Interval& m : material.at(s.k, s.i, s.j)) {
+    if (s.after && std::abs(m.from - s.surface) < 1e-9) return (m.to - m.from) * s.cosine;
+    if (!s.after && std::abs(m.to - s.surface) < 1e-9) return (m.to - m.from) * s.cosine;
+  }
+  return 0.0;
+}
+
+// A sample of the part's surface at p (normal n outward, standing for `weight` mm²), or none where no ray of
+// the model meets the part there or no stock stood on it to begin with (a face on the stock's skin).
+std::optional<Sample> sampleAt(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double weight,
+                               const TriDexel& partModel, const TriDexel& material) {
+  const double h = partModel.resolution();
+  Sample s;
+  n.cwiseAbs().maxCoeff(&s.k);
+  int i0, i1, j0, j1;
+  partModel.rangeOf(s.k, Eigen::AlignedBox3d(p - Eigen::Vector3d::Constant(0.5 * h), p + Eigen::Vector3d::Constant(0.5 * h)),
+                    i0, i1, j0, j1);
+  if (i0 > i1 || j0 > j1) return {};
+  s.i = i0, s.j = j0, s.after = n[s.k] > 0.0, s.cosine = std::abs(n[s.k]);
+  // The part's crossing on that ray nearest the point, on the side the normal points to.
+  double best = std::numeric_limits<double>::infinity();
+  for (const Interval& m : partModel.at(s.k, s.i, s.j)) {
+    const double x = s.after ? m.to : m.from;
+    if (std::abs(x - p[s.k]) < best) best = std::abs(x - p[s.k]), s.surface = x;
+  }
+  if (!(best < 2.0 * h / std::max(s.cosine, 0.3)) || stockAt(material, s) <= 0.0) return {};
+  s.weight = weight;
+  s.point = p;
+  return s;
+}
+
+// Samples of the part's surface about two resolutions apart (at most 2 million: farther apart on a large
+// part), at the centres of each triangle's subdivision.
+std::vector<Sample> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel& partModel, const TriDexel& material) {
+  double area = 0.0;
+  for (const Eigen::Vector3i& t : mesh.triangles)
+    area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+  const double spacing = std::max(2.0 * partModel.resolution(), std::sqrt(area / 1e6));
+  std::vector<Sample> out;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    const Eigen::Vector3d normal = (b - a).cross(c - a);
+    if (!(normal.norm() > 0.0)) continue;
+    const int m = std::max(1, static_cast<int>(std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / spacing)));
+    const double weight = 0.5 * normal.norm() / (m * m);
+    auto add = [&](double u, double v) {
+      if (auto s = sampleAt(a + u * (b - a) + v * (c - a), normal.normalized(), weight, partModel, material))
+        out.push_back(*s);
+    };
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; i + j < m; ++j) {
+        add((i + 1.0 / 3.0) / m, (j + 1.0 / 3.0) / m);
+        if (i + j + 2 <= m) add((i + 2.0 / 3.0) / m, (j + 2.0 / 3.0) / m);
+      }
+  }
+  return out;
+}
+
+class Simulation {
+public:
+  Simulation(const Cutter& cutter, const TopoDS_Shape& stock, const TopoDS_Shape& part, const RemovalSettings& settings)
+      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter),
+        stockMesh_(geometry::meshFacesAfresh(stock, deflection(settings.resolution))),
+        partMesh_(geometry::meshFacesAfresh(part, deflection(settings.resolution))),
+        material_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
+        part_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2), uncut_(part_) {
+    if (stockMesh_.triangles.empty()) throw InputError("material removal: the stock has no faces");
+    material_.fill(stockMesh_);
+    part_.fill(partMesh_);
+    material_.subtract(part_);
+    uncut_ = part_;
+    threads_ = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  }
+
+  RemovalResult run(const std::vector<ToolMove>& moves) {
+    RemovalResult r;
+    r.resolution = settings_.resolution;
+    r.rays = material_.rays();
+    r.volumeToRemove = material_.volume();
+    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_);
+    const double h = settings_.resolution;
+    const double corner = cutter_.kind == CutterKind::Flat ? cutter_.radius() : cutter_.kind == CutterKind::Ball
+                                                                                    ? cutter_.radius() : cutter_.cornerRadius;
+    const double step = std::min(2.0 * h, std::sqrt(2.0 * corner * h));  // a ridge of s²/8r ≤ h/4
+    const std::vector<Position> positions = positionsOf(moves, shape_, step);
+    r.positions = static_cast<long>(positions.size());
+    for (size_t i = 1; i < moves.size(); ++i) {
+      const double length = (moves[i].tip - moves[i - 1].tip).norm();
+      r.pathLength += length;
+      if (moves[i].kind != MoveKind::Rapid) r.feedLength += length;
+    }
+    ProgressReporter report(settings_.progress, "material removal");
+    double sinceStickOut = 0.0;
+    size_t start = 0;
+    while (start < positions.size()) {
+      // A batch ends where the stick-out is measured next: it sees the stock as it is there.
+      size_t end = start;
+      while (end < positions.size() && (sinceStickOut < settings_.stickOutSpacing || end == start))
+        sinceStickOut += positions[end++].step;
+      cut(positions, start, end, r);
+      const Position& last = positions[end - 1];
+      if (sinceStickOut >= settings_.stickOutSpacing || end == positions.size()) {
+        sinceStickOut = 0.0;
+        const double needed = stickOutAt(last);
+        if (needed > r.stickOut) r.stickOut = needed, r.stickOutMove = last.move;
+      }
+      start = end;
+      report(double(start) / double(positions.size()));
+    }
+    r.remainingVolume = material_.volume();
+    r.remainingShare = r.volumeToRemove > 0.0 ? 100.0 * r.remainingVolume / r.volumeToRemove : 0.0;
+    r.inMaterialShare = r.feedLength > 0.0 ? 100.0 * r.inMaterialLength / r.feedLength : 0.0;
+    thicknessOf(samples, r);
+    return r;
+  }
+
+private:
+  static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
+
+  // Positions [start, end) through the model, rays shared out between threads row by row (interleaved, so
+  // that the few rows a tool crosses are spread over all of them).
+  void cut(const std::vector<Position>& positions, size_t start, size_t end, RemovalResult& r) {
+    const size_t n = end - start;
+    std::vector<std::vector<double>> removed(threads_, std::vector<double>(n, 0.0)), gouged(threads_, std::vector<double>(n, 0.0));
+    parallelSlices(threads_, threads_, 1, [&](long from, long to) {
+      Intervals spans;
+      for (long thread = from; thread < to; ++thread)
+        for (size_t p = start; p < end; ++p) {
+          const Position& at = positions[p];
+          for (int k = 0; k < 3; ++k) {
+            int i0, i1, j0, j1;
+            material_.rangeOf(k, at.box, i0, i1, j0, j1);
+            const int first = j0 + static_cast<int>(((thread - j0) % threads_ + threads_) % threads_);
+            for (int j = first; j <= j1; j += threads_)
+              for (int i = i0; i <= i1; ++i) {
+                Intervals& ray = material_.at(k, i, j);
+                Intervals& solid = uncut_.at(k, i, j);
+                const bool inPart = k == 2 && touches(solid, at.box.min()[k], at.box.max()[k]);
+                if (!inPart && !touches(ray, at.box.min()[k], at.box.max()[k])) continue;
+                cutterSpans(shape_, at, material_.origin(k, i, j), k, spans);
+                for (const Interval& s : spans) {
+                  const double taken = subtract(ray, s.from, s.to);
+                  if (k == 2) {
+                    removed[thread][p - start] += taken;
+                    if (inPart) gouged[thread][p - start] += roughing::subtract(solid, s.from, s.to);
+                  }
+                }
+              }
+          }
+        }
+    });
+    const double cell = material_.resolution() * material_.resolution();
+    for (size_t p = 0; p < n; ++p) {
+      double volume = 0.0, gouge = 0.0;
+      for (int t = 0; t < threads_; ++t) volume += removed[t][p] * cell, gouge += gouged[t][p] * cell;
+      const Position& at = positions[start + p];
+      if (at.feed && at.step > 0.0 && volume >= settings_.chipSection * at.step) r.inMaterialLength += at.step;
+      if (gouge > 0.0) {
+        if (r.gougeMove < 0) r.gougeMove = at.move, r.gougeAt = at.tip;
+        r.gougeVolume += gouge;
+      }
+    }
+  }
+
+  // The highest point of the part or of the stock left within the holder's radius of the axis, above the tip
+  // (0 when none): read on the rays of the direction nearest the axis, each clipped to the holder's cylinder.
+  double stickOutAt(const Position& at) const {
+    int k;
+    at.axis.cwiseAbs().maxCoeff(&k);
+    const double radius = 0.5 * cutter_.holderDiameter;
+    const Eigen::AlignedBox3d stock = stockMesh_.bounds();
+    double reach = 0.0;  // how far up the axis the stock goes
+    for (int c = 0; c < 8; ++c) reach = std::max(reach, (stock.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - at.tip).dot(at.axis));
+    if (reach <= 0.0) return 0.0;
+    Eigen::Vector3d across;
+    for (int a = 0; a < 3; ++a) across[a] = radius * std::sqrt(std::max(0.0, 1.0 - at.axis[a] * at.axis[a]));
+    const Eigen::Vector3d top = at.tip + reach * at.axis;
+    const Eigen::AlignedBox3d box(at.tip.cwiseMin(top) - across, at.tip.cwiseMax(top) + across);
+    int i0, i1, j0, j1;
+    material_.rangeOf(k, box, i0, i1, j0, j1);
+    std::vector<double> highest(threads_, 0.0);
+    parallelSlices(threads_, threads_, 1, [&](long from, long to) {
+      for (long thread = from; thread < to; ++thread)
+        for (int j = j0 + static_cast<int>(thread); j <= j1; j += threads_)
+          for (int i = i0; i <= i1; ++i) {
+            const Eigen::Vector3d o = material_.origin(k, i, j);
+            // The ray o + t·e_k within the holder's infinite cylinder about the axis.
+            const Eigen::Vector3d w = o - at.tip;
+            Eigen::Vector3d d = Eigen::Vector3d::Zero();
+            d[k] = 1.0;
+            const Eigen::Vector3d wp = w - w.dot(at.axis) * at.axis, dp = d - d.dot(at.axis) * at.axis;
+            const double A = dp.squaredNorm(), B = 2.0 * wp.dot(dp), C = wp.squaredNorm() - radius * radius;
+            double t0 = -std::numeric_limits<double>::infinity(), t1 = -t0;
+            if (A > 1e-12) {
+              const double disc = B * B - 4.0 * A * C;
+              if (disc < 0.0) continue;
+              t0 = (-B - std::sqrt(disc)) / (2.0 * A), t1 = (-B + std::sqrt(disc)) / (2.0 * A);
+            } else if (C > 0.0) {
+              continue;
+            }
+            for (const Intervals* ray : {&material_.at(k, i, j), &part_.at(k, i, j)})
+              for (const Interval& s : *ray) {
+                const double a = std::max(s.from, t0), b = std::min(s.to, t1);
+                if (b <= a) continue;
+                const double h = std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]);
+                highest[thread] = std::max(highest[thread], h);
+              }
+          }
+    });
+    return *std::max_element(highest.begin(), highest.end());
+  }
+
+  void thicknessOf(const std::vector<Sample>& samples, RemovalResult& r) const {
+    double total = 0.0, sum = 0.0, squares = 0.0;
+    for (const Sample& s : samples) {
+      const double t = stockAt(material_, s);
+      r.surfacePoints.push_back(s.point);
+      r.thickness.push_back(t);
+      r.weight.push_back(s.weight);
+      total += s.weight, sum += s.weight * t, squares += s.weight * t * t;
+      r.thicknessMax = std::max(r.thicknessMax, t);
+    }
+    if (total > 0.0) {
+      r.thicknessMean = sum / total;
+      r.thicknessStd = std::sqrt(std::max(0.0, squares / total - r.thicknessMean * r.thicknessMean));
+    }
+  }
+
+  const RemovalSettings& settings_;
+  Shape shape_;
+  Cutter cutter_;
+  geometry::TriangleMesh stockMesh_, partMesh_;
+  TriDexel material_, part_;
+  TriDexel uncut_;  // the part not yet entered by the tool: a gouge is counted once
+  int threads_ = 1;
+};
+
+}  // namespace
+
+RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
+                              const TopoDS_Shape& part, const RemovalSettings& settings) {
+  checkCutter(cutter);
+  if (!(settings.chipSection > 0.0 && settings.chipSection < 1e3))
+    throw InputError("material removal: chip section " + number(settings.chipSection) + " mm² must be in ]0, 1000[ (default 0.1)");
+  if (!(settings.stickOutSpacing >= 0.1 && settings.stickOutSpacing <= 1e4))
+    throw InputError("material removal: stick-out spacing " + number(settings.stickOutSpacing) +
+                     " mm is outside [0.1, 10000] mm (default 2)");
+  if (stock.IsNull()) throw InputError("material removal: no stock");
+  for (const ToolMove& m : moves)
+    if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))
+      throw InputError("material removal: a move has a tip or an axis that is not a finite point and direction");
+  return Simulation(cutter, stock, part, settings).run(moves);
+}
+
+}  // namespace hsm::roughing

@@ -1,0 +1,139 @@
+// Material-removal simulation (roughing/removal.hpp) on cases whose answers are known in closed form.
+#include "common/error.hpp"
+#include "roughing/removal.hpp"
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace hsm;
+using namespace hsm::roughing;
+
+namespace {
+TopoDS_Shape box(double x0, double y0, double z0, double x1, double y1, double z1) {
+  return BRepPrimAPI_MakeBox(gp_Pnt(x0, y0, z0), gp_Pnt(x1, y1, z1)).Shape();
+}
+
+ToolMove move(MoveKind kind, double x, double y, double z, Eigen::Vector3d axis = Eigen::Vector3d::UnitZ()) {
+  ToolMove m;
+  m.kind = kind;
+  m.tip = {x, y, z};
+  m.axis = axis;
+  return m;
+}
+
+Cutter flat(double diameter) {
+  Cutter c;
+  c.kind = CutterKind::Flat;
+  c.diameter = diameter;
+  c.cornerRadius = 0.0;
+  return c;
+}
+
+Cutter ball(double diameter) {
+  Cutter c;
+  c.kind = CutterKind::Ball;
+  c.diameter = diameter;
+  c.cornerRadius = 0.5 * diameter;
+  return c;
+}
+
+// A 40 × 40 block, 10 mm of stock over the part: a Ø10 flat tool 5 mm deep straight across it.
+struct Slab {
+  TopoDS_Shape stock = box(0, 0, 0, 40, 40, 20), part = box(0, 0, 0, 40, 40, 10);
+  std::vector<ToolMove> slot = {move(MoveKind::Rapid, -10, 20, 30), move(MoveKind::Plunge, -10, 20, 15),
+                                move(MoveKind::Cut, 50, 20, 15), move(MoveKind::Rapid, 50, 20, 30)};
+};
+}  // namespace
+
+TEST(Removal, AFlatToolThroughABoxIsExact) {
+  const Slab s;
+  const RemovalResult r = simulateRemoval(s.slot, flat(10.0), s.stock, s.part);
+  EXPECT_NEAR(r.volumeToRemove, 16000.0, 1e-6);
+  // A slot 10 wide, 5 deep, 40 long: 2,000 mm³, its walls between rays and its floor on them: exact.
+  EXPECT_NEAR(r.volumeToRemove - r.remainingVolume, 2000.0, 1e-6);
+  EXPECT_NEAR(r.remainingShare, 87.5, 1e-8);
+  EXPECT_EQ(r.gougeMove, -1);
+  EXPECT_EQ(r.gougeVolume, 0.0);
+  EXPECT_NEAR(r.pathLength, 15 + 60 + 15, 1e-9);
+  EXPECT_NEAR(r.feedLength, 15 + 60, 1e-9);
+  // In material while the tool's front is in the block: from x = -5 to about 40 of the 60 mm cut.
+  EXPECT_GT(r.inMaterialLength, 40.0);
+  EXPECT_LT(r.inMaterialLength, 50.0);
+  // The holder clears the block's top 5 mm above the tip.
+  EXPECT_NEAR(r.stickOut, 5.0, 0.2);
+  // Stock left on the part's top: 10 mm, but 5 mm under the slot (a quarter of the top).
+  EXPECT_NEAR(r.thicknessMax, 10.0, 1e-6);
+  EXPECT_GT(r.thicknessMean, 8.0);
+  EXPECT_LT(r.thicknessMean, 9.2);
+}
+
+TEST(Removal, AnEmptyProgramLeavesEverythingAndHalfAProgramMore) {
+  const Slab s;
+  EXPECT_NEAR(simulateRemoval({}, flat(10.0), s.stock, s.part).remainingShare, 100.0, 1e-12);
+  std::vector<ToolMove> two = s.slot;
+  two.push_back(move(MoveKind::Plunge, 50, 10, 15));
+  two.push_back(move(MoveKind::Cut, -10, 10, 15));
+  const double whole = simulateRemoval(two, flat(10.0), s.stock, s.part).remainingShare;
+  const double half = simulateRemoval(s.slot, flat(10.0), s.stock, s.part).remainingShare;
+  EXPECT_GT(half, whole + 5.0);
+}
+
+TEST(Removal, ABallPlungedIntoABlockWithinHalfAPercentAndTheErrorFallsWithTheResolution) {
+  // Tip 10 mm down: a cylinder of radius 5 over 5 mm and a half ball: 125π + 250π/3 mm³.
+  const TopoDS_Shape stock = box(-20, -20, -20, 20, 20, 0), part = box(-20, -20, -20, 20, 20, -15);
+  const std::vector<ToolMove> plunge = {move(MoveKind::Rapid, 0, 0, 10), move(MoveKind::Plunge, 0, 0, -10)};
+  const double exact = 125.0 * M_PI + 250.0 * M_PI / 3.0;
+  double errors[2];
+  for (int k = 0; k < 2; ++k) {
+    RemovalSettings settings;
+    settings.resolution = k == 0 ? 0.2 : 0.1;
+    const RemovalResult r = simulateRemoval(plunge, ball(10.0), stock, part, settings);
+    errors[k] = std::abs(r.volumeToRemove - r.remainingVolume - exact) / exact;
+  }
+  EXPECT_LT(errors[0], 0.005);
+  EXPECT_LT(errors[1], 0.6 * errors[0]) << "at 0.2 mm " << errors[0] << ", at 0.1 mm " << errors[1];
+}
+
+TEST(Removal, AGougeIsFoundAndLocated) {
+  const Slab s;
+  std::vector<ToolMove> moves = s.slot;
+  moves.push_back(move(MoveKind::Rapid, 20, 30, 30));
+  moves.push_back(move(MoveKind::Plunge, 20, 30, 8));  // 2 mm into the part, Ø10: 50π mm³
+  moves.push_back(move(MoveKind::Rapid, 20, 30, 30));
+  const RemovalResult r = simulateRemoval(moves, flat(10.0), s.stock, s.part);
+  EXPECT_EQ(r.gougeMove, 5);
+  EXPECT_NEAR(r.gougeAt.z(), 10.0, 2.0) << "where the tool first enters the part";
+  EXPECT_NEAR(r.gougeVolume / (50.0 * M_PI), 1.0, 0.1);
+}
+
+TEST(Removal, AHolderOverAPocketNeedsTheDepthAsStickOut) {
+  // A 20 × 20 pocket 12 deep in a 60 × 60 block; the Ø8 tool at its floor, its Ø32 holder over the walls.
+  const TopoDS_Shape stock = box(0, 0, 0, 60, 60, 30);
+  const TopoDS_Shape part = BRepAlgoAPI_Cut(stock, box(20, 20, 18, 40, 40, 30)).Shape();
+  const std::vector<ToolMove> moves = {move(MoveKind::Rapid, 30, 30, 40), move(MoveKind::Plunge, 30, 30, 18.5)};
+  const RemovalResult r = simulateRemoval(moves, flat(8.0), stock, part);
+  EXPECT_NEAR(r.stickOut, 11.5, 0.2);
+}
+
+TEST(Removal, BadSettingsAreRefusedByName) {
+  const Slab s;
+  RemovalSettings settings;
+  settings.resolution = 0.0;
+  EXPECT_THROW(simulateRemoval(s.slot, flat(10.0), s.stock, s.part, settings), InputError);
+  settings.resolution = 0.001;
+  try {
+    simulateRemoval(s.slot, flat(10.0), s.stock, s.part, settings);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside [0.005, 50] mm"), std::string::npos) << e.what();
+  }
+  settings.resolution = 0.2;
+  settings.chipSection = -1.0;
+  EXPECT_THROW(simulateRemoval(s.slot, flat(10.0), s.stock, s.part, settings), InputError);
+  std::vector<ToolMove> bad = s.slot;
+  bad[1].tip.x() = std::nan("");
+  EXPECT_THROW(simulateRemoval(bad, flat(10.0), s.stock, s.part), InputError);
+}
