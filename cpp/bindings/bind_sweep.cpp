@@ -1,15 +1,18 @@
-// Bindings of the roughing sweep and its clearance check (cpp/roughing/sweep.hpp, clearance.hpp): thin, the
-// moves as numpy arrays.
+// Bindings of the roughing sweep, its clearance check and the material-removal simulation
+// (cpp/roughing/sweep.hpp, clearance.hpp, removal.hpp): thin, the moves as numpy arrays.
 #include "bindings/bindings.hpp"
 
 #include "geometry/brep.hpp"
 #include "roughing/clearance.hpp"
+#include "roughing/removal.hpp"
 #include "roughing/sweep.hpp"
 
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+
+#include <optional>
 
 namespace py = pybind11;
 
@@ -40,9 +43,12 @@ py::dict moveArrays(const std::vector<ToolMove>& moves) {
   return d;
 }
 
-std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array_t<double>& axes) {
+std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array_t<double>& axes,
+                                const std::optional<py::array_t<long>>& kinds = std::nullopt) {
   if (tips.ndim() != 2 || tips.shape(1) != 3 || axes.ndim() != 2 || axes.shape(1) != 3 || axes.shape(0) != tips.shape(0))
     throw InputError("tips and axes must be (N, 3) arrays of the same N");
+  if (kinds && (kinds->ndim() != 1 || kinds->shape(0) != tips.shape(0)))
+    throw InputError("kinds must be an (N,) array of indices in MOVE_KINDS, one per tip");
   std::vector<ToolMove> moves(static_cast<size_t>(tips.shape(0)));
   for (py::ssize_t i = 0; i < tips.shape(0); ++i) {
     ToolMove& m = moves[static_cast<size_t>(i)];
@@ -51,6 +57,12 @@ std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array
     if (!m.tip.allFinite() || !(m.axis.norm() > 1e-9))
       throw InputError("move " + std::to_string(i) + ": its tip must be finite and its axis not zero");
     m.axis.normalize();
+    if (kinds) {
+      const long k = kinds->at(i);
+      if (k < 0 || k > static_cast<long>(MoveKind::Link))
+        throw InputError("move " + std::to_string(i) + ": kind " + std::to_string(k) + " is not an index in MOVE_KINDS");
+      m.kind = static_cast<MoveKind>(k);
+    }
   }
   return moves;
 }
@@ -126,6 +138,52 @@ void bindSweep(py::module_& m) {
       },
       py::arg("tips"), py::arg("axes"), py::arg("part_brep"), py::arg("cutter"), py::arg("limit"),
       py::arg("spacing") = 1.0, py::arg("deflection") = 0.01);
+  py::class_<RemovalSettings>(m, "RemovalSettings", "Material-removal simulation (mm)")
+      .def(py::init<>())
+      .def_readwrite("resolution", &RemovalSettings::resolution, "mm between rays (default 0.2)")
+      .def_readwrite("chip_section", &RemovalSettings::chipSection, "mm², the least chip of a position in material")
+      .def_readwrite("stick_out_spacing", &RemovalSettings::stickOutSpacing, "mm of path between stick-out measures")
+      .def_readwrite("threads", &RemovalSettings::threads, "0: all cores");
+  py::class_<RemovalResult>(m, "RemovalResult", "Lengths mm, volumes mm³, shares %")
+      .def_readonly("resolution", &RemovalResult::resolution)
+      .def_readonly("volume_to_remove", &RemovalResult::volumeToRemove)
+      .def_readonly("remaining_volume", &RemovalResult::remainingVolume)
+      .def_readonly("remaining_share", &RemovalResult::remainingShare, "V_r, % of the volume to remove")
+      .def_readonly("path_length", &RemovalResult::pathLength)
+      .def_readonly("feed_length", &RemovalResult::feedLength)
+      .def_readonly("in_material_length", &RemovalResult::inMaterialLength)
+      .def_readonly("in_material_share", &RemovalResult::inMaterialShare, "% of the feed length")
+      .def_readonly("stick_out", &RemovalResult::stickOut, "least stick-out for the holder to clear everything")
+      .def_readonly("stick_out_move", &RemovalResult::stickOutMove)
+      .def_readonly("gouge_volume", &RemovalResult::gougeVolume)
+      .def_readonly("gouge_move", &RemovalResult::gougeMove)
+      .def_readonly("gouge_at", &RemovalResult::gougeAt)
+      .def_property_readonly("surface_points", [](const RemovalResult& r) {
+        py::array_t<double> out({static_cast<py::ssize_t>(r.surfacePoints.size()), py::ssize_t(3)});
+        for (size_t i = 0; i < r.surfacePoints.size(); ++i)
+          for (int k = 0; k < 3; ++k) out.mutable_at(static_cast<py::ssize_t>(i), k) = r.surfacePoints[i][k];
+        return out;
+      })
+      .def_property_readonly("thickness", [](const RemovalResult& r) { return py::array_t<double>(r.thickness.size(), r.thickness.data()); })
+      .def_property_readonly("weight", [](const RemovalResult& r) { return py::array_t<double>(r.weight.size(), r.weight.data()); })
+      .def_readonly("thickness_mean", &RemovalResult::thicknessMean)
+      .def_readonly("thickness_max", &RemovalResult::thicknessMax)
+      .def_readonly("thickness_std", &RemovalResult::thicknessStd)
+      .def_readonly("rays", &RemovalResult::rays)
+      .def_readonly("positions", &RemovalResult::positions);
+  m.def(
+      "simulate_removal",
+      [](const py::array_t<double>& tips, const py::array_t<double>& axes, const py::array_t<long>& kinds,
+         const Cutter& cutter, const std::string& stockBrep, const std::string& partBrep, RemovalSettings settings,
+         const py::object& progress) {
+        const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
+        settings.progress = progressCallback(progress);
+        py::gil_scoped_release release;
+        return guarded("material removal", [&] { return simulateRemoval(moves, cutter, stock, part, settings); });
+      },
+      py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
+      py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
 }
 
 }  // namespace hsm::bindings

@@ -3,10 +3,13 @@
 // `runs`), the counts and the check that the sub-volumes add up; the setup search on 1 and 2 threads in the
 // same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the sweeps (S1-S5) of every
 // channel, and the 2-D offsets of one level by Clipper and by OCCT's BRepOffsetAPI_MakeOffset.
-// Run: build/bin/bench_roughing [runs]
+// Part 3 (issue 17): material removal of each strategy on the whole impeller, 1 and 2 threads.
+// Run: build/bin/bench_roughing [runs] [removal]   ("removal": part 3 only)
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/clearance.hpp"
+#include "roughing/removal.hpp"
+#include <string>
 #include "roughing/sweep.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
@@ -142,6 +145,32 @@ void offsets(const RemovalSolid& channel) {
               "Clipper %.0f x faster\n", step, 1e3 * clipper, clipperRings, 1e3 * occt, occtRings, occt / clipper);
 }
 
+// Part 3 (issue 17: material removal of one strategy on the impeller at 0.2 mm < 10 s on two cores): each
+// strategy's sweeps of all channels simulated on 1 and 2 threads, the speed-up in the same run.
+void removal(const PartAndStock& wheel, const VolumeToRemove& volume) {
+  for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
+                            Strategy::StockOffsets, Strategy::HubOffsets}) {
+    std::vector<ToolMove> moves;
+    for (const RemovalSolid& solid : volume.solids) {
+      const SweepResult r = sweep(partition(solid, wheel.part, strategy), solid, wheel.part, wheel.stock, {});
+      moves.insert(moves.end(), r.moves.begin(), r.moves.end());
+    }
+    double seconds[2];
+    RemovalResult r;
+    for (int threads : {1, 2}) {
+      RemovalSettings settings;
+      settings.threads = threads;
+      seconds[threads - 1] = bestOf(1, [&] { r = simulateRemoval(moves, SweepSettings().cutter, wheel.stock, wheel.part, settings); });
+    }
+    std::printf("removal %-22s at %.2f mm: %.2f s on 1 thread, %.2f s on 2 (x%.2f; target < 10 s on 2): %ld rays, %ld "
+                "positions; V_r %.1f %%, feed %.0f mm, in material %.1f %%, stick-out %.1f mm, gouge %.2f mm3, stock on "
+                "the part %.2f mean / %.2f max / %.2f std mm\n",
+                strategyName(strategy).c_str(), r.resolution, seconds[0], seconds[1], seconds[0] / seconds[1], r.rays,
+                r.positions, r.remainingShare, r.feedLength, r.inMaterialShare, r.stickOut, r.gougeVolume,
+                r.thicknessMean, r.thicknessMax, r.thicknessStd);
+  }
+}
+
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
   PartAndStock wheel;
@@ -152,6 +181,10 @@ int main(int argc, char** argv) {
   std::printf("stock - part: %.2f s (best of %d; target < 2 s), %zu channels, %.1f mm3 (stock %.1f - part %.1f)%s\n",
               cut, runs, volume.solids.size(), volume.volume, volume.stockVolume, volume.partVolume,
               volume.fuzzyRetry ? ", fuzzy retry" : "");
+  if (argc > 2 && std::string(argv[2]) == "removal") {  // part 3 alone
+    removal(wheel, volume);
+    return 0;
+  }
   const RemovalSolid& channel = volume.solids.front();
   std::printf("channel 1: %.1f mm3, %d surfaces\n", channel.volume, channel.groupCount());
   for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
@@ -180,5 +213,6 @@ int main(int argc, char** argv) {
   }
   sweeps(wheel, volume, runs);
   offsets(channel);
+  removal(wheel, volume);
   return 0;
 }

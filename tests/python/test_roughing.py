@@ -225,8 +225,14 @@ class Sweep(unittest.TestCase):
         self.assertEqual(names, ["A", "C"])
         for angle, axis in zip(angles[::25], paths.moves["axis"][::25]):
             np.testing.assert_allclose(_core.forward_kinematics(trunnion, [0, 0, 0], list(angle))[1], axis, atol=1e-9)
-        with self.assertRaisesRegex(ValueError, "tilts the tool .* but machine 'mikron-ucp710-840d' has no rotary axes"):
-            roughing.machine_axes(paths, feedsim.load_machine("mikron-ucp710-840d"))
+        # On a 3-axis machine the same path is 3+2: the tips in the work plane turned so that the axis is Z.
+        turned, _, names = roughing.machine_axes(paths, feedsim.load_machine("mikron-ucp710-840d"))
+        rotation, tilt, about = roughing.work_plane(paths)
+        self.assertEqual(names, [])
+        np.testing.assert_allclose(turned, paths.moves["tip"] @ rotation.T, atol=1e-12)
+        np.testing.assert_allclose(rotation @ paths.moves["axis"][0], [0, 0, 1], atol=1e-12)
+        self.assertAlmostEqual(tilt, np.degrees(np.arccos(paths.moves["axis"][0][2])), places=9)
+        self.assertAlmostEqual(float(about @ paths.moves["axis"][0]), 0.0, places=12)
         _, flat = self.swept("S1")
         tips, angles, names = roughing.machine_axes(flat, feedsim.load_machine("mikron-ucp710-840d"))
         self.assertEqual(names, [])
