@@ -31,9 +31,10 @@ struct Ball {
   double centre, radius;
 };
 struct Shape {
-  std::vector<Cone> cones;
+  std::vector<Cone> cones;            // the flutes' cylinder first, then a torus's corner
   std::vector<Ball> balls;
   double radius = 0.0, length = 0.0;  // bounding cylinder
+  double corner = 0.0;                // below this height the corner's cones and the ball are needed
 };
 
 Shape shapeOf(const Cutter& c) {
@@ -43,10 +44,12 @@ Shape shapeOf(const Cutter& c) {
   if (c.kind == CutterKind::Flat) {
     s.cones.push_back({0.0, R, L, R});
   } else if (c.kind == CutterKind::Ball) {
-    s.balls.push_back({R, R});
     if (L > R) s.cones.push_back({R, R, L, R});
+    s.balls.push_back({R, R});
+    s.corner = R;
   } else {
     const double r = c.cornerRadius;
+    if (L > r) s.cones.push_back({r, R, L, R});
     double h = 0.0, rho = R - r;
     for (int k = 1; k <= kCornerSegments; ++k) {
       const double phi = 0.5 * M_PI * k / kCornerSegments;
@@ -54,7 +57,7 @@ Shape shapeOf(const Cutter& c) {
       s.cones.push_back({h, rho, h1, rho1});
       h = h1, rho = rho1;
     }
-    if (L > r) s.cones.push_back({r, R, L, R});
+    s.corner = r;
   }
   return s;
 }
@@ -137,10 +140,16 @@ void cutterSpans(const Shape& shape, const Position& at, const Eigen::Vector3d& 
   const Eigen::Vector3d w = o - at.tip;
   const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
   const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
-  for (const Cone& c : shape.cones)
-    if (const Span s = coneSpan(c, q, d)) out.push_back(*s);
-  for (const Ball& b : shape.balls)
-    if (const Span s = ballSpan(b, q, d)) out.push_back(*s);
+  // The bounding cylinder first: most rays of the box miss the tool or pass above its corner.
+  const Span bound = coneSpan({0.0, shape.radius, shape.length, shape.radius}, q, d);
+  if (!bound) return;
+  const bool low = std::min(q.z() + bound->from * d.z(), q.z() + bound->to * d.z()) < shape.corner;
+  for (size_t c = 0; c < shape.cones.size(); ++c)
+    if (c == 0 || low)
+      if (const Span s = coneSpan(shape.cones[c], q, d)) out.push_back(*s);
+  if (low)
+    for (const Ball& b : shape.balls)
+      if (const Span s = ballSpan(b, q, d)) out.push_back(*s);
   if (out.size() < 2) return;
   std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.from < b.from; });
   size_t n = 0;
@@ -287,7 +296,7 @@ public:
     const double h = settings_.resolution;
     const double corner = cutter_.kind == CutterKind::Flat ? cutter_.radius() : cutter_.kind == CutterKind::Ball
                                                                                     ? cutter_.radius() : cutter_.cornerRadius;
-    const double step = std::min(2.0 * h, std::sqrt(2.0 * corner * h));  // a ridge of s²/8r ≤ h/4
+    const double step = std::min(4.0 * h, std::sqrt(2.0 * corner * h));  // a ridge of s²/8r ≤ h/4
     const std::vector<Position> positions = positionsOf(moves, shape_, step);
     r.positions = static_cast<long>(positions.size());
     for (size_t i = 1; i < moves.size(); ++i) {
@@ -387,8 +396,8 @@ private:
     std::vector<double> highest(threads_, 0.0);
     parallelSlices(threads_, threads_, 1, [&](long from, long to) {
       for (long thread = from; thread < to; ++thread)
-        for (int j = j0 + static_cast<int>(thread); j <= j1; j += threads_)
-          for (int i = i0; i <= i1; ++i) {
+        for (int j = j0 + 2 * static_cast<int>(thread); j <= j1; j += 2 * threads_)
+          for (int i = i0; i <= i1; i += 2) {  // every other ray: heights stay exact along each ray
             const Eigen::Vector3d o = material_.origin(k, i, j);
             // The ray o + t·e_k within the holder's infinite cylinder about the axis.
             const Eigen::Vector3d w = o - at.tip;
@@ -450,7 +459,7 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
     throw InputError("material removal: chip section " + number(settings.chipSection) + " mm² must be in ]0, 1000[ (default 0.1)");
   if (!(settings.stickOutSpacing >= 0.1 && settings.stickOutSpacing <= 1e4))
     throw InputError("material removal: stick-out spacing " + number(settings.stickOutSpacing) +
-                     " mm is outside [0.1, 10000] mm (default 2)");
+                     " mm is outside [0.1, 10000] mm (default 5)");
   if (stock.IsNull()) throw InputError("material removal: no stock");
   for (const ToolMove& m : moves)
     if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))

@@ -4,8 +4,8 @@
 // intervals of material on each), the part a second one that is never cut (a tool entering it is a gouge).
 // The tool is swept through it move by move: the tip goes straight and the axis turns evenly between a move's
 // ends (as a controller interpolates orientation), sampled so that neighbouring positions are at most
-// 2 × resolution apart at the tip and at the flutes' end — and never farther than leaves a ridge of a quarter
-// resolution between the scallops of the corner radius (s²/8r). At each position the cutter (flat, torus or
+// 4 × resolution apart at the tip and at the flutes' end — and never farther than leaves a ridge of a quarter
+// resolution between the scallops of the corner radius (s²/8r ≤ resolution/4). At each position the cutter (flat, torus or
 // ball, over its flute length: a solid of revolution of cylinders, cones for a torus's corner within 5 µm of
 // it, and a sphere) takes its intervals out of every ray it crosses. The shank and holder do not cut: they
 // give the stick-out.
@@ -20,8 +20,9 @@
 //   path lengths          all moves, feed moves (not rapids), and the feed moves in material: a position is in
 //                         material when it takes out a chip of at least `chipSection` mm² × the step;
 //   stick-out L_tool      every `stickOutSpacing` mm of path, the highest point of the part or of the stock
-//                         left at that time within the holder's radius of the axis, above the tip along it,
-//                         plus nothing: the least stick-out at which the holder touches nothing there;
+//                         left at that time within the holder's radius of the axis, above the tip along it
+//                         (read on every other ray each way): the least stick-out at which the holder touches
+//                         nothing there;
 //   gouge                 the part's volume the cutter enters (Z rays), the first move that does and where;
 //   stock on the part     at points of the part's surface about 2 resolutions apart, the thickness of material
 //                         left along the outward normal
@@ -42,7 +43,7 @@ namespace hsm::roughing {
 struct RemovalSettings {
   double resolution = 0.2;       // mm between rays
   double chipSection = 0.1;      // mm²: the least chip section of a position "in material"
-  double stickOutSpacing = 2.0;  // mm of path between stick-out measures
+  double stickOutSpacing = 5.0;  // mm of path between stick-out measures
   int threads = 0;               // 0: all cores
   ProgressCallback progress;
 };
