@@ -138,6 +138,20 @@ void bindSweep(py::module_& m) {
       },
       py::arg("tips"), py::arg("axes"), py::arg("part_brep"), py::arg("cutter"), py::arg("limit"),
       py::arg("spacing") = 1.0, py::arg("deflection") = 0.01);
+  m.def(
+      "join_sweeps",
+      [](const std::vector<py::dict>& regions, const std::string& stockBrep, double clearance) {
+        std::vector<std::vector<ToolMove>> moves;
+        for (const py::dict& d : regions)
+          moves.push_back(movesFrom(d["tip"].cast<py::array_t<double>>(), d["axis"].cast<py::array_t<double>>(),
+                                    d["kind"].cast<py::array_t<long>>()));
+        const TopoDS_Shape stock = geometry::readBrep(stockBrep);
+        py::gil_scoped_release release;
+        const std::vector<ToolMove> joined = guarded("joining sweeps", [&] { return joinSweeps(moves, stock, clearance); });
+        py::gil_scoped_acquire acquire;
+        return moveArrays(joined);
+      },
+      py::arg("regions"), py::arg("stock_brep"), py::arg("clearance") = 5.0);
   py::class_<RemovalSettings>(m, "RemovalSettings", "Material-removal simulation (mm)")
       .def(py::init<>())
       .def_readwrite("resolution", &RemovalSettings::resolution, "mm between rays (default 0.2)")

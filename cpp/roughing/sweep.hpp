@@ -101,4 +101,14 @@ struct SweepResult {
 SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part,
                   const TopoDS_Shape& stock, const SweepSettings& settings);
 
+// The sweeps of several regions (an impeller's channels) as one program, linked safely: where all their moves
+// keep one tool axis (S1 on every channel), a retract to one plane beyond the stock (normal to the axis,
+// `clearance` mm above the stock) and a straight move there; otherwise (S3's own setup per channel, 4 and
+// 5 axes) out along the tool axis to a sphere about the stock (its bounding box's, `clearance` mm beyond),
+// the axis turned there to point away from the stock's centre, along the sphere (chords within clearance / 2
+// of it), the axis turned to the next region's, and in along it. Each tool position of a link then has its
+// whole length outside the stock. The regions' own first and last moves are kept.
+std::vector<ToolMove> joinSweeps(const std::vector<std::vector<ToolMove>>& regions, const TopoDS_Shape& stock,
+                                 double clearance = 5.0);
+
 }  // namespace hsm::roughing

@@ -147,6 +147,14 @@ def check_clearance(paths, part, tool=None, limit=None, spacing=1.0, deflection=
                                           float(spacing), float(deflection))
 
 
+def join_paths(paths, stock, clearance=None):
+    """The sweeps of several regions (SweepResults or moves dicts) as one moves dict, linked safely through the
+    air (one plane when every move keeps one axis, else a sphere about the stock; cpp/roughing/sweep.hpp
+    joinSweeps): what one program of all an impeller's channels runs."""
+    regions = [p.moves if hasattr(p, "moves") else p for p in paths]
+    return _core.roughing.join_sweeps(regions, as_brep(stock), 5.0 if clearance is None else float(clearance))
+
+
 def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_section=None, stick_out_spacing=None,
                      threads=None, progress=None):
     """The moves of `paths` (a SweepResult, or a dict of (N, 3) `tip` and `axis` and (N,) `kind` arrays) swept

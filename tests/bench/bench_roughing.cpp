@@ -150,11 +150,10 @@ void offsets(const RemovalSolid& channel) {
 void removal(const PartAndStock& wheel, const VolumeToRemove& volume) {
   for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
                             Strategy::StockOffsets, Strategy::HubOffsets}) {
-    std::vector<ToolMove> moves;
-    for (const RemovalSolid& solid : volume.solids) {
-      const SweepResult r = sweep(partition(solid, wheel.part, strategy), solid, wheel.part, wheel.stock, {});
-      moves.insert(moves.end(), r.moves.begin(), r.moves.end());
-    }
+    std::vector<std::vector<ToolMove>> regions;
+    for (const RemovalSolid& solid : volume.solids)
+      regions.push_back(sweep(partition(solid, wheel.part, strategy), solid, wheel.part, wheel.stock, {}).moves);
+    const std::vector<ToolMove> moves = joinSweeps(regions, wheel.stock);
     double seconds[2];
     RemovalResult r;
     for (int threads : {1, 2}) {

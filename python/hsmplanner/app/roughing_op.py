@@ -96,22 +96,24 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
         cutter = cutter_of(obj.ToolController.Tool)
         machine = feedsim.load_machine(obj.Machine)
-        passes, length, closest = 0, 0.0, float("inf")
+        passes, length, swept = 0, 0.0, []
         for index, partition in partitions:
             paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
                                    radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
                                    ramp_angle_deg=obj.RampAngle.Value)
             for warning in paths.warnings:
                 FreeCAD.Console.PrintWarning("%s: region %d: %s\n" % (obj.Label, index + 1, warning))
-            report = roughing.check_clearance(paths, part_brep, cutter, obj.Allowance.Value - 0.01)
-            if report.too_close:
-                FreeCAD.Console.PrintWarning("%s: region %d: %d tool positions come within %.3f mm of the part "
-                                             "(allowance %.3f mm)\n" % (obj.Label, index + 1, report.too_close,
-                                                                       report.minimum, obj.Allowance.Value))
             passes += len(paths.passes)
             length += paths.cutting_length
-            closest = min(closest, report.minimum)
-            self.commandlist.extend(sweep_commands(paths, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
+            swept.append(paths)
+        # The regions as one program, linked through the air; checked whole, links included.
+        moves = roughing.join_paths(swept, stock_brep)
+        report = roughing.check_clearance(moves, part_brep, cutter, obj.Allowance.Value - 0.01)
+        if report.too_close:
+            FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
+                                         % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
+        self.commandlist.extend(sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
+        closest = report.minimum
         obj.Passes = passes
         obj.CuttingLength = length
         obj.ClosestApproach = max(0.0, closest)

@@ -2,6 +2,7 @@
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/clearance.hpp"
+#include "roughing/removal.hpp"
 #include "roughing/sweep.hpp"
 
 #include <BRepClass3d_SolidClassifier.hxx>
@@ -315,3 +316,31 @@ INSTANTIATE_TEST_SUITE_P(Sweep, ImpellerOffsets, ::testing::Values(Strategy::Sto
                          [](const ::testing::TestParamInfo<Strategy>& info) {
                            return info.param == Strategy::StockOffsets ? std::string("S4") : std::string("S5");
                          });
+
+// Two channels in one program: the link between them goes through the air (a sphere about the stock where
+// the axis turns, a plane where S1 keeps one axis): the clearance check of the whole program, links
+// included, finds no position near the part, and the material removal no gouge (a straight rapid between
+// the channels' safe surfaces went through a blade: 5,104 mm³ of S2 "gouge" before).
+TEST(Sweep, ChannelsJoinedThroughTheAir) {
+  const ImpellerCase& c = wheelCase();
+  for (Strategy strategy : {Strategy::CoaxialCylinders, Strategy::PlanesParallelToFace}) {
+    std::vector<std::vector<ToolMove>> regions;
+    size_t count = 0;
+    for (size_t i = 0; i < 2; ++i) {
+      const RemovalSolid& channel = c.volume.solids[i];
+      regions.push_back(sweep(roughing::partition(channel, c.wheel.part, strategy), channel, c.wheel.part, c.wheel.stock, {}).moves);
+      count += regions.back().size();
+    }
+    const std::vector<ToolMove> joined = joinSweeps(regions, c.wheel.stock);
+    EXPECT_GT(joined.size(), count);
+    const SweepSettings settings;
+    const ClearanceReport clear = checkClearance(joined, c.wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
+    EXPECT_EQ(clear.tooClose, 0) << strategyName(strategy) << ": closest " << clear.minimum << " at move " << clear.worstMove;
+    if (strategy == Strategy::PlanesParallelToFace)
+      for (const ToolMove& m : joined) EXPECT_GT(m.axis.dot(joined.front().axis), 1.0 - 1e-12) << "S1 keeps one axis";
+    RemovalSettings coarse;
+    coarse.resolution = 0.5;
+    const RemovalResult removal = simulateRemoval(joined, settings.cutter, c.wheel.stock, c.wheel.part, coarse);
+    EXPECT_LT(removal.gougeVolume, 1.0) << strategyName(strategy) << ": gouge at move " << removal.gougeMove;
+  }
+}
