@@ -217,6 +217,29 @@ class Sweep(unittest.TestCase):
         report = roughing.check_clearance(paths, self.shapes.part_brep)
         self.assertEqual(report.too_close, 0)
 
+    def test_material_removal_of_the_setup_planes(self):
+        # S3 removes most of the slot's volume without touching the part; what it leaves on the part is at least
+        # the allowance on average, and a holder 40 mm up clears everything.
+        _, paths = self.swept("S3")
+        result = roughing.simulate_removal(paths, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.5)
+        self.assertEqual(result.resolution, 0.5)
+        self.assertLess(result.remaining_share, 60.0)
+        self.assertEqual(result.gouge_move, -1)
+        self.assertLess(result.gouge_volume, 1e-9)
+        self.assertGreater(result.in_material_share, 20.0)
+        self.assertGreater(result.stick_out, 5.0)
+        self.assertLess(result.stick_out, 40.0)
+        self.assertGreaterEqual(result.thickness_mean, 0.4)
+        self.assertEqual(len(result.thickness), len(result.surface_points))
+        self.assertAlmostEqual(float(np.average(result.thickness, weights=result.weight)), result.thickness_mean, places=9)
+        with self.assertRaisesRegex(ValueError, "resolution 0 mm is outside \\[0.005, 50\\] mm"):
+            roughing.simulate_removal(paths, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.0)
+        # Two copies of the path joined keep one tool axis (a plane link), and remove nothing more.
+        joined = roughing.join_paths([paths, paths], self.shapes.stock_brep)
+        np.testing.assert_allclose(joined["axis"] @ paths.moves["axis"][0], 1.0, atol=1e-12)
+        again = roughing.simulate_removal(joined, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.5)
+        self.assertAlmostEqual(again.remaining_share, result.remaining_share, places=9)
+
     def test_machine_axes_give_the_tool_axes_back(self):
         from hsmplanner import _core, feedsim
         _, paths = self.swept("S3")
