@@ -157,12 +157,16 @@ void bindSweep(py::module_& m) {
       .def_readwrite("resolution", &RemovalSettings::resolution, "mm between rays (default 0.2)")
       .def_readwrite("chip_section", &RemovalSettings::chipSection, "mm², the least chip of a position in material")
       .def_readwrite("stick_out_spacing", &RemovalSettings::stickOutSpacing, "mm of path between stick-out measures")
-      .def_readwrite("threads", &RemovalSettings::threads, "0: all cores");
+      .def_readwrite("threads", &RemovalSettings::threads, "0: all cores")
+      .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part");
   py::class_<RemovalResult>(m, "RemovalResult", "Lengths mm, volumes mm³, shares %")
       .def_readonly("resolution", &RemovalResult::resolution)
       .def_readonly("volume_to_remove", &RemovalResult::volumeToRemove)
       .def_readonly("remaining_volume", &RemovalResult::remainingVolume)
       .def_readonly("remaining_share", &RemovalResult::remainingShare, "V_r, % of the volume to remove")
+      .def_readonly("beyond_allowance_volume", &RemovalResult::beyondAllowanceVolume)
+      .def_readonly("beyond_allowance_share", &RemovalResult::beyondAllowanceShare,
+                    "V_r without the allowance layer left on the part, %")
       .def_readonly("path_length", &RemovalResult::pathLength)
       .def_readonly("feed_length", &RemovalResult::feedLength)
       .def_readonly("in_material_length", &RemovalResult::inMaterialLength)

@@ -326,6 +326,10 @@ public:
     r.remainingShare = r.volumeToRemove > 0.0 ? 100.0 * r.remainingVolume / r.volumeToRemove : 0.0;
     r.inMaterialShare = r.feedLength > 0.0 ? 100.0 * r.inMaterialLength / r.feedLength : 0.0;
     thicknessOf(samples, r);
+    double layer = 0.0;
+    for (size_t i = 0; i < r.thickness.size(); ++i) layer += r.weight[i] * std::min(r.thickness[i], settings_.allowance);
+    r.beyondAllowanceVolume = std::max(0.0, r.remainingVolume - layer);
+    r.beyondAllowanceShare = r.volumeToRemove > 0.0 ? 100.0 * r.beyondAllowanceVolume / r.volumeToRemove : 0.0;
     return r;
   }
 
@@ -460,6 +464,8 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
   if (!(settings.stickOutSpacing >= 0.1 && settings.stickOutSpacing <= 1e4))
     throw InputError("material removal: stick-out spacing " + number(settings.stickOutSpacing) +
                      " mm is outside [0.1, 10000] mm (default 5)");
+  if (!(settings.allowance >= 0.0 && settings.allowance <= 100.0))
+    throw InputError("material removal: allowance " + number(settings.allowance) + " mm is outside [0, 100] mm (default 0.5)");
   if (stock.IsNull()) throw InputError("material removal: no stock");
   for (const ToolMove& m : moves)
     if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))

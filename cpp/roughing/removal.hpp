@@ -16,7 +16,8 @@
 // per ray; the voxel comparison is not measured yet (see docs/roughing.md).
 //
 // Measured, per program (the paper's Table 1 and beyond):
-//   remaining share V_r   stock left of the volume to remove, % (Z rays);
+//   remaining share V_r   stock left of the volume to remove, % (Z rays); also without the allowance layer
+//                         left on the part (the stock on the part below), which a roughing leaves on purpose;
 //   path lengths          all moves, feed moves (not rapids), and the feed moves in material: a position is in
 //                         material when it takes out a chip of at least `chipSection` mm² × the step;
 //   stick-out L_tool      every `stickOutSpacing` mm of path, the highest point of the part or of the stock
@@ -44,6 +45,7 @@ struct RemovalSettings {
   double resolution = 0.2;       // mm between rays
   double chipSection = 0.1;      // mm²: the least chip section of a position "in material"
   double stickOutSpacing = 5.0;  // mm of path between stick-out measures
+  double allowance = 0.5;        // mm of stock meant to stay on the part: V_r is also given without it
   int threads = 0;               // 0: all cores
   ProgressCallback progress;
 };
@@ -52,6 +54,9 @@ struct RemovalResult {
   double resolution = 0.0;                           // mm, reported with every figure
   double volumeToRemove = 0.0, remainingVolume = 0.0; // mm³
   double remainingShare = 100.0;                     // % of the volume to remove left (V_r)
+  // The same without the allowance layer that is left (Σ area × min(thickness, allowance) over the samples):
+  // the material the strategy did not reach.
+  double beyondAllowanceVolume = 0.0, beyondAllowanceShare = 100.0;
   double pathLength = 0.0, feedLength = 0.0, inMaterialLength = 0.0;  // mm
   double inMaterialShare = 0.0;                      // % of the feed length
   double stickOut = 0.0;                             // mm: least stick-out so that the holder clears everything

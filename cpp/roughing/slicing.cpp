@@ -1,5 +1,6 @@
 #include "roughing/slicing.hpp"
 
+#include "geometry/mesh.hpp"
 #include "roughing/meridian.hpp"
 #include "roughing/rays.hpp"
 
@@ -280,18 +281,15 @@ private:
 }  // namespace
 
 std::pair<double, double> SlicingFamily::depthRange(const TopoDS_Shape& solid) const {
+  // On a mesh of a copy: the solid shares its faces with the part, and a finer mesh made of them before (a
+  // clearance check's) would move the slices.
   const Box box = boxOf(solid);
-  BRepMesh_IncrementalMesh(solid, 1e-3 * box.size, Standard_False, 0.2, Standard_False);
+  const geometry::TriangleMesh mesh = geometry::meshFacesAfresh(solid, 1e-3 * box.size);
   double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
-    TopLoc_Location location;
-    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location);
-    if (mesh.IsNull()) continue;
-    for (int i = 1; i <= mesh->NbNodes(); ++i) {
-      const double d = depth(mesh->Node(i).Transformed(location.Transformation()));
-      low = std::min(low, d);
-      high = std::max(high, d);
-    }
+  for (const Eigen::Vector3d& p : mesh.vertices) {
+    const double d = depth(toPoint(p));
+    low = std::min(low, d);
+    high = std::max(high, d);
   }
   if (!std::isfinite(low) || !std::isfinite(high)) throw ComputationError("the volume could not be meshed to measure it");
   return {low, high};

@@ -19,6 +19,7 @@ namespace hsm::roughing {
 namespace {
 constexpr int kMaxRings = 10000;
 constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
+constexpr double kFloorSlack = 0.005;  // mm
 
 cl::Paths offset(const cl::Paths& paths, double mm, double tolerance) {
   cl::ClipperOffset offsetter(2.0, std::max(1.0, tolerance * kScale));
@@ -317,7 +318,10 @@ private:
     const double scale = projection_->largestScale();
     const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter) / scale, settings_.tolerance);
     // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
-    const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, level.tip - settings_.allowance - lift,
+    // The part from the allowance under the tip up, less 5 µm: a floor the tip was raised onto lies exactly the
+    // allowance under it, and rounding (a shape read back from BREP text, or not) must not decide whether it
+    // shadows the whole level (half the 0.01 mm the clearance check grants).
+    const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, level.tip - settings_.allowance - lift + kFloorSlack,
                                         windowAround(level.region, 1.5 * margin),
                                         radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
                                         settings_.tolerance, inner);

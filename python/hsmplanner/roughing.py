@@ -156,16 +156,16 @@ def join_paths(paths, stock, clearance=None):
 
 
 def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_section=None, stick_out_spacing=None,
-                     threads=None, progress=None):
+                     threads=None, allowance=None, progress=None):
     """The moves of `paths` (a SweepResult, or a dict of (N, 3) `tip` and `axis` and (N,) `kind` arrays) swept
     through stock − part by the cutter `tool` (default the paper's Ø8 r1 torus) on a tri-dexel model
     `resolution` mm fine (default 0.2; cpp/roughing/removal.hpp): a RemovalResult with V_r (remaining_share,
-    %), the path, feed and in-material lengths, the least stick-out for the holder, any gouge (volume, first
+    %; beyond_allowance_share without the `allowance` layer left on the part, default 0.5 mm), the path, feed and in-material lengths, the least stick-out for the holder, any gouge (volume, first
     move, where) and the stock left on the part (thickness at surface_points, its weighted mean, max and
     standard deviation). ValueError for bad settings or moves; Cancelled when `progress` returns False."""
     moves = paths.moves if hasattr(paths, "moves") else paths
     settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, chip_section=chip_section,
-                             stick_out_spacing=stick_out_spacing, threads=threads)
+                             stick_out_spacing=stick_out_spacing, threads=threads, allowance=allowance)
     tool = tool if tool is not None else _core.roughing.Cutter()
     return _core.roughing.simulate_removal(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
                                            as_brep(part), settings, progress)

@@ -109,6 +109,31 @@ if __name__ == "__main__":
     unittest.main()
 
 
+class RoughingStudyExample(unittest.TestCase):
+    def test_five_strategies_simulated_beside_the_papers_table(self):
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "roughing_study.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
+        import csv
+        with open(os.path.join(out, "roughing_study.csv")) as stream:
+            rows = list(csv.DictReader(stream))
+        self.assertEqual([r["strategy"] for r in rows], ["S1", "S2", "S3", "S4", "S5"])
+        for row in rows:
+            self.assertEqual(float(row["gouge_mm3"]), 0.0, row)
+            self.assertEqual(float(row["resolution_mm"]), 0.2, row)
+            self.assertTrue(0.0 < float(row["vr_beyond_allowance"]) < float(row["vr"]) < 100.0, row)
+            self.assertGreater(float(row["stick_out_mm"]), 0.0, row)
+            self.assertTrue(0.0 < float(row["in_material"]) <= 100.0, row)
+            self.assertGreater(float(row["time_s"]), float(row["length_over_feed_s"]) * 0.99, row)
+            self.assertGreaterEqual(float(row["stock_mean_mm"]), 0.45, row)
+        # The continuous 5-axis strategies need the least stick-out (the paper's S4 and S5: 39 and 44 mm).
+        stick = {r["strategy"]: float(r["stick_out_mm"]) for r in rows}
+        self.assertLess(max(stick["S4"], stick["S5"]), min(stick["S1"], stick["S2"], stick["S3"]))
+        for picture in ("roughing_study_stock.png", "roughing_study_bars.png"):
+            with open(os.path.join(out, picture), "rb") as stream:
+                self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
+
+
 class RoughingPathsExample(unittest.TestCase):
     def test_sweeps_checks_posts_and_simulates_each_strategy(self):
         out = temporary_directory(self)

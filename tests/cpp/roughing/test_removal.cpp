@@ -1,6 +1,8 @@
 // Material-removal simulation (roughing/removal.hpp) on cases whose answers are known in closed form.
 #include "common/error.hpp"
+#include "roughing/parts.hpp"
 #include "roughing/removal.hpp"
+#include "roughing/roughing.hpp"
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -136,4 +138,24 @@ TEST(Removal, BadSettingsAreRefusedByName) {
   std::vector<ToolMove> bad = s.slot;
   bad[1].tip.x() = std::nan("");
   EXPECT_THROW(simulateRemoval(bad, flat(10.0), s.stock, s.part), InputError);
+}
+
+// Issue 17's check on the slanted slot block: a vertical tool (Z-level roughing, S1 from the top face) cannot
+// reach under the 30° overhang and leaves at least 35 % of the volume; the setup planes along the slot (S3)
+// leave at most 2 % beyond the allowance layer.
+TEST(Removal, TheSlantedSlotNeedsItsSetupDirection) {
+  const PartAndStock block = slantedSlotBlock();
+  const VolumeToRemove volume = volumeToRemove(block.stock, block.part);
+  const RemovalSolid& slot = volume.solids.front();
+  RemovalSettings settings;
+  settings.resolution = 0.25;
+  auto removal = [&](Strategy strategy) {
+    const SweepResult paths = sweep(partition(slot, block.part, strategy), slot, block.part, block.stock, {});
+    return simulateRemoval(paths.moves, SweepSettings().cutter, block.stock, block.part, settings);
+  };
+  const RemovalResult setup = removal(Strategy::SetupPlanes), zLevel = removal(Strategy::PlanesParallelToFace);
+  EXPECT_GE(zLevel.remainingShare, 35.0);
+  EXPECT_LE(setup.beyondAllowanceShare, 2.0) << "V_r " << setup.remainingShare << " % with the allowance layer";
+  EXPECT_EQ(setup.gougeMove, -1);
+  EXPECT_NEAR(setup.thicknessMean, 0.5, 0.1) << "the allowance, with the corners' few extra";
 }

@@ -1,0 +1,63 @@
+"""Pictures of the five-strategy roughing study (issue 17, examples/roughing_study.py): the stock left on the part
+by each strategy as a coloured map, and bars of the remaining volume and the machining time beside the paper's.
+
+Inputs are plain arrays (points, thickness) and rows of numbers: no FreeCAD, no core."""
+import numpy as np
+
+from .common import new_figure
+
+
+def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
+    """One 3D panel per strategy: [(label, points (N, 3), thickness (N,)), …], the points of the part's surface
+    coloured by the stock left on them (one scale for all panels, mm), with a shared colour bar."""
+    import matplotlib.cm as cm
+    from matplotlib.colors import Normalize
+
+    columns = min(3, len(maps))
+    rows = (len(maps) + columns - 1) // columns
+    figure = new_figure(4.4 * columns + 0.8, 4.0 * rows)
+    top = top_mm or max(float(np.percentile(t, 99)) if len(t) else 0.0 for _, _, t in maps) or 1.0
+    norm, colours = Normalize(0.0, top), cm.get_cmap("viridis")
+    for k, (label, points, thickness) in enumerate(maps):
+        axes = figure.add_subplot(rows, columns, k + 1, projection="3d")
+        points, thickness = np.asarray(points).reshape(-1, 3), np.asarray(thickness)
+        step = max(1, len(points) // 20000)  # a readable cloud: at most 20,000 points a panel
+        axes.scatter(*points[::step].T, c=colours(norm(thickness[::step])), s=0.6, linewidths=0)
+        axes.view_init(*view)
+        axes.set_title("%s: mean %.2f, max %.2f mm" % (label, float(np.average(thickness)) if len(thickness) else 0.0,
+                                                      float(thickness.max()) if len(thickness) else 0.0), fontsize=8)
+        axes.tick_params(labelsize=6)
+    mappable = cm.ScalarMappable(norm=norm, cmap=colours)
+    bar = figure.colorbar(mappable, ax=figure.axes, shrink=0.6, pad=0.02)
+    bar.set_label("stock left on the part, mm (%g and more at the top of the scale)" % round(top, 2), fontsize=8)
+    figure.suptitle(title, fontsize=9)
+    figure.savefig(path)
+    return path
+
+
+def save_study_bars(rows, path, title):
+    """Bars per strategy: V_r (ours with and without the allowance layer, the paper's) and the simulated
+    machining time against length/feed. `rows`: dicts with strategy, paper_vr, vr, vr_beyond_allowance,
+    time_s, length_over_feed_s (None where unknown)."""
+    labels = [r["strategy"] for r in rows]
+    x = np.arange(len(rows))
+    figure = new_figure(10.0, 4.0)
+    left, right = figure.add_subplot(1, 2, 1), figure.add_subplot(1, 2, 2)
+    value = lambda key: [np.nan if r.get(key) in (None, "") else float(r[key]) for r in rows]
+    for offset, key, name in ((-0.27, "paper_vr", "paper (TopSolid)"), (0.0, "vr", "ours"),
+                              (0.27, "vr_beyond_allowance", "ours, without the 0.5 mm allowance")):
+        left.bar(x + offset, value(key), width=0.26, label=name)
+    left.set_xticks(x, labels, fontsize=8)
+    left.set_ylabel("V_r: volume left, % of the volume to remove", fontsize=8)
+    left.legend(fontsize=7)
+    right.bar(x - 0.2, value("length_over_feed_s"), width=0.38, label="length / feed")
+    right.bar(x + 0.2, value("time_s"), width=0.38, label="simulated (840D A/C)")
+    right.set_xticks(x, labels, fontsize=8)
+    right.set_ylabel("machining time, s", fontsize=8)
+    right.legend(fontsize=7)
+    for axes in (left, right):
+        axes.tick_params(labelsize=7)
+    figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    figure.savefig(path)
+    return path
