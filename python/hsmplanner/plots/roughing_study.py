@@ -15,20 +15,21 @@ def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
 
     columns = min(3, len(maps))
     rows = (len(maps) + columns - 1) // columns
-    figure = new_figure(4.4 * columns + 0.8, 4.0 * rows)
+    figure = new_figure(4.2 * columns + 0.9, 4.0 * rows)
     top = top_mm or max(float(np.percentile(t, 99)) if len(t) else 0.0 for _, _, t in maps) or 1.0
     norm, colours = Normalize(0.0, top), cm.get_cmap("viridis")
     for k, (label, points, thickness) in enumerate(maps):
         axes = figure.add_subplot(rows, columns, k + 1, projection="3d")
         points, thickness = np.asarray(points).reshape(-1, 3), np.asarray(thickness)
         step = max(1, len(points) // 20000)  # a readable cloud: at most 20,000 points a panel
-        axes.scatter(*points[::step].T, c=colours(norm(thickness[::step])), s=0.6, linewidths=0)
+        axes.scatter(*points[::step].T, c=colours(norm(thickness[::step])), s=2.0, linewidths=0)
         axes.view_init(*view)
         axes.set_title("%s: mean %.2f, max %.2f mm" % (label, float(np.average(thickness)) if len(thickness) else 0.0,
                                                       float(thickness.max()) if len(thickness) else 0.0), fontsize=8)
         axes.tick_params(labelsize=6)
+    figure.subplots_adjust(left=0.0, right=0.9, top=0.9, bottom=0.03, wspace=0.02, hspace=0.1)
     mappable = cm.ScalarMappable(norm=norm, cmap=colours)
-    bar = figure.colorbar(mappable, ax=figure.axes, shrink=0.6, pad=0.02)
+    bar = figure.colorbar(mappable, cax=figure.add_axes([0.92, 0.2, 0.015, 0.6]))
     bar.set_label("stock left on the part, mm (%g and more at the top of the scale)" % round(top, 2), fontsize=8)
     figure.suptitle(title, fontsize=9)
     figure.savefig(path)
