@@ -50,12 +50,14 @@ def save_study_bars(rows, path, title):
         left.bar(x + offset, value(key), width=0.26, label=name)
     left.set_xticks(x, labels, fontsize=8)
     left.set_ylabel("V_r: volume left, % of the volume to remove", fontsize=8)
-    left.legend(fontsize=7)
+    left.set_ylim(0.0, 1.3 * np.nanmax(value("vr") + value("paper_vr")))  # room for the legend above the bars
+    left.legend(fontsize=7, loc="upper center", ncol=2)
     right.bar(x - 0.2, value("length_over_feed_s"), width=0.38, label="length / feed")
     right.bar(x + 0.2, value("time_s"), width=0.38, label="simulated (840D A/C)")
     right.set_xticks(x, labels, fontsize=8)
     right.set_ylabel("machining time, s", fontsize=8)
-    right.legend(fontsize=7)
+    right.set_ylim(0.0, 1.2 * np.nanmax(value("time_s") + value("length_over_feed_s")))
+    right.legend(fontsize=7, loc="upper center", ncol=2)
     for axes in (left, right):
         axes.tick_params(labelsize=7)
     figure.suptitle(title, fontsize=9)
