@@ -10,7 +10,8 @@ channels joined through the air into one program, simulated by the material-remo
 Writes roughing_study.csv (per strategy the paper's V_r, path, in-material share and stick-out beside ours,
 and ours only: V_r without the allowance layer, the simulated time against length/feed, the share of time each
 axis held the speed, the stock left on the part: mean, max, standard deviation), roughing_study_stock.png (the
-stock each strategy leaves on the part) and roughing_study_bars.png (V_r and times).
+stock each strategy leaves on the part), roughing_study_bars.png (V_r and times), roughing_study_S*_stock.stl and
+roughing_study.FCStd (the stock each leaves, as 1 mm blocks, with the part) and roughing_study_S*_840d.mpf.
 """
 import csv
 import os
@@ -28,6 +29,7 @@ PAPER = {"S1": (43.1, 3332, 44.1, 57), "S2": (14.1, 2987, 54.4, 49), "S3": (16.0
 FEED_MM_MIN = 2000.0
 MACHINE = "mikron-ucp710-ac-840d"
 RESOLUTION_MM = 0.2
+STOCK_BLOCK_RAYS = 5  # the stock left as 1 mm blocks for FreeCAD and STL (0.2 mm ones would weigh 25 times more)
 COLUMNS = ["strategy", "paper_vr", "vr", "vr_beyond_allowance", "paper_path_mm", "path_mm", "feed_mm",
            "paper_in_material", "in_material", "paper_stick_out_mm", "stick_out_mm", "gouge_mm3", "time_s",
            "length_over_feed_s", "held_by", "stock_mean_mm", "stock_max_mm", "stock_std_mm", "resolution_mm",
@@ -41,7 +43,10 @@ def study_strategy(name, wheel, volume, machine, out):
         regions.append(roughing.sweep(roughing.partition(solid, wheel.part_brep, name), solid, wheel.part_brep,
                                       wheel.stock_brep))
     moves = roughing.join_paths(regions, wheel.stock_brep)
-    removal = roughing.simulate_removal(moves, wheel.stock_brep, wheel.part_brep, resolution=RESOLUTION_MM)
+    removal = roughing.simulate_removal(moves, wheel.stock_brep, wheel.part_brep, resolution=RESOLUTION_MM,
+                                        stock_mesh_stride=STOCK_BLOCK_RAYS)
+    roughing.save_stl(removal.stock_mesh, os.path.join(out, "roughing_study_%s_stock.stl" % name),
+                      "%s stock left, blocks of %g mm" % (name, STOCK_BLOCK_RAYS * RESOLUTION_MM))
     program = os.path.join(out, "roughing_study_%s_840d.mpf" % name)
     siemens840d_post.export([ProgramSource("%s %s" % (name, roughing.STRATEGY_LABELS[name]),
                                            sweep_commands(moves, machine, FEED_MM_MIN))], program,
@@ -65,7 +70,29 @@ def study_strategy(name, wheel, volume, machine, out):
                       row["in_material"], paper[2], row["stick_out_mm"], paper[3], row["time_s"],
                       row["length_over_feed_s"], row["held_by"], row["stock_mean_mm"], row["stock_max_mm"],
                       row["stock_std_mm"], row["seconds"]))
-    return row, (name, removal.surface_points, removal.thickness)
+    return row, (name, removal.surface_points, removal.thickness, removal.weight), removal.stock_mesh
+
+
+def save_document(wheel, meshes, path):
+    """A FreeCAD document with the part and each strategy's stock left as a Mesh feature (all but the last
+    hidden): what the study leaves, to look at in FreeCAD."""
+    import FreeCAD
+    import Mesh
+    import Part
+
+    document = FreeCAD.newDocument("RoughingStudy")
+    part = document.addObject("Part::Feature", "Impeller")
+    shape = Part.Shape()
+    shape.importBrepFromString(wheel.part_brep)
+    part.Shape = shape
+    for name, (points, triangles) in meshes:
+        feature = document.addObject("Mesh::Feature", "StockLeft_%s" % name)
+        feature.Label = "%s stock left" % name
+        feature.Mesh = Mesh.Mesh([[list(map(float, points[i])) for i in triangle] for triangle in triangles])
+    document.recompute()
+    document.saveAs(path)
+    FreeCAD.closeDocument(document.Name)
+    return path
 
 
 def main(argv):
@@ -74,11 +101,13 @@ def main(argv):
     wheel = roughing.impeller()
     volume = roughing.volume_to_remove(wheel.stock_brep, wheel.part_brep)
     machine = feedsim.load_machine(MACHINE)
-    rows, maps = [], []
+    rows, maps, meshes = [], [], []
     for name in ("S1", "S2", "S3", "S4", "S5"):
-        row, stock_map = study_strategy(name, wheel, volume, machine, out)
+        row, stock_map, mesh = study_strategy(name, wheel, volume, machine, out)
         rows.append(row)
         maps.append(stock_map)
+        meshes.append((name, mesh))
+    save_document(wheel, meshes, os.path.join(out, "roughing_study.FCStd"))
     with open(os.path.join(out, "roughing_study.csv"), "w", newline="") as stream:
         writer = csv.DictWriter(stream, fieldnames=COLUMNS)
         writer.writeheader()

@@ -158,7 +158,9 @@ void bindSweep(py::module_& m) {
       .def_readwrite("chip_section", &RemovalSettings::chipSection, "mm², the least chip of a position in material")
       .def_readwrite("stick_out_spacing", &RemovalSettings::stickOutSpacing, "mm of path between stick-out measures")
       .def_readwrite("threads", &RemovalSettings::threads, "0: all cores")
-      .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part");
+      .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part")
+      .def_readwrite("stock_mesh_stride", &RemovalSettings::stockMeshStride,
+                     "> 0: the stock left as blocks of stride x stride rays (0: none)");
   py::class_<RemovalResult>(m, "RemovalResult", "Lengths mm, volumes mm³, shares %")
       .def_readonly("resolution", &RemovalResult::resolution)
       .def_readonly("volume_to_remove", &RemovalResult::volumeToRemove)
@@ -187,6 +189,16 @@ void bindSweep(py::module_& m) {
       .def_readonly("thickness_mean", &RemovalResult::thicknessMean)
       .def_readonly("thickness_max", &RemovalResult::thicknessMax)
       .def_readonly("thickness_std", &RemovalResult::thicknessStd)
+      .def_property_readonly("stock_mesh", [](const RemovalResult& r) {
+        // (points (N, 3), triangles (M, 3)): the stock left, closed (empty without stock_mesh_stride).
+        py::array_t<double> points({static_cast<py::ssize_t>(r.stockMesh.vertices.size()), py::ssize_t(3)});
+        py::array_t<long> triangles({static_cast<py::ssize_t>(r.stockMesh.triangles.size()), py::ssize_t(3)});
+        for (size_t i = 0; i < r.stockMesh.vertices.size(); ++i)
+          for (int k = 0; k < 3; ++k) points.mutable_at(static_cast<py::ssize_t>(i), k) = r.stockMesh.vertices[i][k];
+        for (size_t i = 0; i < r.stockMesh.triangles.size(); ++i)
+          for (int k = 0; k < 3; ++k) triangles.mutable_at(static_cast<py::ssize_t>(i), k) = r.stockMesh.triangles[i][k];
+        return py::make_tuple(points, triangles);
+      })
       .def_readonly("rays", &RemovalResult::rays)
       .def_readonly("positions", &RemovalResult::positions);
   m.def(

@@ -123,6 +123,50 @@ void TriDexel::subtract(const TriDexel& other) {
       for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
 }
 
+geometry::TriangleMesh TriDexel::blocks(int stride) const {
+  geometry::TriangleMesh mesh;
+  const int nx = (n_[2][0] + stride - 1) / stride, ny = (n_[2][1] + stride - 1) / stride;
+  const double size = stride * h_;
+  auto column = [&](int a, int b) -> const Intervals* {
+    if (a < 0 || b < 0 || a >= nx || b >= ny) return nullptr;
+    return &at(2, std::min(a * stride + stride / 2, n_[2][0] - 1), std::min(b * stride + stride / 2, n_[2][1] - 1));
+  };
+  // A quad of four corners (counter-clockwise seen from outside) as two triangles.
+  auto quad = [&](const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3) {
+    const int base = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), {p0, p1, p2, p3});
+    mesh.triangles.emplace_back(base, base + 1, base + 2);
+    mesh.triangles.emplace_back(base, base + 2, base + 3);
+  };
+  // Z rays run along Z with u = X, v = Y: column (a, b) covers [x0, x0 + size] × [y0, y0 + size].
+  const double x00 = low_.x(), y00 = low_.y();
+  for (int b = 0; b < ny; ++b)
+    for (int a = 0; a < nx; ++a) {
+      const Intervals& here = *column(a, b);
+      if (here.empty()) continue;
+      const double x0 = x00 + a * size, x1 = x0 + size, y0 = y00 + b * size, y1 = y0 + size;
+      for (const Interval& s : here) {
+        quad({x0, y0, s.to}, {x1, y0, s.to}, {x1, y1, s.to}, {x0, y1, s.to});
+        quad({x0, y0, s.from}, {x0, y1, s.from}, {x1, y1, s.from}, {x1, y0, s.from});
+      }
+      // Sides: where this column has material and its neighbour has none.
+      const int da[4] = {1, -1, 0, 0}, db[4] = {0, 0, 1, -1};
+      for (int side = 0; side < 4; ++side) {
+        Intervals open = here;
+        if (const Intervals* next = column(a + da[side], b + db[side]))
+          for (const Interval& s : *next) roughing::subtract(open, s.from, s.to);
+        for (const Interval& s : open) {
+          const double z0 = s.from, z1 = s.to;
+          if (side == 0) quad({x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1});
+          if (side == 1) quad({x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0});
+          if (side == 2) quad({x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0});
+          if (side == 3) quad({x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1});
+        }
+      }
+    }
+  return mesh;
+}
+
 double TriDexel::volume() const {
   double length = 0.0;
   for (const Intervals& ray : rays_[2])

@@ -44,6 +44,10 @@ public:
   const Intervals& at(int k, int i, int j) const { return rays_[k][static_cast<size_t>(j) * n_[k][0] + i]; }
   // Where ray (i, j) of direction k runs: its point at coordinate 0 along k.
   Eigen::Vector3d origin(int k, int i, int j) const;
+  // The material as a closed mesh of blocks: one column per `stride` × `stride` Z rays (the middle one's
+  // intervals), its top and bottom, and its sides where the neighbouring column has no material. Its volume
+  // is the columns' (Σ length × (stride·resolution)²).
+  geometry::TriangleMesh blocks(int stride) const;
   // The index range [first, last] of rays of direction k whose (u, v) lies in the box's projection.
   void rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const;
 

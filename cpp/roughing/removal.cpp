@@ -330,6 +330,7 @@ public:
     for (size_t i = 0; i < r.thickness.size(); ++i) layer += r.weight[i] * std::min(r.thickness[i], settings_.allowance);
     r.beyondAllowanceVolume = std::max(0.0, r.remainingVolume - layer);
     r.beyondAllowanceShare = r.volumeToRemove > 0.0 ? 100.0 * r.beyondAllowanceVolume / r.volumeToRemove : 0.0;
+    if (settings_.stockMeshStride > 0) r.stockMesh = material_.blocks(settings_.stockMeshStride);
     return r;
   }
 
@@ -466,6 +467,9 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
                      " mm is outside [0.1, 10000] mm (default 5)");
   if (!(settings.allowance >= 0.0 && settings.allowance <= 100.0))
     throw InputError("material removal: allowance " + number(settings.allowance) + " mm is outside [0, 100] mm (default 0.5)");
+  if (settings.stockMeshStride < 0 || settings.stockMeshStride > 100)
+    throw InputError("material removal: stock mesh stride " + std::to_string(settings.stockMeshStride) +
+                     " is outside [0, 100] rays (0: no mesh)");
   if (stock.IsNull()) throw InputError("material removal: no stock");
   for (const ToolMove& m : moves)
     if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))

@@ -32,6 +32,7 @@
 #pragma once
 
 #include "common/progress.hpp"
+#include "geometry/mesh.hpp"
 #include "roughing/sweep.hpp"
 
 #include <Eigen/Core>
@@ -46,6 +47,7 @@ struct RemovalSettings {
   double chipSection = 0.1;      // mm²: the least chip section of a position "in material"
   double stickOutSpacing = 5.0;  // mm of path between stick-out measures
   double allowance = 0.5;        // mm of stock meant to stay on the part: V_r is also given without it
+  int stockMeshStride = 0;       // > 0: the stock left as a mesh of blocks of stride × stride Z rays (0: none)
   int threads = 0;               // 0: all cores
   ProgressCallback progress;
 };
@@ -69,6 +71,8 @@ struct RemovalResult {
   std::vector<double> thickness, weight;             // weight: the sample's share of area, mm²
   double thicknessMean = 0.0, thicknessMax = 0.0, thicknessStd = 0.0;
   long rays = 0, positions = 0;
+  // The stock left (stockMeshStride > 0): closed, blocks of stride × resolution a side; for FreeCAD and STL.
+  geometry::TriangleMesh stockMesh;
 };
 
 // The moves swept through stock − part. InputError for a resolution outside [0.005, 50] mm or one that needs

@@ -156,19 +156,40 @@ def join_paths(paths, stock, clearance=None):
 
 
 def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_section=None, stick_out_spacing=None,
-                     threads=None, allowance=None, progress=None):
+                     threads=None, allowance=None, stock_mesh_stride=None, progress=None):
     """The moves of `paths` (a SweepResult, or a dict of (N, 3) `tip` and `axis` and (N,) `kind` arrays) swept
     through stock − part by the cutter `tool` (default the paper's Ø8 r1 torus) on a tri-dexel model
     `resolution` mm fine (default 0.2; cpp/roughing/removal.hpp): a RemovalResult with V_r (remaining_share,
     %; beyond_allowance_share without the `allowance` layer left on the part, default 0.5 mm), the path, feed and in-material lengths, the least stick-out for the holder, any gouge (volume, first
     move, where) and the stock left on the part (thickness at surface_points, its weighted mean, max and
-    standard deviation). ValueError for bad settings or moves; Cancelled when `progress` returns False."""
+    standard deviation) and, with `stock_mesh_stride` k > 0, the stock left as a closed mesh of blocks of k × k
+    rays (stock_mesh: points, triangles; save_stl writes it). ValueError for bad settings or moves; Cancelled
+    when `progress` returns False."""
     moves = paths.moves if hasattr(paths, "moves") else paths
     settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, chip_section=chip_section,
-                             stick_out_spacing=stick_out_spacing, threads=threads, allowance=allowance)
+                             stick_out_spacing=stick_out_spacing, threads=threads, allowance=allowance,
+                             stock_mesh_stride=stock_mesh_stride)
     tool = tool if tool is not None else _core.roughing.Cutter()
     return _core.roughing.simulate_removal(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
                                            as_brep(part), settings, progress)
+
+
+def save_stl(mesh, path, name="stock left"):
+    """A triangle mesh ((N, 3) points, (M, 3) triangles: a RemovalResult's stock_mesh) as a binary STL file."""
+    import numpy as np
+
+    points, triangles = (np.asarray(a) for a in mesh)
+    corners = points[triangles.reshape(-1, 3)].reshape(-1, 3, 3)
+    normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    lengths = np.linalg.norm(normals, axis=1)
+    normals = normals / np.where(lengths > 0, lengths, 1.0)[:, None]
+    records = np.zeros(len(corners), dtype=[("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
+    records["normal"], records["corners"] = normals, corners
+    with open(path, "wb") as stream:
+        stream.write(name.encode("ascii", "replace")[:80].ljust(80, b" "))
+        stream.write(np.uint32(len(records)).tobytes())
+        stream.write(records.tobytes())
+    return path
 
 
 def work_plane(paths, tolerance=1e-9):

@@ -129,6 +129,11 @@ class RoughingStudyExample(unittest.TestCase):
         # The continuous 5-axis strategies need the least stick-out (the paper's S4 and S5: 39 and 44 mm).
         stick = {r["strategy"]: float(r["stick_out_mm"]) for r in rows}
         self.assertLess(max(stick["S4"], stick["S5"]), min(stick["S1"], stick["S2"], stick["S3"]))
+        import Mesh
+        left = Mesh.Mesh(os.path.join(out, "roughing_study_S5_stock.stl"))
+        self.assertGreater(left.CountFacets, 1000)
+        self.assertGreater(left.Volume, 0.0)
+        self.assertTrue(os.path.getsize(os.path.join(out, "roughing_study.FCStd")) > 10000)
         for picture in ("roughing_study_stock.png", "roughing_study_bars.png"):
             with open(os.path.join(out, picture), "rb") as stream:
                 self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")

@@ -2,6 +2,7 @@
 face classes, the slicings and their tool axes, S3's setup direction, results as plain attributes and BREP that
 FreeCAD reads back as valid solids, progress and cancellation, and the issue's bad inputs."""
 import math
+import os
 import unittest
 
 import numpy as np
@@ -9,6 +10,7 @@ import Part
 
 import hsmplanner
 from hsmplanner import roughing
+from helpers import temporary_directory
 
 
 def shape_of(brep):
@@ -234,6 +236,17 @@ class Sweep(unittest.TestCase):
         self.assertAlmostEqual(float(np.average(result.thickness, weights=result.weight)), result.thickness_mean, places=9)
         with self.assertRaisesRegex(ValueError, "resolution 0 mm is outside \\[0.005, 50\\] mm"):
             roughing.simulate_removal(paths, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.0)
+        # The stock left as blocks (one ray in 2 × 2: the volume within 1 %), saved as STL and read back by
+        # FreeCAD's Mesh: closed and facing out (its signed volume is the stock's; the blocks' sides meet their
+        # neighbours' edges part-way, so it is not a manifold in FreeCAD's sense).
+        import Mesh
+        blocks = roughing.simulate_removal(paths, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.5,
+                                           stock_mesh_stride=2)
+        folder = temporary_directory(self)
+        stl = roughing.save_stl(blocks.stock_mesh, os.path.join(folder, "stock_left.stl"))
+        mesh = Mesh.Mesh(stl)
+        self.assertEqual(mesh.CountFacets, len(blocks.stock_mesh[1]))
+        self.assertAlmostEqual(mesh.Volume, blocks.remaining_volume, delta=0.01 * blocks.remaining_volume)
         # Two copies of the path joined keep one tool axis (a plane link), and remove nothing more.
         joined = roughing.join_paths([paths, paths], self.shapes.stock_brep)
         np.testing.assert_allclose(joined["axis"] @ paths.moves["axis"][0], 1.0, atol=1e-12)

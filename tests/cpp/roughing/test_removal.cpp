@@ -72,6 +72,21 @@ TEST(Removal, AFlatToolThroughABoxIsExact) {
   EXPECT_LT(r.thicknessMean, 9.2);
 }
 
+TEST(Removal, TheStockLeftAsAClosedMeshOfBlocks) {
+  const Slab s;
+  RemovalSettings settings;
+  settings.stockMeshStride = 2;
+  const RemovalResult r = simulateRemoval(s.slot, flat(10.0), s.stock, s.part, settings);
+  ASSERT_FALSE(r.stockMesh.triangles.empty());
+  // Closed and outward: its volume by the divergence theorem is the stock left, 14,000 mm³ (the slot's walls
+  // fall on the 0.4 mm blocks' edges).
+  double volume = 0.0;
+  for (const Eigen::Vector3i& t : r.stockMesh.triangles)
+    volume += r.stockMesh.vertices[t[0]].dot(r.stockMesh.vertices[t[1]].cross(r.stockMesh.vertices[t[2]])) / 6.0;
+  EXPECT_NEAR(volume, r.remainingVolume, 1e-6 * r.remainingVolume);
+  EXPECT_NEAR(volume, 14000.0, 1e-6);
+}
+
 TEST(Removal, AnEmptyProgramLeavesEverythingAndHalfAProgramMore) {
   const Slab s;
   EXPECT_NEAR(simulateRemoval({}, flat(10.0), s.stock, s.part).remainingShare, 100.0, 1e-12);
