@@ -1,0 +1,112 @@
+"""The five-strategy roughing study (the roughing paper's Table 1 and what it could not give), as functions the
+example, the FreeCAD panel and scripts share: each strategy's sweeps of every region joined into one program,
+simulated by the material-removal model and, posted for a 5-axis machine, by the feed-rate simulator.
+
+Needs FreeCAD's Path module (the posts read Path commands); no document object is created here."""
+import os
+import tempfile
+import time
+
+from hsmplanner import feedsim, roughing
+
+from .posts import siemens840d_post
+from .roughing_commands import ProgramSource, sweep_commands
+
+# The paper's Table 1 (impeller, Ø8 r1 torus): V_r %, path mm, in material %, stick-out mm.
+PAPER = {"S1": (43.1, 3332, 44.1, 57), "S2": (14.1, 2987, 54.4, 49), "S3": (16.0, 3863, 45.6, 47),
+         "S4": (19.4, 2758, 56.2, 39), "S5": (9.3, 3343, 66.5, 44)}
+COLUMNS = ["strategy", "paper_vr", "vr", "vr_beyond_allowance", "paper_path_mm", "path_mm", "feed_mm",
+           "paper_in_material", "in_material", "paper_stick_out_mm", "stick_out_mm", "gouge_mm3", "time_s",
+           "length_over_feed_s", "held_by", "stock_mean_mm", "stock_max_mm", "stock_std_mm", "resolution_mm",
+           "seconds", "note"]
+DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
+DEFAULT_FEED_MM_MIN = 2000.0
+
+
+class StrategyResult:
+    """One strategy of a study: its table row (COLUMNS), the stock-left map (points, thickness, weight) and the
+    stock left as a mesh (points, triangles; empty without a stride)."""
+
+    def __init__(self, row, removal=None):
+        self.row = row
+        self.removal = removal
+
+    @property
+    def stock_map(self):
+        r = self.removal
+        return (self.row["strategy"], r.surface_points, r.thickness, r.weight) if r is not None else None
+
+
+def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.2, machine=DEFAULT_MACHINE,
+                   feed_mm_min=DEFAULT_FEED_MM_MIN, program=None, stock_mesh_stride=0, progress=None):
+    """The strategy `name` on every region of `volume` (a VolumeToRemove of stock − part): a StrategyResult.
+    A region without the strategy's reference face (S2 without a cylinder) makes the row say why, with no
+    figures. `program`: where the posted 840D program is written (a temporary file otherwise).
+    `progress(done)`, done in [0, 1], returns False to cancel (hsmplanner.Cancelled)."""
+    start = time.perf_counter()
+    row = dict.fromkeys(COLUMNS, "")
+    paper = PAPER.get(name, ("", "", "", ""))
+    row.update(strategy=name, paper_vr=paper[0], paper_path_mm=paper[1], paper_in_material=paper[2],
+               paper_stick_out_mm=paper[3], resolution_mm=resolution)
+    part_of = lambda a, b: (lambda done: progress(a + (b - a) * done)) if progress else None
+    regions = []
+    try:
+        for k, solid in enumerate(volume.solids):
+            share = 0.4 * k / len(volume.solids), 0.4 * (k + 1) / len(volume.solids)
+            partition = roughing.partition(solid, part_brep, name, progress=part_of(*share))
+            regions.append(roughing.sweep(partition, solid, part_brep, stock_brep, tool=tool))
+    except ValueError as error:  # no face for this strategy: said in the row, the study goes on
+        row["note"] = str(error)
+        return StrategyResult(row)
+    moves = roughing.join_paths(regions, stock_brep)
+    removal = roughing.simulate_removal(moves, stock_brep, part_brep, tool=tool, resolution=resolution,
+                                        stock_mesh_stride=stock_mesh_stride, progress=part_of(0.4, 0.95))
+    model = feedsim.load_machine(machine)
+    temporary = program is None
+    if temporary:
+        handle, program = tempfile.mkstemp(suffix=".mpf")
+        os.close(handle)
+    try:
+        siemens840d_post.export([ProgramSource("%s %s" % (name, roughing.STRATEGY_LABELS[name]),
+                                               sweep_commands(moves, model, feed_mm_min))], program,
+                                "--machine=%s" % machine)
+        simulated = feedsim.simulate(program, model)
+    finally:
+        if temporary:
+            os.remove(program)
+    shares = feedsim.speed_limit_shares(simulated.summary)
+    row.update(vr=round(removal.remaining_share, 1), vr_beyond_allowance=round(removal.beyond_allowance_share, 1),
+               path_mm=round(removal.path_length), feed_mm=round(removal.feed_length),
+               in_material=round(removal.in_material_share, 1), stick_out_mm=round(removal.stick_out, 1),
+               gouge_mm3=round(removal.gouge_volume, 2), time_s=round(simulated.summary.total_time, 1),
+               length_over_feed_s=round(simulated.summary.naive_time, 1),
+               held_by=", ".join("%s %.0f %%" % (k, 100 * v) for k, v in list(shares.items())[:3]),
+               stock_mean_mm=round(removal.thickness_mean, 2), stock_max_mm=round(removal.thickness_max, 2),
+               stock_std_mm=round(removal.thickness_std, 2), seconds=round(time.perf_counter() - start, 1),
+               note="; ".join(sorted({w for r in regions for w in r.warnings}))[:300])
+    if progress:
+        progress(1.0)
+    return StrategyResult(row, removal)
+
+
+def study(part_brep, stock_brep, strategies=("S1", "S2", "S3", "S4", "S5"), progress=None, **settings):
+    """Every strategy of `strategies` (study_strategy's settings), in order: a list of StrategyResult."""
+    volume = roughing.volume_to_remove(stock_brep, part_brep)
+    results = []
+    for k, name in enumerate(strategies):
+        low, high = k / len(strategies), (k + 1) / len(strategies)
+        share = (lambda done, low=low, high=high: progress(low + (high - low) * done)) if progress else None
+        results.append(study_strategy(name, part_brep, stock_brep, volume, progress=share, **settings))
+    return results
+
+
+def add_stock_mesh(document, name, mesh, label=None):
+    """The stock left (a RemovalResult's stock_mesh: points, triangles) as a Mesh feature of `document`."""
+    import Mesh
+    import numpy as np
+
+    points, triangles = (np.asarray(a) for a in mesh)
+    feature = document.addObject("Mesh::Feature", name)
+    feature.Label = label or name
+    feature.Mesh = Mesh.Mesh(points[triangles.reshape(-1, 3)].reshape(-1, 3, 3).tolist())
+    return feature
