@@ -356,4 +356,45 @@ def volume_roughing_operation_in_the_job(run):
     run.screenshot("volume_roughing_path")
 
 
+
+@run.step
+def roughing_study_panel_runs_and_applies(run):
+    """The Roughing study command on the slot's Roughing volume: S1 and S3 at 1 mm (quick), the table's rows
+    with their figures, the stock maps drawn, Apply S3 adds a Volume roughing operation that computes."""
+    from hsmplanner.gui import roughing_study_panel
+
+    document = FreeCAD.ActiveDocument
+    slot = document.getObject("RoughingVolume")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(slot)
+    Gui.runCommand("HSM_RoughingStudy")
+    run.wait_until(run.task_dialog_open, 20.0, "the Roughing study panel")
+    study = roughing_study_panel.RoughingStudyPanel.active
+    run.check("the panel opens on the selected Roughing volume", study is not None and study.volume() == slot)
+    if study is None:
+        return
+    for name, box in study.form.strategies.items():
+        box.setChecked(name in ("S1", "S3"))
+    study.form.resolution.setValue(1.0)
+    study.run()
+    table = study.form.table
+    rows = {table.verticalHeaderItem(r).text(): r for r in range(table.rowCount())}
+    vr = {name: float(table.item(r, 0).data(0)) for name, r in rows.items()}
+    run.notes["roughing study"] = {"rows": list(rows), "V_r %": vr, "status": study.form.status.text()}
+    run.check("the table has S1 and S3 with their V_r", sorted(rows) == ["S1", "S3"] and all(0 < v < 100 for v in vr.values()),
+              str(run.notes["roughing study"]))
+    run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3", 100) < vr.get("S1", 0), str(vr))
+    run.check("the stock maps are drawn", study.plots.window_button.isEnabled())
+    run.screenshot("roughing_study_panel")
+    table.selectRow(rows.get("S3", 0))
+    op = study.apply()
+    run.check("Apply adds a Volume roughing operation with S3", op is not None and slot.Strategy.startswith("S3"),
+              study.form.status.text())
+    if op is not None:
+        run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the applied operation computed")
+        run.check("the applied operation has passes", op.Passes > 0)
+    study.reject()
+    run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
+
+
 run.start()

@@ -6,7 +6,8 @@ from hsmplanner.resources import icon
 
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
                  "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "Separator",
-                 "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume", "HSM_VolumeRoughing"]
+                 "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume", "HSM_VolumeRoughing",
+                 "HSM_RoughingStudy"]
 
 
 class CommandMasterBottomFeature:
@@ -257,6 +258,9 @@ def register_commands():
     FreeCADGui.addCommand("HSM_SlantedSlotBlock", CommandSlantedSlotBlock())
     FreeCADGui.addCommand("HSM_Impeller", CommandImpeller())
     FreeCADGui.addCommand("HSM_RoughingVolume", CommandRoughingVolume())
+    from hsmplanner.gui.roughing_study_panel import CommandRoughingStudy
+
+    FreeCADGui.addCommand("HSM_RoughingStudy", CommandRoughingStudy())
     from hsmplanner.gui import finishing_ops_gui
 
     finishing_ops_gui.register_commands()

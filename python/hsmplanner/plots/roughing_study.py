@@ -7,16 +7,18 @@ import numpy as np
 from .common import new_figure
 
 
-def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
-    """One 3D panel per strategy: [(label, points (N, 3), thickness (N,), weight (N,)), …], the points of the
-    part's surface coloured by the stock left on them (one scale for all panels, mm), with a shared colour bar;
-    the titles give the area-weighted mean (the weights: each point's share of the surface)."""
+def draw_stock_maps(figure, maps, view=(28, -60), top_mm=None, columns=3, bar=True):
+    """One 3D panel per strategy on `figure`: [(label, points (N, 3), thickness (N,), weight (N,)), …], the
+    points of the part's surface coloured by the stock left on them (one scale for all panels, mm), with a
+    shared colour bar; the titles give the area-weighted mean (the weights: each point's share of the surface)."""
     import matplotlib.cm as cm
     from matplotlib.colors import Normalize
 
-    columns = min(3, len(maps))
+    figure.clear()
+    if not maps:
+        return False
+    columns = min(columns, len(maps))
     rows = (len(maps) + columns - 1) // columns
-    figure = new_figure(4.2 * columns + 0.9, 4.0 * rows)
     top = top_mm or max(float(np.percentile(t, 99)) if len(t) else 0.0 for _, _, t, _ in maps) or 1.0
     norm, colours = Normalize(0.0, top), cm.get_cmap("viridis")
     for k, (label, points, thickness, weight) in enumerate(maps):
@@ -25,14 +27,25 @@ def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
         step = max(1, len(points) // 20000)  # a readable cloud: at most 20,000 points a panel
         axes.scatter(*points[::step].T, c=colours(norm(thickness[::step])), s=2.0, linewidths=0)
         axes.view_init(*view)
-        axes.set_title("%s: mean %.2f, max %.2f mm" % (label, float(np.average(thickness, weights=weight))
-                                                      if len(thickness) else 0.0,
-                                                      float(thickness.max()) if len(thickness) else 0.0), fontsize=8)
+        mean = float(np.average(thickness, weights=weight)) if len(thickness) else 0.0
+        axes.set_title("%s: mean %.2f, max %.2f mm" % (label, mean, float(thickness.max()) if len(thickness) else 0.0),
+                       fontsize=8)
         axes.tick_params(labelsize=6)
-    figure.subplots_adjust(left=0.0, right=0.9, top=0.9, bottom=0.03, wspace=0.02, hspace=0.1)
-    mappable = cm.ScalarMappable(norm=norm, cmap=colours)
-    bar = figure.colorbar(mappable, cax=figure.add_axes([0.92, 0.2, 0.015, 0.6]))
-    bar.set_label("stock left on the part, mm (%g and more at the top of the scale)" % round(top, 2), fontsize=8)
+    if bar:
+        figure.subplots_adjust(left=0.0, right=0.9, top=0.9, bottom=0.03, wspace=0.02, hspace=0.1)
+        colour_bar = figure.colorbar(cm.ScalarMappable(norm=norm, cmap=colours),
+                                     cax=figure.add_axes([0.92, 0.2, 0.015, 0.6]))
+        colour_bar.set_label("stock left on the part, mm (%g and more at the top of the scale)" % round(top, 2),
+                             fontsize=8)
+    return True
+
+
+def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
+    """draw_stock_maps in a figure of its own, saved to `path`."""
+    columns = min(3, len(maps))
+    rows = (len(maps) + columns - 1) // columns
+    figure = new_figure(4.2 * columns + 0.9, 4.0 * rows)
+    draw_stock_maps(figure, maps, view, top_mm)
     figure.suptitle(title, fontsize=9)
     figure.savefig(path)
     return path

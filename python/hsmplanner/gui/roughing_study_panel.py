@@ -1,0 +1,208 @@
+"""The Roughing study panel: pick a Roughing volume, run the five strategies on it (progress, Cancel), see the
+table and the stock each leaves side by side, and apply the chosen one as a Volume roughing operation in the
+Job (hsmplanner.app.roughing_study does the work; this module only shows it)."""
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+import hsmplanner
+from hsmplanner.app import roughing_object, roughing_study
+from hsmplanner.app.progress import freecad_progress
+
+from .task_panel import PanelPlots, TaskPanel, narrow_combo, narrow_form_layout
+
+STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
+# The table's columns: (heading, row key, tool tip).
+TABLE = [("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
+         ("no allow. %", "vr_beyond_allowance", "V_r without the allowance layer left on the part on purpose"),
+         ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
+         ("in mat. %", "in_material", "share of the feed path that cuts a chip"),
+         ("stick-out", "stick_out_mm", "least stick-out, mm, for the holder to clear part and stock"),
+         ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
+         ("stock mean", "stock_mean_mm", "stock left on the part, area-weighted mean, mm"),
+         ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
+         ("held by", "held_by", "what held the speed, share of the time")]
+
+
+def roughing_volumes(document):
+    return [o for o in document.Objects if hasattr(o, "Proxy") and type(o.Proxy).__name__ == "RoughingVolume"]
+
+
+def job_of(document):
+    found = roughing_object.jobs(document)
+    return found[0] if found else None
+
+
+class RoughingStudyPanel(TaskPanel):
+    def __init__(self, volume=None):
+        self.results = []
+        self.form = self._build_form(volume)
+        self.opened()
+
+    def _build_form(self, volume):
+        form = QtWidgets.QWidget()
+        form.setWindowTitle("Roughing study")
+        layout = QtWidgets.QVBoxLayout(form)
+        settings = narrow_form_layout()
+        layout.addLayout(settings)
+        document = FreeCAD.ActiveDocument
+        self.volumes = roughing_volumes(document)
+        form.volume = narrow_combo([v.Label for v in self.volumes], volume.Label if volume is not None else None)
+        form.volume.setToolTip("the Roughing volume whose part and stock the strategies run on")
+        settings.addRow("Roughing volume", form.volume)
+        boxes = QtWidgets.QGridLayout()  # three a row: the Combo View is narrow
+        form.strategies = {}
+        for k, name in enumerate(STRATEGIES):
+            box = QtWidgets.QCheckBox(name)
+            box.setChecked(True)
+            box.setToolTip(hsmplanner.roughing.STRATEGY_LABELS[name])
+            boxes.addWidget(box, k // 3, k % 3)
+            form.strategies[name] = box
+        settings.addRow("Strategies", boxes)
+        form.resolution = QtWidgets.QDoubleSpinBox()
+        form.resolution.setRange(0.05, 5.0)
+        form.resolution.setDecimals(2)
+        form.resolution.setSingleStep(0.1)
+        form.resolution.setValue(0.2)
+        form.resolution.setSuffix(" mm")
+        form.resolution.setToolTip("spacing of the material-removal model's rays: every figure is at it")
+        settings.addRow("Resolution", form.resolution)
+        form.run = QtWidgets.QPushButton("Run the study")
+        form.run.setToolTip("sweep, join, simulate the removal and the machine for each strategy (Esc cancels)")
+        form.run.clicked.connect(self.run)
+        layout.addWidget(form.run)
+        form.status = QtWidgets.QLabel()
+        form.status.setWordWrap(True)
+        layout.addWidget(form.status)
+        form.table = QtWidgets.QTableWidget(0, len(TABLE))
+        form.table.setHorizontalHeaderLabels([heading for heading, _, _ in TABLE])
+        for column, (_, _, tip) in enumerate(TABLE):
+            form.table.horizontalHeaderItem(column).setToolTip(tip)
+        form.table.setSelectionBehavior(QtWidgets.QAbstractItemView.SelectRows)
+        form.table.setSelectionMode(QtWidgets.QAbstractItemView.SingleSelection)
+        form.table.setEditTriggers(QtWidgets.QAbstractItemView.NoEditTriggers)
+        form.table.setSortingEnabled(True)
+        form.table.setMinimumHeight(150)
+        layout.addWidget(form.table)
+        form.apply = QtWidgets.QPushButton("Apply the selected strategy")
+        form.apply.setToolTip("set the Roughing volume to the selected row's strategy and add a Volume roughing "
+                              "operation for it to the Job")
+        form.apply.setEnabled(False)
+        form.apply.clicked.connect(self.apply)
+        form.table.itemSelectionChanged.connect(lambda: form.apply.setEnabled(bool(self.selected())))
+        layout.addWidget(form.apply)
+        self.form = form
+        self.plots = PanelPlots(layout, 260, self.draw, "Stock left by each strategy",
+                                "the stock each strategy leaves on the part, mm (one colour scale)")
+        return form
+
+    def volume(self):
+        index = self.form.volume.currentIndex()
+        return self.volumes[index] if 0 <= index < len(self.volumes) else None
+
+    def selected(self):
+        rows = self.form.table.selectionModel().selectedRows() if self.form.table.selectionModel() else []
+        return self.form.table.item(rows[0].row(), 0).data(QtCore.Qt.UserRole) if rows else None
+
+    def run(self):
+        """The checked strategies one after the other; Cancel stops the one running and keeps the others."""
+        volume = self.volume()
+        names = [n for n in STRATEGIES if self.form.strategies[n].isChecked()]
+        if volume is None or not names:
+            self.form.status.setText("Choose a Roughing volume and at least one strategy.")
+            return
+        try:
+            removal_volume, part_brep, stock_brep, _ = volume.Proxy.computed(volume)
+        except (ValueError, RuntimeError) as error:
+            self.form.status.setText("%s: %s" % (volume.Label, error))
+            return
+        self.results = []
+        with freecad_progress("Roughing study of %s" % volume.Label) as progress:
+            for k, name in enumerate(names):
+                share = (lambda done, k=k: progress((k + done) / len(names))) if progress else None
+                try:
+                    result = roughing_study.study_strategy(name, part_brep, stock_brep, removal_volume,
+                                                           resolution=self.form.resolution.value(), progress=share)
+                except hsmplanner.Cancelled:
+                    self.form.status.setText("Cancelled during %s: the strategies before it are kept." % name)
+                    break
+                self.results.append(result)
+            else:
+                self.form.status.setText("%d strategies at %.2f mm." % (len(self.results), self.form.resolution.value()))
+        self.fill_table()
+        self.plots.redraw()
+
+    def fill_table(self):
+        table = self.form.table
+        table.setSortingEnabled(False)
+        table.setRowCount(len(self.results))
+        table.setVerticalHeaderLabels([r.row["strategy"] for r in self.results])
+        for row, result in enumerate(self.results):
+            values = result.row
+            for column, (_, key, _) in enumerate(TABLE):
+                item = QtWidgets.QTableWidgetItem()
+                value = values.get(key, "")
+                if isinstance(value, (int, float)):
+                    item.setData(QtCore.Qt.DisplayRole, value)  # sorts as a number
+                else:
+                    item.setText(str(value) if value != "" else (values.get("note") or "")[:60])
+                item.setToolTip("paper: V_r %s %%, path %s mm, in material %s %%, stick-out %s mm; length/feed %s s"
+                                % (values["paper_vr"], values["paper_path_mm"], values["paper_in_material"],
+                                   values["paper_stick_out_mm"], values.get("length_over_feed_s", "")))
+                if column == 0:
+                    item.setData(QtCore.Qt.UserRole, values["strategy"])
+                table.setItem(row, column, item)
+        table.resizeColumnsToContents()
+        table.setSortingEnabled(True)
+
+    def draw(self, figure, wide):
+        from hsmplanner.plots.roughing_study import draw_stock_maps
+
+        maps = [r.stock_map for r in self.results if r.stock_map is not None]
+        return draw_stock_maps(figure, maps, columns=3 if wide else 2, bar=wide)
+
+    def apply(self):
+        """The selected strategy on the Roughing volume, and a Volume roughing operation in the Job."""
+        from hsmplanner.app import roughing_op
+        from hsmplanner.gui.finishing_ops_gui import COMMANDS
+
+        name, volume = self.selected(), self.volume()
+        document = FreeCAD.ActiveDocument
+        job = job_of(document)
+        if name is None or volume is None:
+            return None
+        if job is None:
+            self.form.status.setText("No Job in this document: make one (Path → Job) to add the operation to.")
+            return None
+        document.openTransaction("Apply roughing strategy %s" % name)
+        volume.Strategy = roughing_object.strategy_label(name)
+        resources = COMMANDS["HSM_VolumeRoughing"]
+        if not any(getattr(t, "Tool", None) is not None for t in job.Tools.Group):
+            roughing_op.torus_controller(job)  # the paper's Ø8 r1 torus when the Job has no tool yet
+        op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
+        op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
+        op.ViewObject.Proxy.OpIcon = resources.icon
+        op.Volume = volume
+        document.recompute()
+        document.commitTransaction()
+        self.form.status.setText("%s applied: %s in %s." % (name, op.Label, job.Label))
+        return op
+
+
+class CommandRoughingStudy:
+    def GetResources(self):
+        from hsmplanner.resources import icon
+
+        return {"Pixmap": icon("RoughingStudy"), "MenuText": "Roughing study",
+                "ToolTip": "Run the five strategies of 5-axis roughing on a Roughing volume: the volume each leaves, "
+                           "its path, stick-out and simulated machining time side by side; apply the chosen one"}
+
+    def IsActive(self):
+        document = FreeCAD.ActiveDocument
+        return document is not None and bool(roughing_volumes(document))
+
+    def Activated(self):
+        selected = [o for o in FreeCADGui.Selection.getSelection() if o in roughing_volumes(FreeCAD.ActiveDocument)]
+        panel = RoughingStudyPanel(selected[0] if selected else None)
+        FreeCADGui.Control.showDialog(panel)
+        return panel
