@@ -79,6 +79,7 @@ bench: build
 	$(BUILD_DIR)/bin/bench_dropcutter
 	$(BUILD_DIR)/bin/bench_direction
 	$(BUILD_DIR)/bin/bench_roughing
+	test ! -x $(BUILD_DIR)/bin/bench_removal_models || $(BUILD_DIR)/bin/bench_removal_models
 	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
 
 clean:
