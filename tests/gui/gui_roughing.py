@@ -387,6 +387,13 @@ def roughing_study_panel_runs_and_applies(run):
     run.check("the stock maps are drawn", study.plots.window_button.isEnabled())
     run.screenshot("roughing_study_panel")
     table.selectRow(rows.get("S3", 0))
+    node = getattr(study, "map_node", None)
+    cloud = node.getChild(3) if node is not None else None
+    count = cloud.vertexProperty.getValue().vertex.getNum() if cloud is not None else 0
+    run.notes["roughing study"]["map points"] = count
+    run.check("the selected strategy's stock map is drawn on the part", count > 100, "%d points" % count)
+    Gui.SendMsgToActiveView("ViewFit")
+    run.screenshot("roughing_study_stock_map")
     op = study.apply()
     run.check("Apply adds a Volume roughing operation with S3", op is not None and slot.Strategy.startswith("S3"),
               study.form.status.text())

@@ -73,19 +73,20 @@ def map_node(blocks, color_by):
     return root
 
 
-def legend_node(low, high, unit, title="mean reached feed", digits=0):
-    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates."""
+def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=feed_colors):
+    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates;
+    `colors(shares)` gives the RGB rows of shares of the scale in [0, 1]."""
     root = screen_root()
     x0, x1, y0, y1 = 0.86, 0.92, -0.8, 0.4  # at the right edge, below the navigation cube; labels to the left
-    corners, colors = [], []
+    corners, corners_colors = [], []
     for k in range(LEGEND_STEPS):
         a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS
         corners.append([(x0, a), (x1, a), (x1, b), (x0, b)])
-        colors.append(feed_colors([(k + 0.5) / LEGEND_STEPS])[0])
+        corners_colors.append(colors([(k + 0.5) / LEGEND_STEPS])[0])
     ticks = [k / LEGEND_TICKS for k in range(LEGEND_TICKS + 1)]  # the scale's numbers, every quarter
     labels = [("%g %s" % (round(low + f * (high - low), digits), unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02)
               for f in ticks] + [(title, x1, y1 + 0.06)]
     add_backing(root, labels, x1, y0 - 0.03, y1 + 0.09)
-    root.addChild(colored_quads(corners, colors))
+    root.addChild(colored_quads(corners, corners_colors))
     add_labels(root, labels)
     return root

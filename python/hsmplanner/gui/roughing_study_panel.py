@@ -89,12 +89,39 @@ class RoughingStudyPanel(TaskPanel):
                               "operation for it to the Job")
         form.apply.setEnabled(False)
         form.apply.clicked.connect(self.apply)
-        form.table.itemSelectionChanged.connect(lambda: form.apply.setEnabled(bool(self.selected())))
+        form.table.itemSelectionChanged.connect(self.selection_changed)
         layout.addWidget(form.apply)
         self.form = form
         self.plots = PanelPlots(layout, 260, self.draw, "Stock left by each strategy",
                                 "the stock each strategy leaves on the part, mm (one colour scale)")
         return form
+
+    def selection_changed(self):
+        name = self.selected()
+        self.form.apply.setEnabled(bool(name))
+        self.show_map(name)
+
+    def show_map(self, name):
+        """The selected strategy's stock map on the part in the 3D view (one at a time)."""
+        from .stock_map_view import stock_map_node
+
+        view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
+        graph = view.getSceneGraph() if view is not None and hasattr(view, "getSceneGraph") else None
+        if graph is None:
+            return
+        if getattr(self, "map_node", None) is not None:
+            graph.removeChild(self.map_node)
+            self.map_node = None
+        result = next((r for r in self.results if r.row["strategy"] == name and r.removal is not None), None)
+        if result is not None:
+            _, points, thickness, _ = result.stock_map
+            self.map_node = stock_map_node(points, thickness, title="%s: stock left on the part" % name)
+            graph.addChild(self.map_node)
+
+    def close_edit(self):
+        self.show_map(None)
+        self.plots.close()
+        super().close_edit()
 
     def volume(self):
         index = self.form.volume.currentIndex()
