@@ -460,6 +460,9 @@ private:
 RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
                               const TopoDS_Shape& part, const RemovalSettings& settings) {
   checkCutter(cutter);
+  if (!(settings.resolution >= 0.005 && settings.resolution <= 50.0))  // before anything is meshed at it
+    throw InputError("material-removal resolution " + number(settings.resolution) +
+                     " mm is outside [0.005, 50] mm (default 0.2)");
   if (!(settings.chipSection > 0.0 && settings.chipSection < 1e3))
     throw InputError("material removal: chip section " + number(settings.chipSection) + " mm² must be in ]0, 1000[ (default 0.1)");
   if (!(settings.stickOutSpacing >= 0.1 && settings.stickOutSpacing <= 1e4))

@@ -331,7 +331,32 @@ CASES = [
            "'/resources/machines/mikron-ucp710-ac-840d.json')); m['rotary_axes'].append(dict(m['rotary_axes'][0], name='B')); del m['kinematics']\n"
            "h.simulate('G1 X1 F100\\n', m)", "ValueError", "a machine has at most two"),
     holds("a 5-axis block turning C 1e9 degrees is bounded work", "result = h.simulate('TRAORI\\nG1 X1 C999999999 F100\\n', "
-          "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),
+          "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),    # --- material removal and joined regions (issue 17): absurd settings, bounded work ----------------------
+    raises("removal resolution NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=float('nan'))",
+           "ValueError", "resolution nan mm is outside [0.005, 50] mm"),
+    raises("removal resolution 1e-6 (endless rays)", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=1e-6)",
+           "ValueError", "is outside [0.005, 50] mm"),
+    raises("removal resolution 0.006 (too many rays)", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=0.006)",
+           "ValueError", "use a resolution of at least"),
+    raises("removal chip section 0", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, chip_section=0.0)",
+           "ValueError", "chip section 0"),
+    raises("removal stick-out spacing NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, stick_out_spacing=float('nan'))",
+           "ValueError", "stick-out spacing nan mm"),
+    raises("removal allowance -1", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, allowance=-1.0)",
+           "ValueError", "allowance -1 mm"),
+    raises("removal stock mesh stride 1000", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, stock_mesh_stride=1000)",
+           "ValueError", "stock mesh stride 1000"),
+    raises("removal of a NaN tip", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nm['tip'][1, 0] = float('nan')\nr.simulate_removal(m, w.stock_brep, w.part_brep)",
+           "ValueError", "its tip must be finite"),
+    raises("removal of a move 1e9 mm long", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nm['tip'][1, 0] = 1e9\nr.simulate_removal(m, w.stock_brep, w.part_brep)",
+           "ValueError", "more than 10000000 tool positions"),
+    raises("removal with kinds of the wrong length", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nm['kind'] = np.array([0])\nr.simulate_removal(m, w.stock_brep, w.part_brep)",
+           "ValueError", "kinds must be an (N,) array"),
+    raises("removal with an empty stock", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, '', w.part_brep)", "ValueError", "BREP"),
+    holds("removal of no moves leaves everything", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nresult = r.simulate_removal({'tip': np.zeros((0, 3)), 'axis': np.zeros((0, 3)), 'kind': np.zeros(0, dtype=int)}, w.stock_brep, w.part_brep, resolution=1.0).remaining_share",
+          "abs(result - 100.0) < 1e-9"),
+    raises("join with a NaN clearance", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.join_paths([m, m], w.stock_brep, clearance=float('nan'))",
+           "ValueError", "clearance nan mm is outside [0, 1000] mm"),
 ]
 
 
