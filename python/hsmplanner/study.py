@@ -1,0 +1,212 @@
+"""Automatic strategy study of finishing (issue 18, first part): a grid of variants — parallel planes at an
+angle, guide curves (net mode, K, P, median or not), the 4-step method — at feed set points on machine models,
+each generated, simulated on its machine and scored; the rows ranked by simulated time, by the share of time
+below half the feed, or as a Pareto front of both.
+
+    rows = study(part, "Face4", b1, b2, variants(planes_deg=range(0, 180, 15), k=(0.25, 0.5, 0.75),
+                                               p=(5, 10, 20), feeds_mm_min=(4000,)), workers=2)
+    for row in rank(rows, "time")[:5]: print(row["name"], row["time_s"])
+
+Works without FreeCAD (shapes as BREP text or Part shapes). Variants are independent: they run in worker
+processes (`workers`, default all cores) and every finished row is kept when another fails or the study is
+cancelled (its row says so). Results are cached by their inputs in `cache_dir` (a variant whose inputs did not
+change is read back, not recomputed). Bad grids are refused by name before anything runs.
+"""
+import concurrent.futures
+import csv
+import hashlib
+import json
+import multiprocessing
+import os
+
+import numpy as np
+
+from . import _core, curvenet, evaluation, feedsim, toolpaths
+from .geometry import as_brep
+
+GUIDE_MODES = {False: "b1_to_b2", True: "boundaries_to_median"}  # median or not
+FEED_CLASS_NAMES = ["below_20", "20_40", "40_60", "60_80", "above_80"]  # the paper's five, % of F
+MAX_VARIANTS = 10000
+
+
+def _check(condition, message):
+    if not condition:
+        raise ValueError(message)
+
+
+def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, feeds_mm_min=(4000.0,),
+             machines=(feedsim.DEFAULT_MACHINE,)):
+    """The grid as a list of variant dicts: every plane angle, every guide net (K × P × median or not), the
+    4-step method if asked, each at every feed on every machine. ValueError names a bad range: K outside
+    ]0, 1[, P <= 0, a feed <= 0, an unknown machine, an empty grid, more than 10,000 variants."""
+    planes_deg, k, p, median = list(planes_deg), list(k), list(p), list(median)
+    feeds_mm_min, machines = list(feeds_mm_min), list(machines)
+    for value in k:
+        _check(0.0 < float(value) < 1.0, "K = %r is outside ]0, 1[: the guide curve lies between the boundaries "
+                                         "(the paper uses 0.25 to 0.75)" % (value,))
+    for value in p:
+        _check(float(value) > 0.0, "P = %r mm must be positive: the step of the net's planes" % (value,))
+    _check(bool(k) == bool(p), "guide curves need both K (%s) and P (%s): give both ranges or neither" % (k, p))
+    for value in feeds_mm_min:
+        _check(float(value) > 0.0, "feed %r mm/min must be positive" % (value,))
+    known = set(feedsim.machine_names())
+    for name in machines:
+        _check(isinstance(name, str) and name in known,
+               "machine %r is unknown: use one of %s" % (name, ", ".join(sorted(known))))
+    shapes = [dict(strategy="planes", angle_deg=float(a)) for a in planes_deg]
+    shapes += [dict(strategy="guide", mode=GUIDE_MODES[bool(m)], k=float(kk), p=float(pp), median=bool(m))
+               for kk in k for pp in p for m in median]
+    if four_step:
+        shapes.append(dict(strategy="4-step"))
+    grid = [dict(shape, feed_mm_min=float(f), machine=name) for shape in shapes for f in feeds_mm_min for name in machines]
+    _check(bool(grid), "the grid is empty: give plane angles, K and P ranges or four_step=True, and feeds and machines")
+    _check(len(grid) <= MAX_VARIANTS, "%d variants (more than %d): narrow the ranges" % (len(grid), MAX_VARIANTS))
+    for variant in grid:
+        variant["name"] = variant_name(variant)
+    return grid
+
+
+def variant_name(v):
+    if v["strategy"] == "planes":
+        head = "planes %g°" % v["angle_deg"]
+    elif v["strategy"] == "guide":
+        head = "guide %s K%g P%g" % ("with median" if v["median"] else "B1→B2", v["k"], v["p"])
+    else:
+        head = "4-step"
+    return "%s F%g %s" % (head, v["feed_mm_min"], v["machine"])
+
+
+def _shape(value):
+    import Part  # noqa: F401 (only to read BREP text back into a shape for the curve API)
+
+    shape = Part.Shape()
+    shape.importBrepFromString(value)
+    return shape
+
+
+def run_variant(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
+    """One variant generated, simulated and scored: its row (the variant's fields, then the scores)."""
+    settings = dict(finishing or {})
+    row = dict(variant)
+    if variant["strategy"] == "planes":
+        moves, stats = toolpaths.parallel_finishing(part_brep, face, variant["angle_deg"], **settings)
+    else:
+        part = _shape(part_brep)
+        b1, b2 = _shape(b1_brep), _shape(b2_brep)
+        bottom = part.getElement(face)
+        if variant["strategy"] == "guide":
+            net = curvenet.curve_net(b1, b2, variant["k"], step=variant["p"], mode=variant["mode"], face=bottom)
+        else:
+            net, _ = curvenet.guidance_curves(b1, b2, face=bottom)
+        moves, stats = toolpaths.guide_finishing(part_brep, face, net, **settings)
+    result = feedsim.simulate_moves(moves, variant["feed_mm_min"], machine=variant["machine"], blocks=True)
+    scores = evaluation.evaluate(result)
+    total = sum(scores["feed_classes_time"]) or 1.0
+    blocks = result.blocks
+    cutting = np.asarray(blocks["motion"]) != 0
+    times = np.asarray(blocks["time"])[cutting]
+    slow = np.asarray(blocks["mean_feed"])[cutting] < 0.5 * np.asarray(blocks["programmed_feed"])[cutting]
+    lengths = np.asarray(stats.get("pass_lengths", []))
+    row.update(time_s=scores["machining_time_s"], length_over_feed_s=scores["naive_time_s"],
+               path_mm=scores["path_length_mm"], blocks=scores["blocks"], entries=scores["tool_entries"],
+               passes=int(stats.get("passes", len(lengths))),
+               short_passes=int(np.sum(lengths < evaluation.SHORT_SEQUENCE_MM)),
+               # the share of cutting time spent below half the programmed feed (blocks' mean feed)
+               slowdown_share=float(times[slow].sum() / times.sum()) if times.sum() > 0 else 0.0)
+    for name, t in zip(FEED_CLASS_NAMES, scores["feed_classes_time"]):
+        row["time_share_" + name] = t / total
+    row["error"] = ""
+    return row
+
+
+def _key(variant, inputs):
+    text = json.dumps([variant, [hashlib.sha256(str(x).encode()).hexdigest() for x in inputs]], sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()[:32]
+
+
+def _run_cached(variant, inputs, finishing, cache_dir):
+    path = os.path.join(cache_dir, _key([variant, finishing], inputs) + ".json") if cache_dir else None
+    if path and os.path.isfile(path):
+        with open(path) as stream:
+            row = json.load(stream)
+        row["cached"] = True
+        return row
+    try:
+        row = run_variant(variant, *inputs, finishing=finishing)
+    except Exception as error:  # a failed variant is reported in its row; the others go on
+        return dict(variant, error="%s: %s" % (type(error).__name__, error))
+    if path:
+        os.makedirs(cache_dir, exist_ok=True)
+        with open(path, "w") as stream:
+            json.dump(row, stream)
+    row["cached"] = False
+    return row
+
+
+def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None):
+    """Every variant of `grid` (variants()) on the bottom face `face` ('Face4') of `part` between boundaries b1
+    and b2 (shapes or BREP text), in worker processes (0: all cores; 1: in this process). Returns the rows in
+    the grid's order; a failed variant's row has its `error`, a cancelled one 'cancelled'. progress(done,
+    row) after each finished variant; returning False cancels the rest."""
+    _check(bool(grid), "the grid is empty: nothing to study")
+    inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
+    workers = workers or os.cpu_count() or 1
+    rows = [None] * len(grid)
+    done = 0
+
+    def finished(index, row):
+        nonlocal done
+        rows[index] = row
+        done += 1
+        return progress(done / len(grid), row) if progress else True
+
+    if workers == 1:
+        for index, variant in enumerate(grid):
+            if finished(index, _run_cached(variant, inputs, finishing, cache_dir)) is False:
+                break
+    else:
+        context = multiprocessing.get_context("fork")
+        with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+            futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
+            for future in concurrent.futures.as_completed(futures):
+                if finished(futures[future], future.result()) is False:
+                    for other in futures:
+                        other.cancel()
+                    break
+    return [row if row is not None else dict(variant, error="cancelled") for row, variant in zip(rows, grid)]
+
+
+def rank(rows, by="time"):
+    """The rows that ran, best first: by simulated time ('time'), by the share of time below half the feed
+    ('slowdown'), or the Pareto front of both ('pareto': the rows no other beats on both, by time)."""
+    ran = [r for r in rows if not r.get("error")]
+    if by == "time":
+        return sorted(ran, key=lambda r: r["time_s"])
+    if by == "slowdown":
+        return sorted(ran, key=lambda r: (r["slowdown_share"], r["time_s"]))
+    if by == "pareto":
+        front = [r for r in ran if not any(o["time_s"] <= r["time_s"] and o["slowdown_share"] <= r["slowdown_share"] and
+                                           (o["time_s"] < r["time_s"] or o["slowdown_share"] < r["slowdown_share"])
+                                           for o in ran)]
+        return sorted(front, key=lambda r: r["time_s"])
+    raise ValueError("rank by %r: use 'time', 'slowdown' or 'pareto'" % (by,))
+
+
+def write_csv(rows, path):
+    columns = []
+    for row in rows:
+        columns += [k for k in row if k not in columns]
+    with open(path, "w", newline="") as stream:
+        writer = csv.DictWriter(stream, fieldnames=columns)
+        writer.writeheader()
+        writer.writerows(rows)
+    return path
+
+
+def write_json(rows, path):
+    with open(path, "w") as stream:
+        json.dump(rows, stream, indent=1)
+    return path
+
+
+__all__ = ["variants", "variant_name", "run_variant", "study", "rank", "write_csv", "write_json", "_core"]

@@ -1,0 +1,82 @@
+"""The automatic strategy study (hsmplanner.study, issue 18's first part): the grid refused by name before
+anything runs, the ranking right on cases whose order is known, rows kept when a variant fails or the study is
+cancelled, results read back from the cache, worker processes giving the rows one process gives."""
+import os
+import re
+import unittest
+
+import FreeCAD
+
+from hsmplanner import study
+from hsmplanner.app import master_feature_object
+from helpers import temporary_directory
+
+
+class Grid(unittest.TestCase):
+    def test_bad_ranges_are_refused_by_name(self):
+        for kwargs, words in ((dict(k=(0.0,), p=(10,)), "K = 0.0 is outside ]0, 1["),
+                              (dict(k=(1.5,), p=(10,)), "K = 1.5 is outside ]0, 1["),
+                              (dict(k=(0.5,), p=(0,)), "P = 0 mm must be positive"),
+                              (dict(k=(0.5,), p=()), "guide curves need both K"),
+                              (dict(), "the grid is empty"),
+                              (dict(planes_deg=(0,), feeds_mm_min=(0,)), "feed 0 mm/min must be positive"),
+                              (dict(planes_deg=(0,), machines=("haas-vf2",)), "machine 'haas-vf2' is unknown"),
+                              (dict(planes_deg=range(0, 100000)), "narrow the ranges")):
+            with self.subTest(words=words), self.assertRaisesRegex(ValueError, re.escape(words)):
+                study.variants(**kwargs)
+
+    def test_the_grid_of_the_issue(self):
+        # planes every 15°, K × P × median or not, the 4-step method: 12 + 18 + 1 = 31 variants at one feed
+        grid = study.variants(planes_deg=range(0, 180, 15), k=(0.25, 0.5, 0.75), p=(5, 10, 20), four_step=True)
+        self.assertEqual(len(grid), 31)
+        self.assertEqual(len({v["name"] for v in grid}), 31)
+
+
+class Study(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.document = FreeCAD.newDocument("Study")
+        cls.part = master_feature_object.create(cls.document)
+        cls.b1, cls.b2 = (cls.part.Shape.getElement(n) for n in (cls.part.Boundary1, cls.part.Boundary2))
+        cls.face = cls.part.BottomFace
+        # coarse finishing (Ø10 ball, 0.1 mm cusp): the study's logic, not the paper's paths
+        cls.finishing = dict(tool_diameter=10.0, cusp_height=0.1, tolerance=0.05)
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.document.Name)
+
+    def run_study(self, grid, **kwargs):
+        return study.study(self.part.Shape, self.face, self.b1, self.b2, grid, finishing=self.finishing, **kwargs)
+
+    def test_the_same_path_at_two_feeds_ranks_the_faster_first_and_processes_agree(self):
+        grid = study.variants(planes_deg=(0,), feeds_mm_min=(1000, 6000))
+        folder = temporary_directory(self)
+        rows = self.run_study(grid, workers=2, cache_dir=folder)
+        self.assertEqual([r["error"] for r in rows], ["", ""])
+        self.assertEqual(study.rank(rows, "time")[0]["feed_mm_min"], 6000.0)
+        self.assertLess(rows[0]["slowdown_share"], rows[1]["slowdown_share"], "F1000 is rarely slowed to half")
+        self.assertEqual(rows[0]["path_mm"], rows[1]["path_mm"])
+        # the same inputs again: read back from the cache, the same figures
+        again = self.run_study(grid, workers=1, cache_dir=folder)
+        self.assertEqual([r["cached"] for r in again], [True, True])
+        self.assertEqual([r["time_s"] for r in again], [r["time_s"] for r in rows])
+        study.write_csv(rows, os.path.join(folder, "rows.csv"))
+        study.write_json(rows, os.path.join(folder, "rows.json"))
+        self.assertTrue(os.path.getsize(os.path.join(folder, "rows.csv")) > 100)
+
+    def test_a_failed_and_a_cancelled_variant_keep_the_others(self):
+        grid = study.variants(planes_deg=(0, 45, 90))
+        grid[1]["angle_deg"] = float("nan")  # fails in the core, after the grid's checks
+        seen = []
+        rows = self.run_study(grid, workers=1, progress=lambda done, row: seen.append(row["name"]) or len(seen) < 2)
+        self.assertEqual(rows[0]["error"], "")
+        self.assertIn("ValueError", rows[1]["error"])
+        self.assertEqual(rows[2]["error"], "cancelled")
+        self.assertEqual([r["name"] for r in study.rank(rows)], [rows[0]["name"]])
+        with self.assertRaisesRegex(ValueError, "rank by 'speed'"):
+            study.rank(rows, "speed")
+
+
+if __name__ == "__main__":
+    unittest.main()
