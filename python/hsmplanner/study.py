@@ -176,6 +176,54 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     return [row if row is not None else dict(variant, error="cancelled") for row, variant in zip(rows, grid)]
 
 
+def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machine=feedsim.DEFAULT_MACHINE,
+             by="time", low=0.1, high=0.9, tolerance=0.05, max_evaluations=12, finishing=None, cache_dir=None,
+             progress=None):
+    """The paper's step 4 done by the machine: a golden-section search of K in [low, high] (inside ]0, 1[) for
+    the guide net (with the median or not, step P) that minimises the simulated time ('time') or the slowdown
+    share ('slowdown'), until the bracket is narrower than `tolerance` or `max_evaluations` variants ran.
+    Returns (the best row, every row evaluated in order). Time is not unimodal in K in general: the search
+    finds a local best within the bracket, which is what "increase or decrease K slightly" asks."""
+    _check(0.0 < low < high < 1.0, "K bounds [%r, %r] must lie inside ]0, 1[ with low < high" % (low, high))
+    _check(tolerance > 0.0, "K tolerance %r must be positive (e.g. 0.05)" % (tolerance,))
+    _check(3 <= int(max_evaluations) <= 100, "max evaluations %r must be in [3, 100]" % (max_evaluations,))
+    key = {"time": "time_s", "slowdown": "slowdown_share"}.get(by)
+    _check(key is not None, "refine K by %r: use 'time' or 'slowdown'" % (by,))
+    inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
+    evaluated, cache = [], {}
+
+    def score(k):
+        k = round(k, 6)
+        if k not in cache:
+            variant = variants(k=(k,), p=(p,), median=(median,), feeds_mm_min=(feed_mm_min,), machines=(machine,))[0]
+            row = _run_cached(variant, inputs, finishing, cache_dir)
+            evaluated.append(row)
+            cache[k] = row[key] if not row.get("error") else float("inf")
+            if progress and progress(len(evaluated) / max_evaluations, row) is False:
+                raise StopIteration
+        return cache[k]
+
+    ratio = (5 ** 0.5 - 1) / 2
+    a, b = low, high
+    c, d = b - ratio * (b - a), a + ratio * (b - a)
+    try:
+        fc, fd = score(c), score(d)
+        while b - a > tolerance and len(evaluated) < max_evaluations:
+            if fc <= fd:
+                b, d, fd = d, c, fc
+                c = b - ratio * (b - a)
+                fc = score(c)
+            else:
+                a, c, fc = c, d, fd
+                d = a + ratio * (b - a)
+                fd = score(d)
+    except StopIteration:
+        pass
+    ran = [r for r in evaluated if not r.get("error")]
+    _check(bool(ran), "no K could be evaluated: %s" % "; ".join(r.get("error", "") for r in evaluated))
+    return min(ran, key=lambda r: r[key]), evaluated
+
+
 def rank(rows, by="time"):
     """The rows that ran, best first: by simulated time ('time'), by the share of time below half the feed
     ('slowdown'), or the Pareto front of both ('pareto': the rows no other beats on both, by time)."""
@@ -209,4 +257,4 @@ def write_json(rows, path):
     return path
 
 
-__all__ = ["variants", "variant_name", "run_variant", "study", "rank", "write_csv", "write_json", "_core"]
+__all__ = ["variants", "variant_name", "run_variant", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]

@@ -77,6 +77,20 @@ class Study(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "rank by 'speed'"):
             study.rank(rows, "speed")
 
+    def test_k_refinement_finds_the_best_k_it_evaluated_within_its_bounds(self):
+        best, rows = study.refine_k(self.part.Shape, self.face, self.b1, self.b2, median=True, p=10.0,
+                                    tolerance=0.2, max_evaluations=5, finishing=self.finishing)
+        self.assertLessEqual(len(rows), 5)
+        self.assertGreaterEqual(len(rows), 3)
+        ks = [r["k"] for r in rows]
+        self.assertTrue(all(0.1 <= k <= 0.9 for k in ks), ks)
+        self.assertEqual(best["time_s"], min(r["time_s"] for r in rows if not r["error"]))
+        for kwargs, words in ((dict(low=0.0), "K bounds"), (dict(low=0.6, high=0.4), "K bounds"),
+                              (dict(tolerance=0.0), "K tolerance 0.0"), (dict(max_evaluations=1), "max evaluations 1"),
+                              (dict(by="length"), "refine K by 'length'")):
+            with self.subTest(words=words), self.assertRaisesRegex(ValueError, re.escape(words)):
+                study.refine_k(self.part.Shape, self.face, self.b1, self.b2, **kwargs)
+
 
 if __name__ == "__main__":
     unittest.main()
