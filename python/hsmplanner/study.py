@@ -258,3 +258,12 @@ def write_json(rows, path):
 
 
 __all__ = ["variants", "variant_name", "run_variant", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
+
+
+if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)
+    import sys
+
+    sys.path.append("/usr/lib/freecad-python3/lib")  # FreeCAD's modules for /usr/bin/python3 (Debian's place)
+    from hsmplanner.study_cli import main
+
+    sys.exit(main())

@@ -9,7 +9,7 @@ import FreeCAD
 
 from hsmplanner import study
 from hsmplanner.app import master_feature_object
-from helpers import temporary_directory
+from helpers import REPO, temporary_directory
 
 
 class Grid(unittest.TestCase):
@@ -90,6 +90,26 @@ class Study(unittest.TestCase):
                               (dict(by="length"), "refine K by 'length'")):
             with self.subTest(words=words), self.assertRaisesRegex(ValueError, re.escape(words)):
                 study.refine_k(self.part.Shape, self.face, self.b1, self.b2, **kwargs)
+
+    def test_the_command_line_ranks_and_names_a_bad_argument(self):
+        import subprocess
+
+        folder = temporary_directory(self)
+        brep = os.path.join(folder, "master.brep")
+        self.part.Shape.exportBrep(brep)
+        b1, b2 = self.part.Boundary1, self.part.Boundary2
+        env = dict(os.environ, PYTHONPATH=os.path.join(REPO, "python"))
+        command = ["/usr/bin/python3", "-m", "hsmplanner.study", brep, "--face", self.face, "--b1", b1, "--b2", b2,
+                   "--planes", "0,90", "--feeds", "6000,2000", "--workers", "2", "--csv", os.path.join(folder, "s.csv")]
+        done = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        lines = [l for l in done.stdout.splitlines() if l.startswith("planes")]
+        self.assertEqual(len(lines), 4, done.stdout)
+        self.assertIn("F6000", lines[0], "the fastest first")
+        self.assertTrue(os.path.getsize(os.path.join(folder, "s.csv")) > 100)
+        bad = subprocess.run(command[:7] + ["Edge999"] + command[8:], env=env, capture_output=True, text=True, timeout=120)
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("edge 'Edge999' is not an element of the part", bad.stderr)
 
 
 if __name__ == "__main__":
