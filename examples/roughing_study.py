@@ -19,6 +19,7 @@ import time
 
 from hsmplanner import roughing
 from hsmplanner.app.roughing_study import COLUMNS, DEFAULT_FEED_MM_MIN, add_stock_mesh, study_strategy
+from hsmplanner.geometry import shape_from_brep
 from hsmplanner.plots.roughing_study import save_stock_maps, save_study_bars
 from hsmplanner.scripting import output_dir, run_script
 
@@ -39,13 +40,10 @@ def save_document(wheel, meshes, path):
     """A FreeCAD document with the part and each strategy's stock left as a Mesh feature: what the study leaves,
     to look at in FreeCAD."""
     import FreeCAD
-    import Part
 
     document = FreeCAD.newDocument("RoughingStudy")
     part = document.addObject("Part::Feature", "Impeller")
-    shape = Part.Shape()
-    shape.importBrepFromString(wheel.part_brep)
-    part.Shape = shape
+    part.Shape = shape_from_brep(wheel.part_brep)
     for name, mesh in meshes:
         add_stock_mesh(document, "StockLeft_%s" % name, mesh, "%s stock left" % name)
     document.recompute()

@@ -19,6 +19,16 @@ def as_brep(shape):
     return export()
 
 
+def shape_from_brep(text):
+    """The FreeCAD Part shape of BREP text (as_brep's inverse; needs FreeCAD's Part module)."""
+    import FreeCAD  # noqa: F401 (before Part: Part alone crashes outside freecadcmd)
+    import Part
+
+    shape = Part.Shape()
+    shape.importBrepFromString(text)
+    return shape
+
+
 def shape_summary(shape):
     """Topology counts, volume (mm³), area (mm²), edge length (mm), bounds and validity of a shape."""
     return _core.summarize_brep(as_brep(shape))

@@ -22,7 +22,7 @@ import os
 import numpy as np
 
 from . import _core, curvenet, evaluation, feedsim, toolpaths
-from .geometry import as_brep
+from .geometry import as_brep, shape_from_brep
 
 GUIDE_MODES = {False: "b1_to_b2", True: "boundaries_to_median"}  # median or not
 FEED_CLASS_NAMES = ["below_20", "20_40", "40_60", "60_80", "above_80"]  # the paper's five, % of F
@@ -76,14 +76,6 @@ def variant_name(v):
     return "%s F%g %s" % (head, v["feed_mm_min"], v["machine"])
 
 
-def _shape(value):
-    import Part  # noqa: F401 (only to read BREP text back into a shape for the curve API)
-
-    shape = Part.Shape()
-    shape.importBrepFromString(value)
-    return shape
-
-
 def run_variant(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
     """One variant generated, simulated and scored: its row (the variant's fields, then the scores)."""
     settings = dict(finishing or {})
@@ -91,8 +83,8 @@ def run_variant(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
     if variant["strategy"] == "planes":
         moves, stats = toolpaths.parallel_finishing(part_brep, face, variant["angle_deg"], **settings)
     else:
-        part = _shape(part_brep)
-        b1, b2 = _shape(b1_brep), _shape(b2_brep)
+        part = shape_from_brep(part_brep)
+        b1, b2 = shape_from_brep(b1_brep), shape_from_brep(b2_brep)
         bottom = part.getElement(face)
         if variant["strategy"] == "guide":
             net = curvenet.curve_net(b1, b2, variant["k"], step=variant["p"], mode=variant["mode"], face=bottom)

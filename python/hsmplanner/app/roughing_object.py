@@ -26,6 +26,7 @@ import hsmplanner
 from hsmplanner import roughing
 from hsmplanner._core import roughing as core
 
+from hsmplanner.geometry import shape_from_brep
 from .properties import HIDDEN, add_inputs, add_results
 from .feedrate import is_job
 from .progress import freecad_progress
@@ -98,12 +99,6 @@ INPUT_NAMES = [entry[1] for entry in _INPUTS]
 # The task panel's ranges (mm, degrees); the core refuses more (a step beyond the volume, too many slices).
 LIMITS = {"Step": (0.5, 500.0), "Region": (0, 999), "SetupResolution": (0.5, 45.0), "SetupGrid": (0.25, 50.0)}
 PARTITION_CACHE = 12  # partitions kept in memory
-
-
-def _shape(brep):
-    shape = Part.Shape()
-    shape.importBrepFromString(brep)
-    return shape
 
 
 def _solids(shape):
@@ -332,7 +327,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
     def store(self, obj, volume, partitions):
         regions, classes = [], []
         for solid in volume.solids:
-            shape = _shape(solid.brep)
+            shape = shape_from_brep(solid.brep)
             regions += _solids(shape)
             classes += [CLASS_NAMES.index(c.name) for c in solid.face_classes]
         volume_shape = Part.Compound(regions)
@@ -345,7 +340,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
             warnings.append("the boolean stock − part needed a fuzzy value (near-coincident faces)")
         for index, partition in partitions:
             for sub_volume in partition.sub_volumes:
-                for solid in _solids(_shape(sub_volume.brep)):
+                for solid in _solids(shape_from_brep(sub_volume.brep)):
                     pieces.append(solid)
                     slices += [sub_volume.slice] * len(solid.Faces)
                 volumes.append(sub_volume.volume)

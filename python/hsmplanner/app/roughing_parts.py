@@ -10,11 +10,11 @@ touch) reuses the last build held in memory.
 Proxy class names are saved in documents: never rename them.
 """
 import FreeCAD
-import Part
 
 from hsmplanner import roughing
 from hsmplanner._core import roughing as core
 
+from hsmplanner.geometry import shape_from_brep
 from .property_limits import PropertyLimits
 from .proxy_state import NoSavedState
 
@@ -63,12 +63,6 @@ def _value(quantity):
     return quantity.Value if hasattr(quantity, "Value") else quantity
 
 
-def _shape(brep):
-    shape = Part.Shape()
-    shape.importBrepFromString(brep)
-    return shape
-
-
 class _RoughingTestPart(PropertyLimits, NoSavedState):
     """A test part of the core: properties -> the core's parameters -> Shape (the part) and StockShape."""
 
@@ -105,7 +99,7 @@ class _RoughingTestPart(PropertyLimits, NoSavedState):
         parameters = self.parameters(obj)
         if getattr(self, "built", None) is None or self.built[0] != parameters:
             built = self.build(dict(parameters))
-            self.built = (parameters, _shape(built.part_brep), _shape(built.stock_brep))
+            self.built = (parameters, shape_from_brep(built.part_brep), shape_from_brep(built.stock_brep))
         _, part, stock = self.built
         obj.StockShape = stock.copy()
         self.set_outputs(obj, dict(parameters))
