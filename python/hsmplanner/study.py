@@ -15,6 +15,7 @@ change is read back, not recomputed). Bad grids are refused by name before anyth
 import concurrent.futures
 import csv
 import hashlib
+import itertools
 import json
 import multiprocessing
 import os
@@ -34,13 +35,22 @@ def _check(condition, message):
         raise ValueError(message)
 
 
+def _bounded(values, what):
+    """The values as a list, refused past MAX_VARIANTS before they are all made (a range of 1e9 angles)."""
+    values = list(itertools.islice(iter(values), MAX_VARIANTS + 1))
+    _check(len(values) <= MAX_VARIANTS, "more than %d %s: narrow the ranges" % (MAX_VARIANTS, what))
+    return values
+
+
 def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, feeds_mm_min=(4000.0,),
              machines=(feedsim.DEFAULT_MACHINE,)):
     """The grid as a list of variant dicts: every plane angle, every guide net (K × P × median or not), the
     4-step method if asked, each at every feed on every machine. ValueError names a bad range: K outside
     ]0, 1[, P <= 0, a feed <= 0, an unknown machine, an empty grid, more than 10,000 variants."""
-    planes_deg, k, p, median = list(planes_deg), list(k), list(p), list(median)
-    feeds_mm_min, machines = list(feeds_mm_min), list(machines)
+    planes_deg, k, p, median, feeds_mm_min, machines = (
+        _bounded(values, what) for values, what in ((planes_deg, "plane angles"), (k, "K values"), (p, "P values"),
+                                                    (median, "median choices"), (feeds_mm_min, "feeds"),
+                                                    (machines, "machines")))
     for value in k:
         _check(0.0 < float(value) < 1.0, "K = %r is outside ]0, 1[: the guide curve lies between the boundaries "
                                          "(the paper uses 0.25 to 0.75)" % (value,))
@@ -141,6 +151,8 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     the grid's order; a failed variant's row has its `error`, a cancelled one 'cancelled'. progress(done,
     row) after each finished variant; returning False cancels the rest."""
     _check(bool(grid), "the grid is empty: nothing to study")
+    _check(isinstance(workers, int) and 0 <= workers <= 256, "workers %r must be an integer in [0, 256] (0: all cores)"
+           % (workers,))
     inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
     workers = workers or os.cpu_count() or 1
     rows = [None] * len(grid)
@@ -178,7 +190,8 @@ def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machin
     finds a local best within the bracket, which is what "increase or decrease K slightly" asks."""
     _check(0.0 < low < high < 1.0, "K bounds [%r, %r] must lie inside ]0, 1[ with low < high" % (low, high))
     _check(tolerance > 0.0, "K tolerance %r must be positive (e.g. 0.05)" % (tolerance,))
-    _check(3 <= int(max_evaluations) <= 100, "max evaluations %r must be in [3, 100]" % (max_evaluations,))
+    _check(isinstance(max_evaluations, int) and 3 <= max_evaluations <= 100,
+           "max evaluations %r must be an integer in [3, 100]" % (max_evaluations,))
     key = {"time": "time_s", "slowdown": "slowdown_share"}.get(by)
     _check(key is not None, "refine K by %r: use 'time' or 'slowdown'" % (by,))
     inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))

@@ -357,6 +357,16 @@ CASES = [
           "abs(result - 100.0) < 1e-9"),
     raises("join with a NaN clearance", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.join_paths([m, m], w.stock_brep, clearance=float('nan'))",
            "ValueError", "clearance nan mm is outside [0, 1000] mm"),
+    # --- the strategy study (issue 18): absurd grids and settings, refused before anything runs ------------------
+    raises("study K NaN", "from hsmplanner import study as st\nst.variants(k=(float('nan'),), p=(10,))", "ValueError", "K = nan is outside ]0, 1["),
+    raises("study P -1", "from hsmplanner import study as st\nst.variants(k=(0.5,), p=(-1,))", "ValueError", "P = -1 mm must be positive"),
+    raises("study feed NaN", "from hsmplanner import study as st\nst.variants(planes_deg=(0,), feeds_mm_min=(float('nan'),))", "ValueError", "feed nan mm/min must be positive"),
+    raises("study 1e9 plane angles", "from hsmplanner import study as st\nst.variants(planes_deg=range(0, 10**9))", "ValueError", "narrow the ranges"),
+    raises("study workers -1", "from hsmplanner import study as st\nst.study(part, 'Face4', b1, b2, st.variants(planes_deg=(0,)), workers=-1)", "ValueError", "workers -1 must be an integer"),
+    raises("study an empty grid", "from hsmplanner import study as st\nst.study(part, 'Face4', b1, b2, [])", "ValueError", "the grid is empty"),
+    raises("refine K tolerance NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, tolerance=float('nan'))", "ValueError", "K tolerance nan"),
+    raises("refine K 1e9 evaluations", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, max_evaluations=10**9)", "ValueError", "max evaluations 1000000000"),
+    raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
 ]
 
 
