@@ -71,6 +71,7 @@ demo: build
 	scripts/run-freecadcmd.sh examples/roughing_partition.py $(OUT)
 	scripts/run-freecadcmd.sh examples/roughing_paths.py $(OUT)
 	scripts/run-freecadcmd.sh examples/roughing_study.py $(OUT)
+	scripts/run-freecadcmd.sh examples/strategy_study.py $(OUT)
 
 bench: build
 	$(BUILD_DIR)/bin/bench_curvenet

@@ -19,8 +19,15 @@ def as_brep(shape):
     return export()
 
 
+FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+
+
 def shape_from_brep(text):
     """The FreeCAD Part shape of BREP text (as_brep's inverse; needs FreeCAD's Part module)."""
+    import sys
+
+    if FREECAD_LIB not in sys.path:  # a plain /usr/bin/python3 (a study's worker): FreeCAD's modules, Debian's place
+        sys.path.append(FREECAD_LIB)
     import FreeCAD  # noqa: F401 (before Part: Part alone crashes outside freecadcmd)
     import Part
 

@@ -26,8 +26,11 @@ from . import _core, curvenet, evaluation, feedsim, toolpaths
 from .geometry import as_brep, shape_from_brep
 
 GUIDE_MODES = {False: "b1_to_b2", True: "boundaries_to_median"}  # median or not
+MODE_LABELS = {"b1_to_b2": "B1→B2", "b2_to_b1": "B2→B1", "median": "median", "median_to_boundaries": "median→B",
+               "boundaries_to_median": "B→median"}
 FEED_CLASS_NAMES = ["below_20", "20_40", "40_60", "60_80", "above_80"]  # the paper's five, % of F
 MAX_VARIANTS = 10000
+SCHEDULER_TIMEOUT_S = 20
 
 
 def _check(condition, message):
@@ -43,14 +46,19 @@ def _bounded(values, what):
 
 
 def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, feeds_mm_min=(4000.0,),
-             machines=(feedsim.DEFAULT_MACHINE,)):
+             machines=(feedsim.DEFAULT_MACHINE,), net_modes=None):
     """The grid as a list of variant dicts: every plane angle, every guide net (K × P × median or not), the
-    4-step method if asked, each at every feed on every machine. ValueError names a bad range: K outside
-    ]0, 1[, P <= 0, a feed <= 0, an unknown machine, an empty grid, more than 10,000 variants."""
+    4-step method if asked, each at every feed on every machine. net_modes (names of curvenet.MODES, e.g.
+    ("b1_to_b2", "median_to_boundaries", "boundaries_to_median")) replaces the median choice when given: both
+    directions of the paper's median nets. ValueError names a bad range: K outside ]0, 1[, P <= 0, a feed
+    <= 0, an unknown machine or net mode, an empty grid, more than 10,000 variants."""
     planes_deg, k, p, median, feeds_mm_min, machines = (
         _bounded(values, what) for values, what in ((planes_deg, "plane angles"), (k, "K values"), (p, "P values"),
                                                     (median, "median choices"), (feeds_mm_min, "feeds"),
                                                     (machines, "machines")))
+    modes = [GUIDE_MODES[bool(m)] for m in median] if net_modes is None else _bounded(net_modes, "net modes")
+    for mode in modes:
+        _check(mode in curvenet.MODES, "net mode %r is unknown: use one of %s" % (mode, ", ".join(curvenet.MODES)))
     for value in k:
         _check(0.0 < float(value) < 1.0, "K = %r is outside ]0, 1[: the guide curve lies between the boundaries "
                                          "(the paper uses 0.25 to 0.75)" % (value,))
@@ -64,8 +72,8 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
         _check(isinstance(name, str) and name in known,
                "machine %r is unknown: use one of %s" % (name, ", ".join(sorted(known))))
     shapes = [dict(strategy="planes", angle_deg=float(a)) for a in planes_deg]
-    shapes += [dict(strategy="guide", mode=GUIDE_MODES[bool(m)], k=float(kk), p=float(pp), median=bool(m))
-               for kk in k for pp in p for m in median]
+    shapes += [dict(strategy="guide", mode=m, k=float(kk), p=float(pp), median="median" in m)
+               for kk in k for pp in p for m in modes]
     if four_step:
         shapes.append(dict(strategy="4-step"))
     grid = [dict(shape, feed_mm_min=float(f), machine=name) for shape in shapes for f in feeds_mm_min for name in machines]
@@ -76,32 +84,55 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
     return grid
 
 
+def paper_grid(feed_mm_min=4000.0, machine=feedsim.DEFAULT_MACHINE):
+    """The guidance-curve paper's hand study as one grid, 40 variants: parallel planes every 15°, guide nets for
+    K in {0.25, 0.5, 0.75} x P in {5, 10, 20} x (B1 to B2, median to the boundaries, boundaries to the median —
+    the paper's three constructions), and its 4-step method."""
+    return variants(planes_deg=range(0, 180, 15), k=(0.25, 0.5, 0.75), p=(5, 10, 20),
+                    net_modes=("b1_to_b2", "median_to_boundaries", "boundaries_to_median"), four_step=True,
+                    feeds_mm_min=(feed_mm_min,), machines=(machine,))
+
+
 def variant_name(v):
     if v["strategy"] == "planes":
         head = "planes %g°" % v["angle_deg"]
     elif v["strategy"] == "guide":
-        head = "guide %s K%g P%g" % ("with median" if v["median"] else "B1→B2", v["k"], v["p"])
+        head = "guide %s K%g P%g" % (MODE_LABELS.get(v["mode"], v["mode"]), v["k"], v["p"])
     else:
         head = "4-step"
     return "%s F%g %s" % (head, v["feed_mm_min"], v["machine"])
 
 
+def variant_moves(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
+    """The variant's finishing path: (moves, path statistics) — what run_variant scores and a feed map draws."""
+    settings = dict(finishing or {})
+    if variant["strategy"] == "planes":
+        return toolpaths.parallel_finishing(as_brep(part_brep), face, variant["angle_deg"], **settings)
+    part = shape_from_brep(as_brep(part_brep))
+    b1, b2 = shape_from_brep(as_brep(b1_brep)), shape_from_brep(as_brep(b2_brep))
+    bottom = part.getElement(face)
+    if variant["strategy"] == "guide":
+        net = curvenet.curve_net(b1, b2, variant["k"], step=variant["p"], mode=variant["mode"], face=bottom)
+    else:
+        net, _ = curvenet.guidance_curves(b1, b2, face=bottom)
+    return toolpaths.guide_finishing(as_brep(part_brep), face, net, **settings)
+
+
+def simulate_variant(variant, moves):
+    """The variant's moves simulated at its feed on its machine, block by block (feedsim's result)."""
+    return feedsim.simulate_moves(moves, variant["feed_mm_min"], machine=variant["machine"], blocks=True)
+
+
 def run_variant(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
     """One variant generated, simulated and scored: its row (the variant's fields, then the scores)."""
-    settings = dict(finishing or {})
+    moves, stats = variant_moves(variant, part_brep, face, b1_brep, b2_brep, finishing)
+    return score(variant, stats, simulate_variant(variant, moves))
+
+
+def score(variant, stats, result):
+    """The row of a simulated variant: times, path, blocks, entries, passes, short passes, the share of
+    cutting time below half the programmed feed and the time shares of the paper's five feed classes."""
     row = dict(variant)
-    if variant["strategy"] == "planes":
-        moves, stats = toolpaths.parallel_finishing(part_brep, face, variant["angle_deg"], **settings)
-    else:
-        part = shape_from_brep(part_brep)
-        b1, b2 = shape_from_brep(b1_brep), shape_from_brep(b2_brep)
-        bottom = part.getElement(face)
-        if variant["strategy"] == "guide":
-            net = curvenet.curve_net(b1, b2, variant["k"], step=variant["p"], mode=variant["mode"], face=bottom)
-        else:
-            net, _ = curvenet.guidance_curves(b1, b2, face=bottom)
-        moves, stats = toolpaths.guide_finishing(part_brep, face, net, **settings)
-    result = feedsim.simulate_moves(moves, variant["feed_mm_min"], machine=variant["machine"], blocks=True)
     scores = evaluation.evaluate(result)
     total = sum(scores["feed_classes_time"]) or 1.0
     blocks = result.blocks
@@ -127,7 +158,9 @@ def _key(variant, inputs):
 
 
 def _run_cached(variant, inputs, finishing, cache_dir):
-    path = os.path.join(cache_dir, _key([variant, finishing], inputs) + ".json") if cache_dir else None
+    # the thread count changes how fast a variant runs, not its result: not part of the key
+    settings = {k: v for k, v in (finishing or {}).items() if k != "threads"}
+    path = os.path.join(cache_dir, _key([variant, settings], inputs) + ".json") if cache_dir else None
     if path and os.path.isfile(path):
         with open(path) as stream:
             row = json.load(stream)
@@ -145,16 +178,18 @@ def _run_cached(variant, inputs, finishing, cache_dir):
     return row
 
 
-def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None):
+def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None, scheduler=None):
     """Every variant of `grid` (variants()) on the bottom face `face` ('Face4') of `part` between boundaries b1
-    and b2 (shapes or BREP text), in worker processes (0: all cores; 1: in this process). Returns the rows in
-    the grid's order; a failed variant's row has its `error`, a cancelled one 'cancelled'. progress(done,
-    row) after each finished variant; returning False cancels the rest."""
+    and b2 (shapes or BREP text), in worker processes (0: all cores; 1: in this process), or on a Dask
+    cluster when `scheduler` is its address ('tcp://host:8786') or a distributed.Client (`workers` is then
+    the cluster's). Returns the rows in the grid's order; a failed variant's row has its `error`, a cancelled
+    one 'cancelled'. progress(done, row) after each finished variant; returning False cancels the rest."""
     _check(bool(grid), "the grid is empty: nothing to study")
     _check(isinstance(workers, int) and 0 <= workers <= 256, "workers %r must be an integer in [0, 256] (0: all cores)"
            % (workers,))
     inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
-    workers = workers or os.cpu_count() or 1
+    # one thread per variant: the variants are the parallel work (threads in each worker would only compete)
+    finishing = dict({"threads": 1}, **(finishing or {}))
     rows = [None] * len(grid)
     done = 0
 
@@ -164,31 +199,102 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
         done += 1
         return progress(done / len(grid), row) if progress else True
 
-    if workers == 1:
+    if scheduler is not None:
+        _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished)
+    elif (workers or os.cpu_count() or 1) == 1:
         for index, variant in enumerate(grid):
             if finished(index, _run_cached(variant, inputs, finishing, cache_dir)) is False:
                 break
     else:
-        context = multiprocessing.get_context("fork")
-        with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-            futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
-            for future in concurrent.futures.as_completed(futures):
-                if finished(futures[future], future.result()) is False:
-                    for other in futures:
-                        other.cancel()
-                    break
+        _run_on_processes(workers or os.cpu_count(), grid, inputs, finishing, cache_dir, finished)
     return [row if row is not None else dict(variant, error="cancelled") for row, variant in zip(rows, grid)]
+
+
+def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished):
+    # fork: the workers inherit the imported core (and inside freecadcmd, sys.executable is not a Python)
+    context = multiprocessing.get_context("fork")
+    with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+        futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
+        for future in concurrent.futures.as_completed(futures):
+            if finished(futures[future], future.result()) is False:
+                for other in futures:
+                    other.cancel()
+                break
+
+
+def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished):
+    """The variants as tasks of a Dask cluster: the BREP texts are scattered once to every worker, each task
+    is one variant (run_variant in the worker, which imports hsmplanner: start the workers with the
+    repository's python/ folder on PYTHONPATH). Finished rows come back as they end; a cancel drops the rest."""
+    try:
+        import distributed
+    except ImportError as error:
+        raise ImportError("a Dask scheduler was given but Dask distributed is missing: apt-get install "
+                          "python3-distributed (%s)" % error) from None
+    client = scheduler if isinstance(scheduler, distributed.Client) else _connect(distributed, scheduler)
+    try:
+        shared = client.scatter(list(inputs), broadcast=True, hash=False)
+        futures = [client.submit(_run_cached, v, shared, finishing, cache_dir, pure=False) for v in grid]
+        index = {future.key: i for i, future in enumerate(futures)}
+        for future in distributed.as_completed(futures):
+            try:
+                row = future.result()
+            except Exception as error:  # a worker lost or a task that could not be sent: its row says so
+                row = dict(grid[index[future.key]], error="%s: %s" % (type(error).__name__, error))
+            if finished(index[future.key], row) is False:
+                client.cancel(futures)
+                break
+    finally:
+        if client is not scheduler:
+            client.close()
+
+
+def _connect(distributed, address):
+    _check(isinstance(address, str) and "://" in address,
+           "scheduler %r must be a Dask scheduler's address such as 'tcp://host:8786' (or a distributed.Client)"
+           % (address,))
+    try:
+        return distributed.Client(address, timeout=SCHEDULER_TIMEOUT_S)
+    except (OSError, TimeoutError) as error:
+        raise ValueError("the Dask scheduler at %r did not answer within %d s (%s): start it (dask-scheduler) and "
+                         "its workers (dask-worker %s, with HSM Planner's python/ on PYTHONPATH), or check the address"
+                         % (address, SCHEDULER_TIMEOUT_S, error, address)) from None
+
+
+def local_cluster(workers=2):
+    """A Dask cluster of `workers` processes of one thread on this machine (to measure the engine's overhead
+    against the process pool, or to try a study before a real cluster): (cluster, its scheduler address).
+    Close the cluster after use (cluster.close())."""
+    _check(isinstance(workers, int) and 1 <= workers <= 256, "workers %r must be an integer in [1, 256]" % (workers,))
+    import dask
+    import distributed
+
+    # the workers start as fresh Python processes: inside freecadcmd, sys.executable is FreeCAD, not a Python
+    multiprocessing.set_executable(_python_executable())
+    with dask.config.set({"distributed.worker.daemon": False}):
+        cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                           dashboard_address=None)
+    return cluster, cluster.scheduler_address
+
+
+def _python_executable():
+    import sys
+
+    name = os.path.basename(sys.executable or "")
+    return sys.executable if name.startswith("python") else "/usr/bin/python%d" % sys.version_info[0]
 
 
 def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machine=feedsim.DEFAULT_MACHINE,
              by="time", low=0.1, high=0.9, tolerance=0.05, max_evaluations=12, finishing=None, cache_dir=None,
-             progress=None):
+             progress=None, net_mode=None, start=None):
     """The paper's step 4 done by the machine: a golden-section search of K in [low, high] (inside ]0, 1[) for
-    the guide net (with the median or not, step P) that minimises the simulated time ('time') or the slowdown
+    the guide net (with the median or not, or of `net_mode` when given; step P) that minimises the simulated time ('time') or the slowdown
     share ('slowdown'), until the bracket is narrower than `tolerance` or `max_evaluations` variants ran.
     Returns (the best row, every row evaluated in order). Time is not unimodal in K in general: the search
-    finds a local best within the bracket, which is what "increase or decrease K slightly" asks."""
+    finds a local best within the bracket, which is what "increase or decrease K slightly" asks. `start`
+    (a K already tried, e.g. the grid's best) is evaluated first: the best returned is never worse than it."""
     _check(0.0 < low < high < 1.0, "K bounds [%r, %r] must lie inside ]0, 1[ with low < high" % (low, high))
+    _check(start is None or 0.0 < start < 1.0, "start K %r must lie inside ]0, 1[" % (start,))
     _check(tolerance > 0.0, "K tolerance %r must be positive (e.g. 0.05)" % (tolerance,))
     _check(isinstance(max_evaluations, int) and 3 <= max_evaluations <= 100,
            "max evaluations %r must be an integer in [3, 100]" % (max_evaluations,))
@@ -200,7 +306,8 @@ def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machin
     def score(k):
         k = round(k, 6)
         if k not in cache:
-            variant = variants(k=(k,), p=(p,), median=(median,), feeds_mm_min=(feed_mm_min,), machines=(machine,))[0]
+            variant = variants(k=(k,), p=(p,), median=(median,), feeds_mm_min=(feed_mm_min,), machines=(machine,),
+                               net_modes=None if net_mode is None else (net_mode,))[0]
             row = _run_cached(variant, inputs, finishing, cache_dir)
             evaluated.append(row)
             cache[k] = row[key] if not row.get("error") else float("inf")
@@ -212,6 +319,8 @@ def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machin
     a, b = low, high
     c, d = b - ratio * (b - a), a + ratio * (b - a)
     try:
+        if start is not None:
+            score(start)
         fc, fd = score(c), score(d)
         while b - a > tolerance and len(evaluated) < max_evaluations:
             if fc <= fd:
@@ -238,10 +347,9 @@ def rank(rows, by="time"):
     if by == "slowdown":
         return sorted(ran, key=lambda r: (r["slowdown_share"], r["time_s"]))
     if by == "pareto":
-        front = [r for r in ran if not any(o["time_s"] <= r["time_s"] and o["slowdown_share"] <= r["slowdown_share"] and
-                                           (o["time_s"] < r["time_s"] or o["slowdown_share"] < r["slowdown_share"])
-                                           for o in ran)]
-        return sorted(front, key=lambda r: r["time_s"])
+        from .plots.strategy_study import pareto_front  # one definition of the front, for the table and plots
+
+        return pareto_front(ran)
     raise ValueError("rank by %r: use 'time', 'slowdown' or 'pareto'" % (by,))
 
 
@@ -262,13 +370,15 @@ def write_json(rows, path):
     return path
 
 
-__all__ = ["variants", "variant_name", "run_variant", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
+__all__ = ["variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
 
 
 if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)
     import sys
 
-    sys.path.append("/usr/lib/freecad-python3/lib")  # FreeCAD's modules for /usr/bin/python3 (Debian's place)
+    from hsmplanner.geometry import FREECAD_LIB
+
+    sys.path.append(FREECAD_LIB)  # FreeCAD's modules for /usr/bin/python3 (Debian's place)
     from hsmplanner.study_cli import main
 
     sys.exit(main())

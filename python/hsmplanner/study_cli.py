@@ -38,10 +38,13 @@ def parser():
     p.add_argument("--k", type=lambda t: _numbers(t, "--k"), default=[], help="K values of the guide nets")
     p.add_argument("--p", type=lambda t: _numbers(t, "--p"), default=[], help="P values (net steps), mm")
     p.add_argument("--median", choices=["with", "without", "both"], default="both", help="guide nets with the median")
+    p.add_argument("--net-modes", default=None, help="net modes instead of --median, comma-separated (b1_to_b2, "
+                   "median_to_boundaries, boundaries_to_median, b2_to_b1, median)")
     p.add_argument("--four-step", action="store_true", help="add the paper's 4-step method")
     p.add_argument("--feeds", type=lambda t: _numbers(t, "--feeds"), default=[4000.0], help="feeds, mm/min")
     p.add_argument("--machine", action="append", default=None, help="machine model name (repeat for several)")
     p.add_argument("--workers", type=int, default=0, help="worker processes (0: all cores)")
+    p.add_argument("--scheduler", default=None, help="a Dask scheduler's address (tcp://host:8786): run there")
     p.add_argument("--cache", default=None, help="folder of cached results (inputs unchanged: not recomputed)")
     p.add_argument("--rank", choices=["time", "slowdown", "pareto"], default="time")
     p.add_argument("--csv", default=None, help="write every row here")
@@ -79,7 +82,8 @@ def main(argv=None):
     try:
         median = {"with": (True,), "without": (False,), "both": (False, True)}[args.median]
         grid = study.variants(planes_deg=args.planes, k=args.k, p=args.p, median=median, four_step=args.four_step,
-                              feeds_mm_min=args.feeds, machines=args.machine or [feedsim.DEFAULT_MACHINE])
+                              feeds_mm_min=args.feeds, machines=args.machine or [feedsim.DEFAULT_MACHINE],
+                              net_modes=args.net_modes.split(",") if args.net_modes else None)
         shape = read_part(args.part)
         element(shape, args.face, "face")
         b1, b2 = element(shape, args.b1, "edge"), element(shape, args.b2, "edge")
@@ -93,7 +97,8 @@ def main(argv=None):
         sys.stderr.flush()
         return True
 
-    rows = study.study(shape, args.face, b1, b2, grid, workers=args.workers, cache_dir=args.cache, progress=progress)
+    rows = study.study(shape, args.face, b1, b2, grid, workers=args.workers, cache_dir=args.cache, progress=progress,
+                       scheduler=args.scheduler)
     sys.stderr.write("\n")
     for row in study.rank(rows, args.rank):
         print("%-48s %9.1f s %9.1f s  slowdown %5.1f %%  %5d passes" % (row["name"], row["time_s"],

@@ -77,26 +77,36 @@ def save_feed_histograms(summary, path):
     return path
 
 
-def save_feed_map(blocks, path, title):
-    """Plan view of the path, each cutting block coloured by its mean reached / programmed feed."""
+def draw_feed_map(axes, blocks, linewidth=2.0):
+    """Plan view of the path on `axes`, each cutting block coloured by its mean reached / programmed feed,
+    rapids dotted grey; X and Y in mm at one scale."""
     from matplotlib.collections import LineCollection
 
-    figure = new_figure(11, 6.5)
-    axes = figure.add_subplot(1, 1, 1)
     ratios = blocks["mean_feed"] / np.maximum(blocks["programmed_feed"], 1e-12)
     lines = block_polylines(blocks)
     cutting = blocks["motion"] != 0
     segments = [p[:, :2] for p, cut in zip(lines, cutting) if cut]
-    collection = LineCollection(segments, colors=feed_colors(ratios[cutting]), linewidths=2.0)
-    axes.add_collection(collection)
+    axes.add_collection(LineCollection(segments, colors=feed_colors(ratios[cutting]), linewidths=linewidth))
     rapids = [p[:, :2] for p, cut in zip(lines, cutting) if not cut]
-    axes.add_collection(LineCollection(rapids, colors="#999999", linewidths=0.5, linestyles="dotted"))
+    axes.add_collection(LineCollection(rapids, colors="#999999", linewidths=0.25 * linewidth, linestyles="dotted"))
     axes.autoscale()
     axes.set_aspect("equal")
     axes.set_xlabel("X (mm)")
     axes.set_ylabel("Y (mm)")
+
+
+def feed_share_bar(figure, axes, label="mean reached feed, % of programmed", **kwargs):
+    """The colour bar of draw_feed_map's colours, 0 to 100 % of the programmed feed."""
     scalar = ScalarMappable(cmap=FEED_COLORMAP, norm=Normalize(0, 100))
-    figure.colorbar(scalar, ax=axes, label="mean reached feed, % of programmed", shrink=0.8)
+    return figure.colorbar(scalar, ax=axes, label=label, **kwargs)
+
+
+def save_feed_map(blocks, path, title):
+    """Plan view of the path, each cutting block coloured by its mean reached / programmed feed."""
+    figure = new_figure(11, 6.5)
+    axes = figure.add_subplot(1, 1, 1)
+    draw_feed_map(axes, blocks)
+    feed_share_bar(figure, axes, shrink=0.8)
     axes.set_title(title, fontsize=10)
     figure.tight_layout()
     figure.savefig(path)
