@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -30,6 +31,20 @@ void parallelSlices(long n, int threads, long grain, Work&& work) {
     });
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+// Calls work(from, to) over [0, n) in chunks of `chunk` items that `threads` threads (0: all cores) take in
+// turn as they finish: the load balances itself where items cost unequally (a drop-cutter point over a dense
+// region of the mesh costs several times one over a sparse one, so equal halves finish apart).
+template <class Work>
+void parallelChunks(long n, int threads, long chunk, Work&& work) {
+  chunk = std::max<long>(1, chunk);
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const long workers = std::min<long>(threads, (n + chunk - 1) / chunk);
+  std::atomic<long> next{0};
+  parallelSlices(workers, static_cast<int>(workers), 1, [&](long, long) {  // one slice per thread
+    for (long from = next.fetch_add(chunk); from < n; from = next.fetch_add(chunk)) work(from, std::min(n, from + chunk));
+  });
 }
 
 }  // namespace hsm

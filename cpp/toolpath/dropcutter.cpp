@@ -147,7 +147,7 @@ Contact BallDropCutter::drop(double x, double y) const {
 void BallDropCutter::dropAll(geometry::PointArray& points, std::vector<int>* faces, int threads) const {
   const Eigen::Index n = points.rows();
   if (faces) faces->assign(static_cast<size_t>(n), 0);
-  parallelSlices(static_cast<long>(n), threads, 2000, [&](long from, long to) {
+  parallelChunks(static_cast<long>(n), threads, 2000, [&](long from, long to) {
     for (Eigen::Index i = from; i < to; ++i) {
       const Contact c = drop(points(i, 0), points(i, 1));
       points(i, 2) = c.z;
