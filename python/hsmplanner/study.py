@@ -180,14 +180,18 @@ def _run_cached(variant, inputs, finishing, cache_dir):
 
 def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None, scheduler=None):
     """Every variant of `grid` (variants()) on the bottom face `face` ('Face4') of `part` between boundaries b1
-    and b2 (shapes or BREP text), in worker processes (0: all cores; 1: in this process), or on a Dask
+    and b2 (shapes or BREP text; None for a grid of plane directions only), in worker processes (0: all cores; 1: in this process), or on a Dask
     cluster when `scheduler` is its address ('tcp://host:8786') or a distributed.Client (`workers` is then
     the cluster's). Returns the rows in the grid's order; a failed variant's row has its `error`, a cancelled
     one 'cancelled'. progress(done, row) after each finished variant; returning False cancels the rest."""
     _check(bool(grid), "the grid is empty: nothing to study")
     _check(isinstance(workers, int) and 0 <= workers <= 256, "workers %r must be an integer in [0, 256] (0: all cores)"
            % (workers,))
-    inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
+    needs_boundaries = any(v.get("strategy") != "planes" for v in grid)
+    _check(not needs_boundaries or (b1 is not None and b2 is not None),
+           "guide-curve and 4-step variants need the boundaries b1 and b2 (edges of the face): give them, or study "
+           "plane directions only")
+    inputs = (as_brep(part), face, *(None if b is None else as_brep(b) for b in (b1, b2)))
     # one thread per variant: the variants are the parallel work (threads in each worker would only compete)
     finishing = dict({"threads": 1}, **(finishing or {}))
     rows = [None] * len(grid)

@@ -30,6 +30,13 @@ class Grid(unittest.TestCase):
         grid = study.variants(planes_deg=range(0, 180, 15), k=(0.25, 0.5, 0.75), p=(5, 10, 20), four_step=True)
         self.assertEqual(len(grid), 31)
         self.assertEqual(len({v["name"] for v in grid}), 31)
+        # the paper's hand study: both median constructions beside B1 -> B2, 12 + 27 + 1 = 40 variants
+        paper = study.paper_grid()
+        self.assertEqual(len(paper), 40)
+        self.assertEqual(sorted({v["mode"] for v in paper if v["strategy"] == "guide"}),
+                         ["b1_to_b2", "boundaries_to_median", "median_to_boundaries"])
+        with self.assertRaisesRegex(ValueError, re.escape("net mode 'spiral' is unknown")):
+            study.variants(k=(0.5,), p=(10,), net_modes=("spiral",))
 
 
 class Study(unittest.TestCase):
@@ -77,9 +84,27 @@ class Study(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "rank by 'speed'"):
             study.rank(rows, "speed")
 
+    def test_a_local_dask_cluster_gives_the_rows_the_process_pool_gives(self):
+        grid = study.variants(planes_deg=(0,), k=(0.5,), p=(20,), median=(True,))
+        cluster, address = study.local_cluster(2)
+        try:
+            on_dask = self.run_study(grid, scheduler=address)
+        finally:
+            cluster.close()
+        on_pool = self.run_study(grid, workers=2)
+        self.assertEqual([r["error"] for r in on_dask], ["", ""])
+        self.assertEqual([r["time_s"] for r in on_dask], [r["time_s"] for r in on_pool])
+        self.assertEqual([r["passes"] for r in on_dask], [r["passes"] for r in on_pool])
+        with self.assertRaisesRegex(ValueError, re.escape("scheduler 'localhost:8786' must be a Dask scheduler's "
+                                                          "address such as 'tcp://host:8786'")):
+            self.run_study(grid, scheduler="localhost:8786")
+
     def test_k_refinement_finds_the_best_k_it_evaluated_within_its_bounds(self):
-        best, rows = study.refine_k(self.part.Shape, self.face, self.b1, self.b2, median=True, p=10.0,
-                                    tolerance=0.2, max_evaluations=5, finishing=self.finishing)
+        best, rows = study.refine_k(self.part.Shape, self.face, self.b1, self.b2, p=10.0, tolerance=0.2,
+                                    max_evaluations=5, finishing=self.finishing, net_mode="median_to_boundaries",
+                                    start=0.75)
+        self.assertEqual((rows[0]["k"], rows[0]["mode"]), (0.75, "median_to_boundaries"), "the start K first")
+        self.assertLessEqual(best["time_s"], rows[0]["time_s"], "never worse than the start")
         self.assertLessEqual(len(rows), 5)
         self.assertGreaterEqual(len(rows), 3)
         ks = [r["k"] for r in rows]
@@ -87,9 +112,25 @@ class Study(unittest.TestCase):
         self.assertEqual(best["time_s"], min(r["time_s"] for r in rows if not r["error"]))
         for kwargs, words in ((dict(low=0.0), "K bounds"), (dict(low=0.6, high=0.4), "K bounds"),
                               (dict(tolerance=0.0), "K tolerance 0.0"), (dict(max_evaluations=1), "max evaluations 1"),
-                              (dict(by="length"), "refine K by 'length'")):
+                              (dict(by="length"), "refine K by 'length'"), (dict(start=1.0), "start K 1.0")):
             with self.subTest(words=words), self.assertRaisesRegex(ValueError, re.escape(words)):
                 study.refine_k(self.part.Shape, self.face, self.b1, self.b2, **kwargs)
+
+    def test_along_the_axis_of_a_cylinder_ranks_first_the_direction_papers_case_1(self):
+        # the machining-direction paper's case 1 (R10 about Y, Ø10 ball, Sz 0.01 mm): passes along the axis are
+        # straight and reach the feed; across it they follow the curvature and short passes brake at each end
+        from hsmplanner.app import surfaces
+
+        face = surfaces.cylinder_top()
+        grid = study.variants(planes_deg=(0, 90), feeds_mm_min=(2000, 10000))
+        rows = study.study(face, "Face1", None, None, grid, workers=1,
+                           finishing=dict(tool_diameter=10.0, cusp_height=0.01))
+        for feed in (2000.0, 10000.0):
+            ranked = study.rank([r for r in rows if r["feed_mm_min"] == feed], "time")
+            self.assertEqual([r["angle_deg"] for r in ranked], [90.0, 0.0], "F%g" % feed)
+            self.assertLess(ranked[0]["slowdown_share"], ranked[1]["slowdown_share"])
+        with self.assertRaisesRegex(ValueError, "guide-curve and 4-step variants need the boundaries b1 and b2"):
+            study.study(face, "Face1", None, None, study.variants(four_step=True), workers=1)
 
     def test_the_command_line_ranks_and_names_a_bad_argument(self):
         import subprocess
