@@ -366,6 +366,11 @@ CASES = [
     raises("study an empty grid", "from hsmplanner import study as st\nst.study(part, 'Face4', b1, b2, [])", "ValueError", "the grid is empty"),
     raises("refine K tolerance NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, tolerance=float('nan'))", "ValueError", "K tolerance nan"),
     raises("refine K 1e9 evaluations", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, max_evaluations=10**9)", "ValueError", "max evaluations 1000000000"),
+    raises("study 1e9 net modes", "from hsmplanner import study as st\nst.variants(k=(0.5,), p=(10,), net_modes=__import__('itertools').repeat('b1_to_b2', 10**9))", "ValueError", "net modes: narrow the ranges"),
+    raises("study net mode None", "from hsmplanner import study as st\nst.variants(k=(0.5,), p=(10,), net_modes=[None])", "ValueError", "net mode None is unknown"),
+    raises("study scheduler 42", "from hsmplanner import study as st\nst.study(part, 'Face4', b1, b2, st.variants(planes_deg=(0,)), scheduler=42)", "ValueError", "scheduler 42 must be a Dask scheduler's address"),
+    raises("study Dask cluster of -1 workers", "from hsmplanner import study as st\nst.local_cluster(-1)", "ValueError", "workers -1 must be an integer in [1, 256]"),
+    raises("refine K start NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, start=float('nan'))", "ValueError", "start K nan must lie inside ]0, 1["),
     raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
 ]
 
