@@ -1,5 +1,6 @@
 """The examples run from freecadcmd as a user runs them, and write what they promise."""
 import json
+import re
 import os
 import unittest
 
@@ -168,5 +169,31 @@ class RoughingPathsExample(unittest.TestCase):
         for row in (rows[0], rows[2]):
             self.assertEqual(float(row["axis_spread_deg"]), 0.0, row)
         for picture in ("roughing_paths.png", "roughing_paths_slot.png"):
+            with open(os.path.join(out, picture), "rb") as stream:
+                self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
+
+
+class StrategyStudyExample(unittest.TestCase):
+    def test_forty_variants_ranked_with_the_pareto_front_and_k_refined(self):
+        out = temporary_directory(self)
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "strategy_study.py"), out])
+        self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
+        with open(os.path.join(out, "strategy_study.json")) as stream:
+            rows = json.load(stream)
+        self.assertEqual(len(rows), 40)
+        self.assertEqual([r["name"] for r in rows if r["error"]], [])
+        self.assertEqual({r["strategy"] for r in rows}, {"planes", "guide", "4-step"})
+        for row in rows:  # the machine never beats length / feed, and the five classes share all the time
+            self.assertGreater(row["time_s"], row["length_over_feed_s"], row["name"])
+            shares = sum(row[k] for k in row if k.startswith("time_share_"))
+            self.assertAlmostEqual(shares, 1.0, places=6, msg=row["name"])
+        with open(os.path.join(out, "strategy_study_ranked.txt")) as stream:
+            report = stream.read()
+        self.assertIn("Pareto front", report)
+        refined = [line for line in report.splitlines() if line.strip().startswith("best K =")]
+        self.assertEqual(len(refined), 1, report[-1500:])
+        best_s, start_s = (float(x) for x in re.findall(r": ([0-9.]+) s", refined[0]))
+        self.assertLessEqual(best_s, start_s, "the refinement starts from the grid's best K: never worse")
+        for picture in ("strategy_study.png", "strategy_study_maps.png"):
             with open(os.path.join(out, picture), "rb") as stream:
                 self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
