@@ -151,6 +151,10 @@ class Study(unittest.TestCase):
         bad = subprocess.run(command[:7] + ["Edge999"] + command[8:], env=env, capture_output=True, text=True, timeout=120)
         self.assertEqual(bad.returncode, 2)
         self.assertIn("edge 'Edge999' is not an element of the part", bad.stderr)
+        mode = subprocess.run(command + ["--k", "0.5", "--p", "20", "--net-modes", "b1_to_b2,spiral"], env=env,
+                              capture_output=True, text=True, timeout=120)
+        self.assertEqual(mode.returncode, 2)
+        self.assertIn("net mode 'spiral' is unknown", mode.stderr)
 
 
 if __name__ == "__main__":
