@@ -13,12 +13,15 @@ cancelled (its row says so). Results are cached by their inputs in `cache_dir` (
 change is read back, not recomputed). Bad grids are refused by name before anything runs.
 """
 import concurrent.futures
+import contextlib
 import csv
 import hashlib
 import itertools
 import json
+import math
 import multiprocessing
 import os
+import sys
 
 import numpy as np
 
@@ -43,6 +46,48 @@ def _bounded(values, what):
     values = list(itertools.islice(iter(values), MAX_VARIANTS + 1))
     _check(len(values) <= MAX_VARIANTS, "more than %d %s: narrow the ranges" % (MAX_VARIANTS, what))
     return values
+
+
+RANGE_HELP = "numbers separated by commas (0,45,90), or start:stop:step with stop left out as in range() (0:180:15)"
+
+
+def _number(text, field):
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError("%s: %r is not a number: give %s" % (field, text.strip(), RANGE_HELP)) from None
+    if not math.isfinite(value):
+        raise ValueError("%s: %r is not a finite number" % (field, text.strip()))
+    return value
+
+
+def _too_many(field, count):
+    return ValueError("%s: %d values (more than %d): narrow the range" % (field, count, MAX_VARIANTS))
+
+
+def parse_range(text, field):
+    """The values of a range as the user typed it: "0,45,90", or "0:180:15" (start:stop:step, stop excluded:
+    180° is 0° again for planes). Empty text is no value. ValueError names `field` and what is wrong; more than
+    MAX_VARIANTS values are refused before any is made (a typo of 0:180:0.000001 would fill the memory)."""
+    text = (text or "").strip()
+    if not text:
+        return []
+    if ":" not in text:
+        if text.count(",") >= MAX_VARIANTS:  # counted before splitting: as cheap as the text is long
+            raise _too_many(field, text.count(",") + 1)
+        return [_number(item, field) for item in text.split(",") if item.strip()]
+    parts = text.split(":")
+    if len(parts) != 3:
+        raise ValueError("%s: %r: write start:stop:step (e.g. 0:180:15), or %s" % (field, text, RANGE_HELP))
+    start, stop, step = (_number(part, field) for part in parts)
+    if not step > 0:
+        raise ValueError("%s: the step of %r must be positive" % (field, text))
+    count = math.ceil((stop - start) / step - 1e-9)  # the tolerance keeps 0:0.3:0.1 at 3 values, not 4
+    if count > MAX_VARIANTS:
+        raise _too_many(field, count)
+    if count <= 0:
+        raise ValueError("%s: %r gives no value: stop must be above start" % (field, text))
+    return [round(start + i * step, 9) for i in range(count)]  # rounded: 0.1 × 3 is 0.3, not 0.30000000000000004
 
 
 def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, feeds_mm_min=(4000.0,),
@@ -217,13 +262,42 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
 def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished):
     # fork: the workers inherit the imported core (and inside freecadcmd, sys.executable is not a Python)
     context = multiprocessing.get_context("fork")
-    with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+    with _plain_streams_in_workers(), \
+            concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
         futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
         for future in concurrent.futures.as_completed(futures):
             if finished(futures[future], future.result()) is False:
                 for other in futures:
                     other.cancel()
                 break
+
+
+_forking = {"active": 0, "hooked": False}
+
+
+def _in_forked_child():
+    if not _forking["active"]:
+        return  # a fork of someone else's: left as it is
+    sys.stdin = None  # what multiprocessing then skips closing
+    sys.stdout = sys.__stdout__ or open(os.devnull, "w")
+    sys.stderr = sys.__stderr__ or open(os.devnull, "w")
+
+
+@contextlib.contextmanager
+def _plain_streams_in_workers():
+    """Worker processes forked while the block runs start with the process's own standard streams. FreeCAD's
+    GUI replaces sys.stdin/stdout/stderr by objects that write to the Report view (Qt): a forked worker first
+    closes stdin (multiprocessing), FreeCAD's has no close(), the worker died printing its traceback through
+    the Report view, that print never returned in the forked copy (Qt's locks belong to threads the fork did
+    not copy), and the pool waited forever: FreeCAD froze (found by the Strategy study panel's GUI test)."""
+    if not _forking["hooked"]:  # a fork hook cannot be removed: registered once, acting only inside the block
+        os.register_at_fork(after_in_child=_in_forked_child)
+        _forking["hooked"] = True
+    _forking["active"] += 1
+    try:
+        yield
+    finally:
+        _forking["active"] -= 1
 
 
 def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished):
@@ -282,8 +356,6 @@ def local_cluster(workers=2):
 
 
 def _python_executable():
-    import sys
-
     name = os.path.basename(sys.executable or "")
     return sys.executable if name.startswith("python") else "/usr/bin/python%d" % sys.version_info[0]
 
@@ -374,12 +446,10 @@ def write_json(rows, path):
     return path
 
 
-__all__ = ["variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
+__all__ = ["parse_range", "variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
 
 
 if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)
-    import sys
-
     from hsmplanner.geometry import FREECAD_LIB
 
     sys.path.append(FREECAD_LIB)  # FreeCAD's modules for /usr/bin/python3 (Debian's place)

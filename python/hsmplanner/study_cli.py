@@ -12,19 +12,12 @@ import sys
 
 
 def _numbers(text, what):
+    from hsmplanner.study import parse_range  # (imported by main after FreeCAD, before parse_args calls this)
+
     try:
-        if ":" in text:  # start:stop:step, stop excluded
-            start, stop, step = (float(x) for x in text.split(":"))
-            if step <= 0:
-                raise ValueError
-            values, x = [], start
-            while x < stop - 1e-9 and len(values) <= 10000:
-                values.append(round(x, 9))
-                x += step
-            return values
-        return [float(x) for x in text.split(",") if x.strip()]
-    except ValueError:
-        raise argparse.ArgumentTypeError("%s %r: give numbers separated by commas, or start:stop:step" % (what, text))
+        return parse_range(text, what)
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def parser():

@@ -7,7 +7,7 @@ from hsmplanner.resources import icon
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
                  "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "Separator",
                  "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume", "HSM_VolumeRoughing",
-                 "HSM_RoughingStudy"]
+                 "HSM_RoughingStudy", "HSM_StrategyStudy"]
 
 
 class CommandMasterBottomFeature:
@@ -261,6 +261,9 @@ def register_commands():
     from hsmplanner.gui.roughing_study_panel import CommandRoughingStudy
 
     FreeCADGui.addCommand("HSM_RoughingStudy", CommandRoughingStudy())
+    from hsmplanner.gui.strategy_study_panel import CommandStrategyStudy
+
+    FreeCADGui.addCommand("HSM_StrategyStudy", CommandStrategyStudy())
     from hsmplanner.gui import finishing_ops_gui
 
     finishing_ops_gui.register_commands()
