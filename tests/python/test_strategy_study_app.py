@@ -81,7 +81,8 @@ class InDocument(unittest.TestCase):
         """A planes row and a guide row of a study, applied: the Job's ball end of the study's diameter at the
         row's feed, the angle, a net of the row's K, P and mode, and paths computed."""
         settings = dict(strategy_study.QUICK_FINISHING)
-        grid = strategy_study.study_grid(planes="90", k="0.5", p="20", median="with the median", feeds="3000")
+        grid = strategy_study.study_grid(planes="90", k="0.5", p="20", median="with the median", four_step=True,
+                                         feeds="3000")
         job = create_job([self.part])
         # headless FreeCAD 0.20 cannot choose among several controllers: the study's one only
         controller = finishing.ball_end_controller(job, settings["tool_diameter"], 3000.0)
@@ -89,10 +90,12 @@ class InDocument(unittest.TestCase):
         inputs = strategy_study.inputs_from_selection(self.selection())
         planes, _ = strategy_study.create_operation(grid[0], inputs, job, controller, settings)
         guide, net = strategy_study.create_operation(grid[1], inputs, job, controller, settings)
+        four_step, four_step_net = strategy_study.create_operation(grid[2], inputs, job, controller, settings)
         self.document.recompute()
         self.assertAlmostEqual(planes.Angle.Value, 90.0)
         self.assertEqual((net.Mode, net.K, net.Step.Value), ("Boundaries to median", 0.5, 20.0))
-        for op in (planes, guide):
+        self.assertEqual(four_step_net.Mode, strategy_study.FOUR_STEP)
+        for op in (planes, guide, four_step):
             self.assertTrue(op.isValid(), op.getStatusString())
             self.assertIs(op.ToolController, controller)
             self.assertAlmostEqual(op.CuspHeight.Value, settings["cusp_height"])
