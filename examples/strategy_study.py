@@ -64,6 +64,12 @@ def main(argv):
     report += ["Ranked by simulated time:"] + table(ranked) + [""]
     report += ["Pareto front (no other variant is both faster and less slowed):"] + table(front) + [""]
     report += ["Failed: %s: %s" % (r["name"], r["error"]) for r in failed]
+    report += ["Where the Pareto front's variants lose most time (runs of blocks below F/2; lost against length/feed):"]
+    for row in front:
+        report += ["  %s: %s" % (row["name"].split(" F")[0], "; ".join(
+            "%.2f s at X%.0f Y%.0f over %.0f mm (%s)" % (w["lost_s"], w["x_mm"], w["y_mm"], w["length_mm"], w["held_by"])
+            for w in row["worst_slowdowns"]))]
+    report += [""]
 
     best_guide = next(r for r in ranked if r["strategy"] == "guide")
     started = time.perf_counter()

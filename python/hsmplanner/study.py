@@ -33,6 +33,8 @@ MODE_LABELS = {"b1_to_b2": "B1→B2", "b2_to_b1": "B2→B1", "median": "median",
                "boundaries_to_median": "B→median"}
 FEED_CLASS_NAMES = ["below_20", "20_40", "40_60", "60_80", "above_80"]  # the paper's five, % of F
 MAX_VARIANTS = 10000
+WORST_REGIONS = 3  # the slowdown regions kept per row
+ROW_VERSION = 2  # part of the cache key: rows cached before the scores changed are computed again
 SCHEDULER_TIMEOUT_S = 20
 
 
@@ -193,12 +195,37 @@ def score(variant, stats, result):
                slowdown_share=float(times[slow].sum() / times.sum()) if times.sum() > 0 else 0.0)
     for name, t in zip(FEED_CLASS_NAMES, scores["feed_classes_time"]):
         row["time_share_" + name] = t / total
+    row["worst_slowdowns"] = worst_slowdowns(blocks)
     row["error"] = ""
     return row
 
 
+def worst_slowdowns(blocks, count=WORST_REGIONS):
+    """Where the machine loses the most time: runs of consecutive cutting blocks whose mean feed is below half
+    the programmed one, the `count` that lose most against length/feed, each as {x_mm, y_mm, z_mm (the run's
+    middle, weighted by time), length_mm, time_s, lost_s, held_by (what set the blocks' speed limit longest:
+    an axis, or F where the feed itself did and the time went to the ramps between short blocks)}."""
+    motion, feed = np.asarray(blocks["motion"]), np.asarray(blocks["programmed_feed"])
+    slow = (motion != 0) & (np.asarray(blocks["mean_feed"]) < 0.5 * feed)
+    edges = np.flatnonzero(np.diff(np.concatenate(([0], slow.astype(np.int8), [0]))))
+    time, length = np.asarray(blocks["time"]), np.asarray(blocks["length"])
+    middle = 0.5 * (np.asarray(blocks["start"]) + np.asarray(blocks["end"]))
+    regions = []
+    for begin, end in zip(edges[::2], edges[1::2]):
+        span = slice(begin, end)
+        weights = time[span] if time[span].sum() > 0 else np.ones(end - begin)
+        x, y, z = np.average(middle[span], axis=0, weights=weights)
+        limits = np.bincount(np.asarray(blocks["limit"])[span], weights=time[span], minlength=len(feedsim.SPEED_LIMITS))
+        regions.append(dict(x_mm=round(float(x), 2), y_mm=round(float(y), 2), z_mm=round(float(z), 2),
+                            length_mm=round(float(length[span].sum()), 2), time_s=round(float(time[span].sum()), 3),
+                            lost_s=round(float((time[span] - length[span] / feed[span]).sum()), 3),
+                            held_by=feedsim.SPEED_LIMITS[int(np.argmax(limits))]))
+    return sorted(regions, key=lambda r: -r["lost_s"])[:count]
+
+
 def _key(variant, inputs):
-    text = json.dumps([variant, [hashlib.sha256(str(x).encode()).hexdigest() for x in inputs]], sort_keys=True)
+    text = json.dumps([ROW_VERSION, variant, [hashlib.sha256(str(x).encode()).hexdigest() for x in inputs]],
+                      sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()[:32]
 
 
@@ -436,7 +463,9 @@ def write_csv(rows, path):
     with open(path, "w", newline="") as stream:
         writer = csv.DictWriter(stream, fieldnames=columns)
         writer.writeheader()
-        writer.writerows(rows)
+        # lists (the worst slowdown regions) as JSON text in their cell
+        writer.writerows({k: json.dumps(v) if isinstance(v, (list, dict)) else v for k, v in row.items()}
+                         for row in rows)
     return path
 
 
@@ -446,7 +475,7 @@ def write_json(rows, path):
     return path
 
 
-__all__ = ["parse_range", "variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
+__all__ = ["parse_range", "variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "worst_slowdowns", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
 
 
 if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)

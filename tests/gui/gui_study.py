@@ -174,6 +174,9 @@ def a_small_grid_on_two_workers(run):
     table = p.form.table
     table.sortItems(1)  # by time: sorting keeps each row's variant
     run.check("sorting by time keeps the rows", sorted(table_rows(p)) == names)
+    tips = [table.item(r, 0).toolTip() for r in range(table.rowCount())]
+    run.check("each row's tip says where the machine loses most time",
+              all("loses most time (below F/2)" in tip and " at X" in tip for tip in tips), tips)
     state["names"] = names
     scroll_to(p.form.table)
     run.screenshot("strategy_study_table")

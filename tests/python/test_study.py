@@ -64,6 +64,12 @@ class Study(unittest.TestCase):
         self.assertEqual(study.rank(rows, "time")[0]["feed_mm_min"], 6000.0)
         self.assertLess(rows[0]["slowdown_share"], rows[1]["slowdown_share"], "F1000 is rarely slowed to half")
         self.assertEqual(rows[0]["path_mm"], rows[1]["path_mm"])
+        worst = rows[1]["worst_slowdowns"]  # F6000: the regions losing most, in order, each somewhere on the part
+        self.assertTrue(0 < len(worst) <= 3, worst)
+        self.assertEqual([w["lost_s"] for w in worst], sorted((w["lost_s"] for w in worst), reverse=True))
+        for region in worst:
+            self.assertTrue(0.0 < region["lost_s"] < region["time_s"], region)
+            self.assertTrue(-10.0 <= region["x_mm"] <= 150.0 and -10.0 <= region["y_mm"] <= 70.0, region)
         # the same inputs again: read back from the cache, the same figures
         again = self.run_study(grid, workers=1, cache_dir=folder)
         self.assertEqual([r["cached"] for r in again], [True, True])

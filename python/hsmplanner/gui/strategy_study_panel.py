@@ -87,6 +87,14 @@ def draw_stacked_maps(figure, maps):
     bar.ax.xaxis.label.set_fontsize(6)
 
 
+def worst_text(row):
+    """The row's worst slowdown regions, for its tooltip: where the machine loses the most time."""
+    regions = row.get("worst_slowdowns") or []
+    return "".join(["\nloses most time (below F/2):"] + [
+        "\n  %.2f s at X%.0f Y%.0f over %.0f mm (held by %s)" % (w["lost_s"], w["x_mm"], w["y_mm"], w["length_mm"],
+                                                            w["held_by"]) for w in regions]) if regions else ""
+
+
 class StrategyStudyPanel(TaskPanel):
     def __init__(self):
         self.inputs = None         # StrategyStudy's inputs: what the next run studies
@@ -308,7 +316,7 @@ class StrategyStudyPanel(TaskPanel):
             item.setText(str(value))
         if index is not None:
             item.setData(QtCore.Qt.UserRole, index)  # the row of self.rows, whatever the sorting
-            item.setToolTip(row["name"] + (": " + row["error"] if row.get("error") else ""))
+            item.setToolTip(row["name"] + (": " + row["error"] if row.get("error") else "") + worst_text(row))
         return item
 
     def selected_rows(self):
