@@ -9,6 +9,7 @@
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <TopExp_Explorer.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 #include <BRep_Tool.hxx>
@@ -21,6 +22,10 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <list>
+#include <mutex>
+#include <sstream>
 
 namespace hsm::geometry {
 
@@ -69,6 +74,64 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
       mesh.faceOf.push_back(index);
     }
   }
+  return mesh;
+}
+
+namespace {
+struct KeptMesh {
+  size_t hash;
+  std::string brep;  // compared in full on a hit: two parts never share a mesh by a hash collision
+  double deflection;
+  TriangleMesh mesh;
+  // Meshing leaves its triangulations on the faces, and what runs after reads them (a bounding box of the
+  // part is the triangulation's where there is one: the rapids' safe height): a hit puts them back.
+  std::vector<std::pair<int, Handle(Poly_Triangulation)>> triangulations;
+};
+constexpr size_t kKeptMeshes = 4;  // a part or two in a session: a few MB each
+
+std::string facesBrep(const TopTools_IndexedMapOfShape& map, const std::vector<int>& faces) {
+  BRep_Builder builder;
+  TopoDS_Compound selected;
+  builder.MakeCompound(selected);
+  for (int index = 1; index <= map.Extent(); ++index)
+    if (faces.empty() || std::find(faces.begin(), faces.end(), index) != faces.end()) builder.Add(selected, map(index));
+  std::ostringstream text;
+  text << map.Extent() << ':';  // the numbers the faces were taken by (empty: all, as meshFaces reads it)
+  for (int index : faces) text << ' ' << index;
+  text << '\n';
+  BRepTools::Write(selected, text);
+  return text.str();
+}
+}  // namespace
+
+TriangleMesh meshFacesKept(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces) {
+  static std::mutex mutex;
+  static std::list<KeptMesh> kept;  // most recent first
+  TopTools_IndexedMapOfShape map;
+  TopExp::MapShapes(shape, TopAbs_FACE, map);
+  std::string brep = facesBrep(map, faces);
+  const size_t hash = std::hash<std::string>{}(brep);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+      if (it->hash == hash && it->deflection == deflection && it->brep == brep) {
+        kept.splice(kept.begin(), kept, it);
+        BRep_Builder builder;
+        for (const auto& [index, triangulation] : it->triangulations)
+          builder.UpdateFace(TopoDS::Face(map(index)), triangulation);
+        return it->mesh;
+      }
+  }
+  TriangleMesh mesh = meshFaces(shape, deflection, faces);  // outside the lock: meshing takes its time
+  std::vector<std::pair<int, Handle(Poly_Triangulation)>> triangulations;
+  for (int index = 1; index <= map.Extent(); ++index) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(TopoDS::Face(map(index)), location);
+    if (!triangulation.IsNull()) triangulations.emplace_back(index, triangulation);
+  }
+  const std::lock_guard<std::mutex> lock(mutex);
+  kept.push_front({hash, std::move(brep), deflection, mesh, std::move(triangulations)});
+  if (kept.size() > kKeptMeshes) kept.pop_back();
   return mesh;
 }
 

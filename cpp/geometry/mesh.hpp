@@ -28,6 +28,12 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
 // result that must not depend on what ran before: the roughing's setup search and sweeps).
 TriangleMesh meshFacesAfresh(const TopoDS_Shape& shape, double deflection);
 
+// meshFaces with its last few results kept, by the exact BREP text of the faces asked for (their geometry and
+// any triangulation they carry: the state meshFaces starts from) and the deflection: the same part finished
+// again — a study's next variant, a preview after K changed — is not meshed again (meshing was 38 % of a
+// finishing). The mesh is the one meshFaces gives the same faces in the same state; thread-safe.
+TriangleMesh meshFacesKept(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces);
+
 // The boundary edges of face `face` of `shape` as polylines with chords of at most `spacing` mm.
 void addFaceBoundary(TriangleMesh& mesh, const TopoDS_Shape& shape, int face, double spacing);
 

@@ -76,7 +76,8 @@ Context::Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettin
     const bool nearInPlan = !faceBox.IsVoid() && !reachBox.IsOut(faceBox);
     if ((i != bottomFace || reach.up < 1.0) && nearInPlan) others.push_back(i);
   }
-  geometry::TriangleMesh mesh = others.empty() ? geometry::TriangleMesh{} : geometry::meshFaces(part, settings.meshDeflection, others);
+  geometry::TriangleMesh mesh =
+      others.empty() ? geometry::TriangleMesh{} : geometry::meshFacesKept(part, settings.meshDeflection, others);
   geometry::addFaceBoundary(mesh, part, bottomFace, 0.05);
   cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
   exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius, reach.toolSide);

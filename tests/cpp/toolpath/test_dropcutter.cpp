@@ -5,6 +5,9 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <gp_Pln.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <Bnd_Box.hxx>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +78,43 @@ TEST(DropCutter, ManyPointsOnTwoThreadsEqualOneByOne) {
     EXPECT_EQ(faces[static_cast<size_t>(i)], c.face);
   }
   EXPECT_NEAR(parallel(5000, 2), 0.0, 1e-12);  // on the top face
+}
+
+namespace {
+bool sameMesh(const TriangleMesh& a, const TriangleMesh& b) {
+  return a.vertices == b.vertices && a.triangles == b.triangles && a.faceOf == b.faceOf;
+}
+}  // namespace
+
+TEST(DropCutter, KeptMeshesAreTheMeshesOfTheSameFacesInTheSameState) {
+  // A fresh copy of the same part (as a BREP read again gives): the kept mesh, equal to meshing it; another
+  // deflection, other faces or another part are meshed for themselves.
+  const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), 20.0, 30.0).Shape();
+  const auto fresh = [&] { return BRepBuilderAPI_Copy(cylinder, Standard_True, Standard_False).Shape(); };
+  const TriangleMesh first = meshFacesKept(fresh(), 0.05, {1, 2});
+  EXPECT_TRUE(sameMesh(first, meshFaces(fresh(), 0.05, {1, 2})));
+  EXPECT_TRUE(sameMesh(meshFacesKept(fresh(), 0.05, {1, 2}), first));
+  const TriangleMesh finer = meshFacesKept(fresh(), 0.01, {1, 2});
+  EXPECT_GT(finer.triangles.size(), first.triangles.size());
+  EXPECT_TRUE(sameMesh(finer, meshFaces(fresh(), 0.01, {1, 2})));
+  EXPECT_TRUE(sameMesh(meshFacesKept(fresh(), 0.05, {2}), meshFaces(fresh(), 0.05, {2})));
+  const TopoDS_Shape wider = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), 21.0, 30.0).Shape();
+  EXPECT_TRUE(sameMesh(meshFacesKept(wider, 0.05, {1, 2}), meshFaces(BRepBuilderAPI_Copy(wider).Shape(), 0.05, {1, 2})));
+  EXPECT_THROW(meshFacesKept(fresh(), 0.05, {9}), InputError);
+  // What runs after reads the triangulations meshing leaves on the faces (a bounding box of the part): a hit
+  // leaves the same ones.
+  const auto boxAfter = [&](const TopoDS_Shape& part) {
+    meshFacesKept(part, 0.05, {1});
+    Bnd_Box box;
+    BRepBndLib::Add(part, box);
+    return box.CornerMax().X();  // from the lateral face's triangulation, or from its geometry
+  };
+  const TopoDS_Shape missed = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), 20.0, 31.0).Shape();
+  const double side = boxAfter(missed);
+  Bnd_Box untouched;
+  BRepBndLib::Add(BRepBuilderAPI_Copy(missed, Standard_True, Standard_False).Shape(), untouched);
+  EXPECT_NE(side, untouched.CornerMax().X()) << "the box is the triangulation's where there is one";
+  EXPECT_EQ(boxAfter(BRepBuilderAPI_Copy(missed, Standard_True, Standard_False).Shape()), side);
 }
 
 TEST(DropCutter, BadInput) {
