@@ -47,4 +47,47 @@ void parallelChunks(long n, int threads, long chunk, Work&& work) {
   });
 }
 
+// parallelChunks for work whose progress a caller reports from its own thread (a Python callback): the calling
+// thread takes chunks too and, after each of its chunks, calls report(items done); an exception there (the user
+// cancelled) stops the other threads at their next chunk and reaches the caller after the join.
+template <class Work, class Report>
+void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Report&& report) {
+  chunk = std::max<long>(1, chunk);
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const long helpers = std::min<long>(threads, (n + chunk - 1) / chunk) - 1;
+  std::atomic<long> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  const auto takeChunk = [&] {
+    const long from = stop ? n : next.fetch_add(chunk);
+    if (from >= n) return false;
+    const long to = std::min(n, from + chunk);
+    work(from, to);
+    done += to - from;
+    return true;
+  };
+  std::exception_ptr failure;
+  std::mutex mutex;
+  std::vector<std::thread> pool;
+  for (long k = 0; k < helpers; ++k)
+    pool.emplace_back([&] {
+      try {
+        while (takeChunk()) {
+        }
+      } catch (...) {
+        stop = true;
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    });
+  try {
+    while (takeChunk()) report(done.load());
+  } catch (...) {
+    stop = true;
+    for (auto& t : pool) t.join();
+    throw;
+  }
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 }  // namespace hsm

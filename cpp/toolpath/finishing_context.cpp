@@ -129,10 +129,10 @@ double Context::dropTip(double x, double y, SurfaceBallDrop::Result& state, bool
   return z;
 }
 
-void Context::dropAll(geometry::PointArray& points, std::vector<char>& onBottom) const {
+void Context::dropAll(geometry::PointArray& points, std::vector<char>& onBottom, int threads) const {
   onBottom.assign(static_cast<size_t>(points.rows()), 0);
   // chunks taken in turn: a point costs what the surface under it asks (a warm start saves most; a fillet not)
-  parallelChunks(static_cast<long>(points.rows()), settings_.threads, 500, [&](long from, long to) {
+  parallelChunks(static_cast<long>(points.rows()), threads < 0 ? settings_.threads : threads, 500, [&](long from, long to) {
     SurfaceBallDrop::Result state;
     bool haveGuess = false;
     for (Eigen::Index i = from; i < to; ++i) {
@@ -154,13 +154,13 @@ double Context::tipAt(double x, double y) const {
   return dropTip(x, y, state, haveGuess);
 }
 
-std::vector<Pass> Context::cut(const std::vector<Vector2>& plan) {
+std::vector<Pass> Context::cut(const std::vector<Vector2>& plan, int threads) const {
   std::vector<Pass> passes;
   if (plan.size() < 2) return passes;
   geometry::PointArray points(static_cast<Eigen::Index>(plan.size()), 3);
   for (size_t i = 0; i < plan.size(); ++i) points.row(static_cast<Eigen::Index>(i)) << plan[i].x(), plan[i].y(), 0.0;
   std::vector<char> onBottom;
-  dropAll(points, onBottom);
+  dropAll(points, onBottom, threads);
   dropped += points.rows();
   // Runs of positions where the ball rests on the bottom face; where a flank holds it up the run ends
   // (it would only ride up the wall).
@@ -196,7 +196,7 @@ std::vector<Pass> Context::cut(const std::vector<Vector2>& plan) {
 }
 
 void Context::bisect(const Vector3& a, const Vector3& b, int depth, Pass& out, SurfaceBallDrop::Result& state,
-                     bool& haveGuess, const std::function<double(const Vector2&)>& floor) {
+                     bool& haveGuess, const std::function<double(const Vector2&)>& floor) const {
   const Vector2 mid = 0.5 * (a.head<2>() + b.head<2>());
   double z = dropTip(mid.x(), mid.y(), state, haveGuess);
   ++dropped;
@@ -236,7 +236,7 @@ size_t Context::extend(const geometry::PointArray& points, const std::vector<Vec
   return k;
 }
 
-Pass Context::refine(const geometry::PointArray& points, const std::vector<size_t>& indices) {
+Pass Context::refine(const geometry::PointArray& points, const std::vector<size_t>& indices) const {
   Pass pass;
   SurfaceBallDrop::Result state;  // carried from one midpoint to the next: they are neighbours
   bool haveGuess = false;

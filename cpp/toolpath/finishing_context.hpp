@@ -12,6 +12,7 @@
 
 #include <TopoDS_Face.hxx>
 
+#include <atomic>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -49,24 +50,26 @@ public:
   // `state` carries the surface parameters from one point to the next along a pass.
   double dropTip(double x, double y, SurfaceBallDrop::Result& state, bool& haveGuess, bool* onBottom = nullptr) const;
 
-  // Tips along plan points, on the threads asked for (each slice of the pass starts its own Newton).
-  void dropAll(geometry::PointArray& points, std::vector<char>& onBottom) const;
+  // Tips along plan points, on `threads` threads (-1: the settings'; each chunk starts its own Newton).
+  void dropAll(geometry::PointArray& points, std::vector<char>& onBottom, int threads = -1) const;
   // The stepover on a flat face.
   double flatStep() const;
   double safeHeight() const { return safeHeight_; }
   double tipAt(double x, double y) const;
   Vector2 faceMin() const { return faceMin_; }
   Vector2 faceMax() const { return faceMax_; }
-  long dropped = 0;
+  // Cutter positions computed (for the figures): counted from the threads that cut passes side by side.
+  mutable std::atomic<long> dropped{0};
 
-  // Cutter passes along a plan polyline: dropped, kept over the bottom face (extended past open ends),
-  // refined within the tolerance and reduced to G1 points. A polyline may give several passes.
-  std::vector<Pass> cut(const std::vector<Vector2>& plan);
+  // Cutter passes along a plan polyline: dropped (on `threads` threads, -1: the settings'), kept over the
+  // bottom face (extended past open ends), refined within the tolerance and reduced to G1 points. A polyline
+  // may give several passes. Safe to call from several threads at once (passes cut side by side).
+  std::vector<Pass> cut(const std::vector<Vector2>& plan, int threads = -1) const;
 
   // Points between a and b where the path bends more than a quarter of the tolerance off the chord, by
   // bisection (at most 8 levels): the tip dropped at each midpoint, raised to `floor` there if given.
   void bisect(const Vector3& a, const Vector3& b, int depth, Pass& out, SurfaceBallDrop::Result& state,
-              bool& haveGuess, const std::function<double(const Vector2&)>& floor = {});
+              bool& haveGuess, const std::function<double(const Vector2&)>& floor = {}) const;
 
 private:
   // The gap between positions `from` and `to` (the ball off the face in between) is a hole the tool
@@ -75,7 +78,7 @@ private:
 
   size_t extend(const geometry::PointArray& points, const std::vector<Vector2>& plan, size_t end, int step) const;
 
-  Pass refine(const geometry::PointArray& points, const std::vector<size_t>& indices);
+  Pass refine(const geometry::PointArray& points, const std::vector<size_t>& indices) const;
 
   // Douglas-Peucker: the fewest points within 3/4 of the tolerance of the refined polyline.
   Pass simplify(const Pass& pass) const;

@@ -1,5 +1,7 @@
 #include "toolpath/passes.hpp"
 
+#include "common/parallel.hpp"
+
 #include "common/error.hpp"
 #include "common/text.hpp"
 
@@ -64,12 +66,23 @@ std::vector<double> passParameters(Context& context, const Family& family, bool 
 // The passes of a family cut along the parameters; progress: the second half of `phase`.
 std::vector<std::vector<Pass>> cutPasses(Context& context, const Family& family, const std::vector<double>& parameters,
                                          Phase phase) {
+  // The plans first, in order (a family may fill a cache as it goes), then the passes cut side by side on the
+  // threads asked for, one pass a chunk (a pass costs what its length and the surface under it ask); each
+  // pass's drop is then single-threaded. Progress is reported from this thread.
+  const long n = static_cast<long>(parameters.size());
+  std::vector<std::vector<Vector2>> plans;
+  plans.reserve(parameters.size());
+  for (double parameter : parameters) plans.push_back(family.plan(parameter, context.settings().sampling));
+  std::vector<std::vector<Pass>> cuts(parameters.size());
+  parallelChunksReporting(
+      n, context.settings().threads, 1,
+      [&](long from, long to) {
+        for (long k = from; k < to; ++k) cuts[static_cast<size_t>(k)] = context.cut(plans[static_cast<size_t>(k)], 1);
+      },
+      [&](long done) { context.report(phase.at(0.5 + 0.5 * double(done) / double(std::max(1L, n)))); });
   std::vector<std::vector<Pass>> lines;
-  for (size_t k = 0; k < parameters.size(); ++k) {
-    std::vector<Pass> cut = context.cut(family.plan(parameters[k], context.settings().sampling));
+  for (std::vector<Pass>& cut : cuts)
     if (!cut.empty()) lines.push_back(std::move(cut));
-    context.report(phase.at(0.5 + 0.5 * double(k + 1) / double(parameters.size())));
-  }
   return lines;
 }
 

@@ -311,3 +311,28 @@ TEST(Finishing, AFloorUnderAnOverhangIsNotReachedThroughThePart) {
   for (const Move& m : path.moves)
     if (!m.rapid && m.point.z() < 10.5) EXPECT_LT(m.point.y(), 25.0 - 1.99) << "a pass on the floor under the shelf";
 }
+
+// Passes are cut side by side on the threads asked for (each pass's drop then single-threaded): the path is
+// the one thread's, move for move, and a cancel from the progress callback stops every thread.
+TEST(Finishing, PassesCutOnTwoThreadsAreOneThreadsAndCancelStopsThemAll) {
+  FinishingSettings one = settings(), two = settings();
+  one.threads = 1;
+  two.threads = 2;
+  const auto guide = [](const FinishingSettings& s) {
+    return guideCurveFinishing(feature().shape, bottomIndex(), {{feature().boundary1, feature().boundary2}},
+                               Eigen::Vector3d::UnitX(), s);
+  };
+  const Toolpath serial = guide(one), parallel = guide(two);
+  ASSERT_EQ(serial.moves.size(), parallel.moves.size());
+  for (size_t k = 0; k < serial.moves.size(); ++k) ASSERT_EQ(serial.moves[k].point, parallel.moves[k].point) << k;
+  EXPECT_EQ(serial.passLengths, parallel.passLengths);
+  EXPECT_EQ(serial.droppedPoints, parallel.droppedPoints);
+  double last = 0.0;
+  two.progress = [&](double done) {
+    last = done;
+    return done < 0.7;
+  };
+  EXPECT_THROW(guide(two), Cancelled);
+  EXPECT_GE(last, 0.7);
+  EXPECT_LT(last, 1.0);
+}
