@@ -13,6 +13,7 @@ cancelled (its row says so). Results are cached by their inputs in `cache_dir` (
 change is read back, not recomputed). Bad grids are refused by name before anything runs.
 """
 import concurrent.futures
+import concurrent.futures.process
 import contextlib
 import csv
 import hashlib
@@ -37,6 +38,7 @@ MAX_VARIANTS = 10000
 WORST_REGIONS = 3  # the slowdown regions kept per row
 ROW_VERSION = 2  # part of the cache key: rows cached before the scores changed are computed again
 SCHEDULER_TIMEOUT_S = 20
+IDLE_S = 0.2  # how often idle() runs while variants run elsewhere
 
 
 def _check(condition, message):
@@ -256,12 +258,16 @@ def _run_cached(variant, inputs, finishing, cache_dir):
     return row
 
 
-def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None, scheduler=None):
+def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None, scheduler=None,
+          idle=None):
     """Every variant of `grid` (variants()) on the bottom face `face` ('Face4') of `part` between boundaries b1
     and b2 (shapes or BREP text; None for a grid of plane directions only), in worker processes (0: all cores; 1: in this process), or on a Dask
     cluster when `scheduler` is its address ('tcp://host:8786') or a distributed.Client (`workers` is then
     the cluster's). Returns the rows in the grid's order; a failed variant's row has its `error`, a cancelled
-    one 'cancelled'. progress(done, row) after each finished variant; returning False cancels the rest."""
+    one 'cancelled'. progress(done, row) after each finished variant; returning False cancels the rest.
+    idle(), if given, is called about five times a second while variants run elsewhere (workers, a cluster):
+    a GUI stays responsive and its Cancel is seen mid-variant; returning False cancels too. A worker process
+    that dies (a crash in a variant) fails its variant's row, not the study."""
     _check(bool(grid), "the grid is empty: nothing to study")
     _check(isinstance(workers, int) and 0 <= workers <= 256, "workers %r must be an integer in [0, 256] (0: all cores)"
            % (workers,))
@@ -282,27 +288,58 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
         return progress(done / len(grid), row) if progress else True
 
     if scheduler is not None:
-        _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished)
+        _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle)
     elif (workers or os.cpu_count() or 1) == 1:
         for index, variant in enumerate(grid):
             if finished(index, _run_cached(variant, inputs, finishing, cache_dir)) is False:
                 break
     else:
-        _run_on_processes(workers or os.cpu_count(), grid, inputs, finishing, cache_dir, finished)
+        _run_on_processes(workers or os.cpu_count(), grid, inputs, finishing, cache_dir, finished, idle)
     return [row if row is not None else dict(variant, error="cancelled") for row, variant in zip(rows, grid)]
 
 
-def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished):
+def _collect(futures, ready, finished, idle, failed_row):
+    """The rows of `futures` ({future: grid index}) as they end: ready(pending) gives the ended ones (waiting
+    at most IDLE_S), idle() runs while none ends. False when the study was cancelled."""
+    pending = set(futures)
+    while pending:
+        ended = ready(pending)
+        if not ended and idle is not None and idle() is False:
+            return False
+        for future in ended:
+            pending.discard(future)
+            try:
+                row = future.result()
+            except Exception as error:  # the worker died or the task could not run: its row says so
+                row = failed_row(futures[future], error)
+            if finished(futures[future], row) is False:
+                return False
+    return True
+
+
+def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished, idle):
     # fork: the workers inherit the imported core (and inside freecadcmd, sys.executable is not a Python)
     context = multiprocessing.get_context("fork")
-    with _plain_streams_in_workers(), \
-            concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
-        for future in concurrent.futures.as_completed(futures):
-            if finished(futures[future], future.result()) is False:
-                for other in futures:
-                    other.cancel()
-                break
+    with _plain_streams_in_workers():
+        pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context)
+        try:
+            futures = {pool.submit(_run_cached, v, inputs, finishing, cache_dir): i for i, v in enumerate(grid)}
+        except BaseException:
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
+    ready = lambda pending: concurrent.futures.wait(pending, IDLE_S, concurrent.futures.FIRST_COMPLETED)[0]  # noqa: E731
+    completed = False
+    try:
+        completed = _collect(futures, ready, finished, idle, lambda i, error: _failed(grid[i], error))
+    finally:
+        # cancelled: the variants not started are dropped, the running ones end in the background
+        pool.shutdown(wait=completed, cancel_futures=not completed)
+
+
+def _failed(variant, error):
+    text = "a worker process died: this variant or one running beside it crashed" if isinstance(
+        error, concurrent.futures.process.BrokenProcessPool) else "%s: %s" % (type(error).__name__, error)
+    return dict(variant, error=text)
 
 
 _forking = {"active": 0, "hooked": False}
@@ -333,7 +370,7 @@ def _plain_streams_in_workers():
         _forking["active"] -= 1
 
 
-def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished):
+def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle):
     """The variants as tasks of a Dask cluster: the BREP texts are scattered once to every worker, each task
     is one variant (run_variant in the worker, which imports hsmplanner: start the workers with the
     repository's python/ folder on PYTHONPATH). Finished rows come back as they end; a cancel drops the rest."""
@@ -345,16 +382,17 @@ def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished):
     client = scheduler if isinstance(scheduler, distributed.Client) else _connect(distributed, scheduler)
     try:
         shared = client.scatter(list(inputs), broadcast=True, hash=False)
-        futures = [client.submit(_run_cached, v, shared, finishing, cache_dir, pure=False) for v in grid]
-        index = {future.key: i for i, future in enumerate(futures)}
-        for future in distributed.as_completed(futures):
-            try:
-                row = future.result()
-            except Exception as error:  # a worker lost or a task that could not be sent: its row says so
-                row = dict(grid[index[future.key]], error="%s: %s" % (type(error).__name__, error))
-            if finished(index[future.key], row) is False:
-                client.cancel(futures)
-                break
+        futures = {client.submit(_run_cached, v, shared, finishing, cache_dir, pure=False): i
+                   for i, v in enumerate(grid)}
+        arrived = distributed.as_completed(list(futures))
+
+        def ready(pending):
+            if not arrived.has_ready():
+                time.sleep(IDLE_S)
+            return arrived.next_batch(block=False) if arrived.has_ready() else []
+
+        if not _collect(futures, ready, finished, idle, lambda i, error: _failed(grid[i], error)):
+            client.cancel(list(futures))
     finally:
         if client is not scheduler:
             client.close()

@@ -3,6 +3,7 @@ anything runs, the ranking right on cases whose order is known, rows kept when a
 cancelled, results read back from the cache, worker processes giving the rows one process gives."""
 import os
 import re
+import time
 import unittest
 
 import FreeCAD
@@ -89,6 +90,34 @@ class Study(unittest.TestCase):
         self.assertEqual([r["name"] for r in study.rank(rows)], [rows[0]["name"]])
         with self.assertRaisesRegex(ValueError, "rank by 'speed'"):
             study.rank(rows, "speed")
+
+    def test_idle_cancels_mid_variant_and_a_dead_worker_fails_rows_not_the_study(self):
+        grid = study.variants(planes_deg=(0, 45, 90, 135))
+        ticks = []
+        rows = self.run_study(grid, workers=2, idle=lambda: ticks.append(1) or len(ticks) < 2)
+        self.assertEqual([r["error"] for r in rows], ["cancelled"] * 4, "cancelled before any variant ended")
+        self.assertEqual(len(ticks), 2)
+        # A worker process that dies (as a crash in the core would kill it): the rows finished before are
+        # kept, the others say a worker died; the study returns.
+        real = study._run_cached
+
+        def dies_on_90(variant, *args):
+            if variant.get("angle_deg") == 90.0:
+                time.sleep(1.0)  # the variants before it end first
+                os._exit(3)
+            return real(variant, *args)
+
+        # forked workers run the module's function as it is now (pickled by its name)
+        dies_on_90.__module__, dies_on_90.__qualname__ = study.__name__, "_run_cached"
+        study._run_cached = dies_on_90
+        try:
+            rows = self.run_study(grid, workers=2)
+        finally:
+            study._run_cached = real
+        errors = [r["error"] for r in rows]
+        self.assertIn("a worker process died", errors[2])
+        self.assertEqual(errors[0], "", errors)
+        self.assertGreater(rows[0]["time_s"], 0.0)
 
     def test_a_local_dask_cluster_gives_the_rows_the_process_pool_gives(self):
         grid = study.variants(planes_deg=(0,), k=(0.5,), p=(20,), median=(True,))

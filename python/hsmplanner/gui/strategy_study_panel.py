@@ -249,8 +249,9 @@ class StrategyStudyPanel(TaskPanel):
         QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
             with freecad_progress("Strategy study: %d variants" % len(grid)) as progress:
+                on_row, idle = self.progress_of(progress, len(grid))
                 rows = study.study(*shapes, grid, workers=workers, cache_dir=self.cache_dir, finishing=settings,
-                                   progress=self.progress_of(progress, len(grid)))
+                                   progress=on_row, idle=idle)
         except Exception as error:  # a failure of the run itself (each variant's own is in its row)
             self.say("The study failed: %s: %s" % (type(error).__name__, error))
             return None
@@ -264,7 +265,8 @@ class StrategyStudyPanel(TaskPanel):
         return rows
 
     def progress_of(self, progress, count):
-        """study's progress(done, row) on the progress dialog: the dialog's Cancel makes it return False."""
+        """study's progress(done, row) and idle() on the progress dialog: the dialog's Cancel makes them return
+        False; idle keeps the GUI drawn and the dialog shown while the first variants run in the workers."""
         finished = []
 
         def on_row(done, row):
@@ -272,7 +274,10 @@ class StrategyStudyPanel(TaskPanel):
             self.form.status.setText("%d of %d variants done: %s" % (len(finished), count, display_name(row)))
             return progress(done) if progress else True
 
-        return on_row
+        def idle():
+            return progress(len(finished) / count) if progress else True
+
+        return on_row, idle
 
     @staticmethod
     def summary(rows):
