@@ -87,7 +87,10 @@ def parse_range(text, field):
     start, stop, step = (_number(part, field) for part in parts)
     if not step > 0:
         raise ValueError("%s: the step of %r must be positive" % (field, text))
-    count = math.ceil((stop - start) / step - 1e-9)  # the tolerance keeps 0:0.3:0.1 at 3 values, not 4
+    span = (stop - start) / step - 1e-9  # the tolerance keeps 0:0.3:0.1 at 3 values, not 4
+    if not math.isfinite(span):  # 0:1:1e-320: more values than a float counts (ceil would overflow)
+        raise ValueError("%s: %r gives more than %d values: narrow the range" % (field, text, MAX_VARIANTS))
+    count = math.ceil(span)
     if count > MAX_VARIANTS:
         raise _too_many(field, count)
     if count <= 0:
@@ -121,6 +124,9 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
     for name in machines:
         _check(isinstance(name, str) and name in known,
                "machine %r is unknown: use one of %s" % (name, ", ".join(sorted(known))))
+    # counted before any is made: 10,000 K by 10,000 P would be 10^8 variants filling the memory
+    count = (len(planes_deg) + len(k) * len(p) * len(modes) + bool(four_step)) * len(feeds_mm_min) * len(machines)
+    _check(count <= MAX_VARIANTS, "%d variants (more than %d): narrow the ranges" % (count, MAX_VARIANTS))
     shapes = [dict(strategy="planes", angle_deg=float(a)) for a in planes_deg]
     shapes += [dict(strategy="guide", mode=m, k=float(kk), p=float(pp), median="median" in m)
                for kk in k for pp in p for m in modes]
@@ -252,8 +258,12 @@ def _run_cached(variant, inputs, finishing, cache_dir):
         return dict(variant, error="%s: %s" % (type(error).__name__, error))
     if path:
         os.makedirs(cache_dir, exist_ok=True)
-        with open(path, "w") as stream:
+        # written aside and renamed: a worker stopped mid-write or two writing the same variant leave no
+        # half file for a later read
+        temporary = "%s.%d.tmp" % (path, os.getpid())
+        with open(temporary, "w") as stream:
             json.dump(row, stream)
+        os.replace(temporary, path)
     row["cached"] = False
     return row
 
@@ -332,7 +342,11 @@ def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished, idl
     try:
         completed = _collect(futures, ready, finished, idle, lambda i, error: _failed(grid[i], error))
     finally:
-        # cancelled: the variants not started are dropped, the running ones end in the background
+        if not completed:  # cancelled: the running variants are stopped, not left to load the cores
+            for process in list((getattr(pool, "_processes", None) or {}).values()):  # (no public way in 3.11)
+                process.terminate()
+        # not waited for when cancelled: the pool's threads could wait for ever on the pipes of the processes
+        # just stopped
         pool.shutdown(wait=completed, cancel_futures=not completed)
 
 

@@ -222,6 +222,11 @@ class GuiRun:
 
     def start(self, delay_ms=1500):
         os.makedirs(OUT, exist_ok=True)
+        # The watchdog below needs the event loop; a block outside it (a wait that never ends) is shown by
+        # the Python stacks written to the log shortly before the runner's timeout kills FreeCAD.
+        import faulthandler
+
+        faulthandler.dump_traceback_later(WATCHDOG_SECONDS + 60, exit=True, file=sys.__stderr__)
         QtCore.QTimer.singleShot(delay_ms, self.run)
         watchdog = QtCore.QTimer(Gui.getMainWindow())
         watchdog.setSingleShot(True)

@@ -266,13 +266,54 @@ def apply_adds_operations_that_compute(run):
 
 
 @run.step
-def closing_removes_the_map_and_the_cache(run):
+def apply_is_one_undo_step_and_a_deleted_part_is_said(run):
+    from PySide2 import QtCore
+
+    from hsmplanner.app import strategy_study
+
+    p = panel()
+    document, job = state["part"].Document, state["job"]
+    table = p.form.table
+    by_name = {table.item(r, 0).text(): r for r in range(table.rowCount())}
+    table.clearSelection()
+    table.selectionModel().select(table.model().index(by_name[state["selected"][0]], 0),
+                                  QtCore.QItemSelectionModel.Select | QtCore.QItemSelectionModel.Rows)
+    before = len(job.Operations.Group)
+    op = p.apply()
+    run.check("applied again", op is not None, p.form.message.text())
+    name = op.Name if op is not None else ""
+    run.notes["undo names after apply"] = document.UndoNames[:3]
+    document.undo()  # the whole apply, net and operation, is one step (the controller was there already)
+    run.check("one undo removes the applied operation", document.getObject(name) is None and
+              len(job.Operations.Group) == before, str(document.UndoNames[:3]))
+    # the studied part deleted since the run: Apply says so in the panel
+    box = document.addObject("Part::Box", "Gone")
+    document.recompute()
+    gone = strategy_study.StudyInputs(box, "Face1", (box, ["Edge1"]), (box, ["Edge2"]))
+    kept, p.ran_on = p.ran_on, (gone,) + p.ran_on[1:]
+    document.removeObject("Gone")
+    run.check("Apply on a deleted part says so", p.apply() is None and "no longer in its document" in
+              p.form.message.text(), p.form.message.text())
+    p.ran_on = kept
+
+
+@run.step
+def closing_mid_run_stops_the_study_and_removes_the_map_and_the_cache(run):
+    import multiprocessing
+
+    from PySide2 import QtCore
+
     p = panel()
     cache = p.cache_dir
-    p.reject()
+    fill(p, planes="10,20,30,40,50,60", workers=2)
+    QtCore.QTimer.singleShot(400, p.reject)  # the user closes the panel while the variants run
+    rows = p.run()
+    run.check("the run closed quietly", rows is None)
     run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
     run.check("the 3D map is gone", p.map_node is None)
     run.check("the panel's cache is removed", not os.path.exists(cache), cache)
+    run.check("no worker process is left running", not multiprocessing.active_children(),
+              str(multiprocessing.active_children()))
 
 
 run.start()

@@ -30,7 +30,9 @@ class Ranges(unittest.TestCase):
                                    ("10:0:1", "K", "K: '10:0:1' gives no value"),
                                    ("0:180:0.000001", "Plane angles", "Plane angles: 180000000 values (more than "
                                                                       "10000)"),
-                                   (",".join(["1"] * 10001), "Feeds", "Feeds: 10001 values (more than 10000)")):
+                                   (",".join(["1"] * 10001), "Feeds", "Feeds: 10001 values (more than 10000)"),
+                                   ("0:1:1e-320", "Plane angles", "Plane angles: '0:1:1e-320' gives more than 10000"),
+                                   ("-1e308:1e308:1e304", "P", "P: '-1e308:1e308:1e304' gives more than 10000")):
             with self.subTest(text=text[:20]), self.assertRaisesRegex(ValueError, "^" + re.escape(words)):
                 parse(text, field)
 
@@ -76,6 +78,15 @@ class InDocument(unittest.TestCase):
         self.assertEqual((from_net.part, from_net.face, from_net.boundary_2), (p, "Face4", (p, ["Edge14"])))
         with self.assertRaisesRegex(ValueError, r"Select the bottom face .*\(selected: 1 face, 1 edge\)"):
             strategy_study.inputs_from_selection([(p, ["Face4", "Edge13"])])
+        # a studied object deleted since it was picked: said by name of the fix, not a ReferenceError
+        box = self.document.addObject("Part::Box", "Gone")
+        self.document.recompute()
+        gone = strategy_study.StudyInputs(box, "Face1", (box, ["Edge1"]), (box, ["Edge2"]))
+        self.assertIs(gone.document(), self.document)
+        self.document.removeObject("Gone")
+        for call in (gone.document, gone.shapes, gone.describe):
+            with self.assertRaisesRegex(ValueError, "no longer in its document"):
+                call()
 
     def test_rows_become_operations_that_compute(self):
         """A planes row and a guide row of a study, applied: the Job's ball end of the study's diameter at the

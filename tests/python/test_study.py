@@ -22,7 +22,10 @@ class Grid(unittest.TestCase):
                               (dict(), "the grid is empty"),
                               (dict(planes_deg=(0,), feeds_mm_min=(0,)), "feed 0 mm/min must be positive"),
                               (dict(planes_deg=(0,), machines=("haas-vf2",)), "machine 'haas-vf2' is unknown"),
-                              (dict(planes_deg=range(0, 100000)), "narrow the ranges")):
+                              (dict(planes_deg=range(0, 100000)), "narrow the ranges"),
+                              # each range under the limit, their product far over it: refused before any is made
+                              (dict(k=[i / 10000 for i in range(1, 10000)], p=range(1, 10000)),
+                               "199960002 variants (more than 10000)")):
             with self.subTest(words=words), self.assertRaisesRegex(ValueError, re.escape(words)):
                 study.variants(**kwargs)
 

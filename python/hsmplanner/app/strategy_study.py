@@ -42,14 +42,34 @@ class StudyInputs:
     boundary_1: tuple
     boundary_2: tuple
 
+    def document(self):
+        """The studied part's document; ValueError when the part (or a boundary's object) was deleted or its
+        document closed since it was picked."""
+        for obj in (self.part, self.boundary_1[0], self.boundary_2[0]):
+            if not in_document(obj):
+                raise ValueError("the studied part or a boundary's object is no longer in its document (deleted, "
+                                 "or the document closed): select the face and its boundaries again")
+        return self.part.Document
+
     def shapes(self):
         """(part shape, face name, boundary 1 shape, boundary 2 shape): study.study's inputs."""
+        self.document()
         return (self.part.Shape, self.face, guide_curve_net_object.linked_shape(self.boundary_1, "Boundary 1"),
                 guide_curve_net_object.linked_shape(self.boundary_2, "Boundary 2"))
 
     def describe(self):
+        self.document()
         edges = lambda link: "+".join(_names(link[1]))
         return "%s: %s between %s and %s" % (self.part.Label, self.face, edges(self.boundary_1), edges(self.boundary_2))
+
+
+def in_document(obj):
+    """Whether `obj` is still an object of an open document (a deleted one raises on every attribute; one
+    removed but kept by undo is no longer the document's)."""
+    try:
+        return obj.Document is not None and obj.Document.getObject(obj.Name) is obj
+    except (ReferenceError, RuntimeError):
+        return False
 
 
 def _names(subs):

@@ -87,6 +87,12 @@ def draw_stacked_maps(figure, maps):
     bar.ax.xaxis.label.set_fontsize(6)
 
 
+def freecad_message(error):
+    """The text of an error: FreeCAD's own exceptions carry a dict whose sErrMsg is what to say."""
+    detail = error.args[0] if error.args else error
+    return detail.get("sErrMsg", str(detail)) if isinstance(detail, dict) else str(error)
+
+
 def worst_text(row):
     """The row's worst slowdown regions, for its tooltip: where the machine loses the most time."""
     regions = row.get("worst_slowdowns") or []
@@ -100,7 +106,9 @@ class StrategyStudyPanel(TaskPanel):
         self.inputs = None         # StrategyStudy's inputs: what the next run studies
         self.rows, self.ran_on = [], None  # the last run's rows, and its (inputs, shapes, finishing settings)
         self.blocks = {}           # name -> feedsim blocks of the variants mapped so far (regenerated on demand)
-        self.map_node = None
+        self.map_node = self.map_graph = None  # the 3D feed map and the scene graph it was added to
+        self.closed = False        # closed while a study ran: the run stops and says nothing
+        self.running = False       # a study runs (its workers may still write to the cache)
         # the panel's runs share a cache: Run again after a Cancel reads the finished variants back
         self.cache_dir = tempfile.mkdtemp(prefix="hsm-strategy-study-")
         self.form = self._build_form()
@@ -212,11 +220,16 @@ class StrategyStudyPanel(TaskPanel):
         """The face and boundaries (or Guide curve net) selected now become the study's inputs."""
         try:
             self.inputs = strategy_study.inputs_from_selection(selected_elements())
+            self.inputs.document()
         except ValueError as error:
             if self.inputs is None:
                 self.form.inputs.setText(str(error))
                 return
-            self.say("%s: kept %s" % (error, self.inputs.describe()))  # a bad pick keeps the inputs there were
+            try:
+                self.say("%s: kept %s" % (error, self.inputs.describe()))  # a bad pick keeps the inputs there were
+            except ValueError as gone:  # and those were deleted meanwhile
+                self.inputs = None
+                self.form.inputs.setText("%s. %s" % (error, gone))
             return
         self.form.inputs.setText("Studied: %s" % self.inputs.describe())
         self.say("")
@@ -247,16 +260,23 @@ class StrategyStudyPanel(TaskPanel):
         self.form.status.setText("Running %d variants on %s…" % (len(grid), "%d workers" % workers if workers
                                                                    else "all cores"))
         QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        self.running = True
         try:
             with freecad_progress("Strategy study: %d variants" % len(grid)) as progress:
                 on_row, idle = self.progress_of(progress, len(grid))
                 rows = study.study(*shapes, grid, workers=workers, cache_dir=self.cache_dir, finishing=settings,
                                    progress=on_row, idle=idle)
         except Exception as error:  # a failure of the run itself (each variant's own is in its row)
-            self.say("The study failed: %s: %s" % (type(error).__name__, error))
+            if not self.closed:
+                self.say("The study failed: %s: %s" % (type(error).__name__, error))
             return None
         finally:
+            self.running = False
             QtWidgets.QApplication.restoreOverrideCursor()
+            if self.closed:  # closed while the study ran: its cache goes now that no worker writes to it
+                shutil.rmtree(self.cache_dir, ignore_errors=True)
+        if self.closed:  # nothing left to show the rows in
+            return None
         self.rows, self.ran_on, self.blocks = rows, (self.inputs, shapes, settings), {}
         self.form.status.setText(self.summary(rows))
         self.fill_table()
@@ -270,11 +290,15 @@ class StrategyStudyPanel(TaskPanel):
         finished = []
 
         def on_row(done, row):
+            if self.closed:
+                return False
             finished.append(row["name"])
             self.form.status.setText("%d of %d variants done: %s" % (len(finished), count, display_name(row)))
             return progress(done) if progress else True
 
         def idle():
+            if self.closed:
+                return False
             return progress(len(finished) / count) if progress else True
 
         return on_row, idle
@@ -410,36 +434,51 @@ class StrategyStudyPanel(TaskPanel):
         return True
 
     def show_map(self, row):
-        """The row's feed map on the part in the 3D view (one at a time)."""
+        """The row's feed map on the part in the studied document's 3D view (one at a time)."""
         from .feedmap import map_node
 
-        view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
-        graph = view.getSceneGraph() if view is not None and hasattr(view, "getSceneGraph") else None
-        if graph is None:
-            return
         if self.map_node is not None:
-            graph.removeChild(self.map_node)
-            self.map_node = None
-        if row is not None and row["name"] in self.blocks:  # drawn by the maps' plot just before
-            self.map_node = map_node(self.blocks[row["name"]], COLOR_BY)
+            self.map_graph.removeChild(self.map_node)
+            self.map_node = self.map_graph = None
+        if row is None or row["name"] not in self.blocks or self.ran_on is None:  # drawn by the maps' plot
+            return
+        try:
+            document = self.ran_on[0].document()
+        except ValueError:
+            return  # the studied document was closed: no view to draw in
+        view = getattr(FreeCADGui.getDocument(document.Name), "ActiveView", None)
+        graph = view.getSceneGraph() if view is not None and hasattr(view, "getSceneGraph") else None
+        if graph is not None:
+            self.map_node, self.map_graph = map_node(self.blocks[row["name"]], COLOR_BY), graph
             graph.addChild(self.map_node)
 
     # --- apply ------------------------------------------------------------------------------------------
     def apply(self):
-        """The first selected row as a finishing operation in the document's Job, recomputed."""
+        """The first selected row as a finishing operation in the studied document's Job, recomputed."""
         rows = self.selected_rows()
-        document = FreeCAD.ActiveDocument
-        jobs = roughing_object.jobs(document) if document is not None else []
         if not rows or self.ran_on is None:
             self.say("Select a row that ran to apply it.")
             return None
-        if not jobs:
-            self.say("No Job in this document: make one (Path → Job) to add the operation to.")
+        row, (inputs, _, settings) = rows[0], self.ran_on
+        try:
+            document = inputs.document()
+        except ValueError as error:
+            self.say("Not applied: %s." % error)
             return None
-        row, job, (inputs, _, settings) = rows[0], jobs[0], self.ran_on
+        jobs = roughing_object.jobs(document)
+        if not jobs:
+            self.say("No Job in %s: make one (Path → Job) to add the operation to." % document.Label)
+            return None
+        job = jobs[0]
+        try:
+            # first, on its own: FreeCAD's ToolBit GUI commits a transaction of its own ("Create ToolBit"),
+            # which would end the one below and leave the net and the operation outside any undo step
+            controller = strategy_study.study_controller(job, settings["tool_diameter"], row["feed_mm_min"])
+        except Exception as error:  # noqa: BLE001 (whatever FreeCAD raises is said in the panel)
+            self.say("Not applied: %s" % freecad_message(error))
+            return None
         document.openTransaction("Apply strategy %s" % row["name"])
         try:
-            controller = strategy_study.study_controller(job, settings["tool_diameter"], row["feed_mm_min"])
             # a Job without operations and with several controllers makes FreeCAD ask which one, in a modal
             # dialog; it takes a selected controller instead (PathUtilsGui.selectedToolController)
             FreeCADGui.Selection.clearSelection()
@@ -448,9 +487,9 @@ class StrategyStudyPanel(TaskPanel):
             FreeCADGui.Selection.clearSelection()
             self.attach_view_providers(op, net)
             document.recompute()
-        except (ValueError, RuntimeError) as error:
+        except Exception as error:  # noqa: BLE001
             document.abortTransaction()
-            self.say("Not applied: %s" % error)
+            self.say("Not applied: %s" % freecad_message(error))
             return None
         document.commitTransaction()
         self.say("" if op.isValid() else "%s did not compute: %s" % (op.Label, op.getStatusString()))
@@ -471,10 +510,12 @@ class StrategyStudyPanel(TaskPanel):
             net.ViewObject.Proxy.colour(net)  # the net computed before its view provider was there
 
     def close_edit(self):
+        self.closed = True  # a study running stops at its next variant or idle call
         self.show_map(None)
         self.ranking.close()
         self.maps.close()
-        shutil.rmtree(self.cache_dir, ignore_errors=True)
+        if not self.running:  # else the run removes it when its workers have stopped
+            shutil.rmtree(self.cache_dir, ignore_errors=True)
         super().close_edit()
 
 
@@ -492,6 +533,9 @@ class CommandStrategyStudy:
         return has_part(FreeCAD.ActiveDocument)
 
     def Activated(self):
+        if FreeCADGui.Control.activeDialog():  # a panel is open (this one, or another's): FreeCAD shows one
+            FreeCAD.Console.PrintWarning("Strategy study: close the open task panel first\n")
+            return None
         panel = StrategyStudyPanel()
         FreeCADGui.Control.showDialog(panel)
         return panel
