@@ -9,7 +9,7 @@ import hsmplanner
 from hsmplanner.app import roughing_object, roughing_study
 from hsmplanner.app.progress import freecad_progress
 
-from .task_panel import PanelPlots, TaskPanel, narrow_combo, narrow_form_layout
+from .task_panel import PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout
 
 STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
 # The table's columns: (heading, row key, tool tip).
@@ -194,23 +194,33 @@ class RoughingStudyPanel(TaskPanel):
         from hsmplanner.gui.finishing_ops_gui import COMMANDS
 
         name, volume = self.selected(), self.volume()
-        document = FreeCAD.ActiveDocument
-        job = job_of(document)
         if name is None or volume is None:
             return None
+        document = volume.Document  # the studied volume's, whichever document is active now
+        job = job_of(document)
         if job is None:
             self.form.status.setText("No Job in this document: make one (Path → Job) to add the operation to.")
             return None
+        try:
+            # first, on its own: FreeCAD's ToolBit GUI commits a transaction of its own, which would end ours
+            if not any(getattr(t, "Tool", None) is not None for t in job.Tools.Group):
+                roughing_op.torus_controller(job)  # the paper's Ø8 r1 torus when the Job has no tool yet
+        except Exception as error:  # noqa: BLE001 (whatever FreeCAD raises is said in the panel)
+            self.form.status.setText("Not applied: %s" % freecad_message(error))
+            return None
         document.openTransaction("Apply roughing strategy %s" % name)
-        volume.Strategy = roughing_object.strategy_label(name)
-        resources = COMMANDS["HSM_VolumeRoughing"]
-        if not any(getattr(t, "Tool", None) is not None for t in job.Tools.Group):
-            roughing_op.torus_controller(job)  # the paper's Ø8 r1 torus when the Job has no tool yet
-        op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
-        op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
-        op.ViewObject.Proxy.OpIcon = resources.icon
-        op.Volume = volume
-        document.recompute()
+        try:
+            volume.Strategy = roughing_object.strategy_label(name)
+            resources = COMMANDS["HSM_VolumeRoughing"]
+            op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
+            op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
+            op.ViewObject.Proxy.OpIcon = resources.icon
+            op.Volume = volume
+            document.recompute()
+        except Exception as error:  # noqa: BLE001
+            document.abortTransaction()
+            self.form.status.setText("Not applied: %s" % freecad_message(error))
+            return None
         document.commitTransaction()
         self.form.status.setText("%s applied: %s in %s." % (name, op.Label, job.Label))
         return op

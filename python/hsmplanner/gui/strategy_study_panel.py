@@ -17,7 +17,7 @@ from hsmplanner.app import roughing_object, strategy_study
 from hsmplanner.app.feedrate_object import COLOR_MODES
 from hsmplanner.app.progress import freecad_progress
 
-from .task_panel import PanelPlots, TaskPanel, narrow_combo, narrow_form_layout
+from .task_panel import PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout
 
 # The table's columns: (heading, row key, (scale to the shown unit, decimals) or None for text, tool tip). The
 # two figures the ranking plots come first after the variant: the Combo View shows three columns at a time.
@@ -85,12 +85,6 @@ def draw_stacked_maps(figure, maps):
                          aspect=25)
     bar.ax.tick_params(labelsize=6)
     bar.ax.xaxis.label.set_fontsize(6)
-
-
-def freecad_message(error):
-    """The text of an error: FreeCAD's own exceptions carry a dict whose sErrMsg is what to say."""
-    detail = error.args[0] if error.args else error
-    return detail.get("sErrMsg", str(detail)) if isinstance(detail, dict) else str(error)
 
 
 def worst_text(row):

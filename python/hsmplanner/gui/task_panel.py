@@ -12,6 +12,12 @@ def selected_faces():
             if name.startswith("Face")]
 
 
+def freecad_message(error):
+    """The text of an error to say in a panel: FreeCAD's own exceptions carry a dict whose sErrMsg is it."""
+    detail = error.args[0] if error.args else error
+    return detail.get("sErrMsg", str(detail)) if isinstance(detail, dict) else str(error)
+
+
 class TaskPanel:
     active = None  # per panel class: the open one
 
