@@ -137,7 +137,11 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
     _check(len(grid) <= MAX_VARIANTS, "%d variants (more than %d): narrow the ranges" % (len(grid), MAX_VARIANTS))
     for variant in grid:
         variant["name"] = variant_name(variant)
-    return grid
+    # a value typed twice (K 0.5,0.5) is one variant, not two rows racing for one cache file
+    unique = {}
+    for variant in grid:
+        unique.setdefault(variant["name"], variant)
+    return list(unique.values())
 
 
 def paper_grid(feed_mm_min=4000.0, machine=feedsim.DEFAULT_MACHINE):

@@ -39,6 +39,8 @@ class Grid(unittest.TestCase):
         self.assertEqual(len(paper), 40)
         self.assertEqual(sorted({v["mode"] for v in paper if v["strategy"] == "guide"}),
                          ["b1_to_b2", "boundaries_to_median", "median_to_boundaries"])
+        twice = study.variants(planes_deg=(0, 45, 0), k=(0.5, 0.5), p=(10,), median=(False,))
+        self.assertEqual([v["name"].split(" F")[0] for v in twice], ["planes 0°", "planes 45°", "guide B1→B2 K0.5 P10"])
         with self.assertRaisesRegex(ValueError, re.escape("net mode 'spiral' is unknown")):
             study.variants(k=(0.5,), p=(10,), net_modes=("spiral",))
 
