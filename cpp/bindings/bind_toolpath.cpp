@@ -49,6 +49,8 @@ void bindToolpath(py::module_& m) {
       .def_readwrite("mesh_deflection", &FinishingSettings::meshDeflection, "mm")
       .def_readwrite("sampling", &FinishingSettings::sampling, "mm between cutter positions before refinement")
       .def_readwrite("threads", &FinishingSettings::threads, "0: all cores");
+  m.def("check_finishing_settings", &checkFinishingSettings, py::arg("settings"),
+        "ValueError naming a finishing setting outside its limits (what every finishing checks first)");
   m.def(
       "parallel_finishing",
       [](const std::string& part, int bottomFace, double angle, FinishingSettings s, const py::object& progress) {

@@ -14,6 +14,8 @@ namespace hsm::toolpath {
 
 using namespace detail;
 
+void checkFinishingSettings(const FinishingSettings& settings) { validate(settings); }
+
 Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double angleDeg,
                                 const FinishingSettings& settings) {
   if (!std::isfinite(angleDeg)) throw InputError("the angle of the planes must be a number of degrees");

@@ -86,6 +86,10 @@ struct Toolpath {
   std::vector<std::string> warnings;
 };
 
+// Refuses settings outside the limits above (InputError names the setting, its range and a usual value):
+// what every strategy checks first, for callers that check before they start many (a strategy study).
+void checkFinishingSettings(const FinishingSettings& settings);
+
 // Planes containing the tool axis at `angleDeg` from X across the bottom face `bottomFace` (FreeCAD's
 // 1-based number in `part`).
 Toolpath parallelPlaneFinishing(const TopoDS_Shape& part, int bottomFace, double angleDeg,

@@ -112,6 +112,9 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
     modes = [GUIDE_MODES[bool(m)] for m in median] if net_modes is None else _bounded(net_modes, "net modes")
     for mode in modes:
         _check(mode in curvenet.MODES, "net mode %r is unknown: use one of %s" % (mode, ", ".join(curvenet.MODES)))
+    for value in planes_deg:
+        _check(-360.0 <= float(value) <= 360.0, "plane angle %r° must lie within [-360, 360] (θ and θ + 180° are "
+                                                "the same planes)" % (value,))
     for value in k:
         _check(0.0 < float(value) < 1.0, "K = %r is outside ]0, 1[: the guide curve lies between the boundaries "
                                          "(the paper uses 0.25 to 0.75)" % (value,))
@@ -292,6 +295,7 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     inputs = (as_brep(part), face, *(None if b is None else as_brep(b) for b in (b1, b2)))
     # one thread per variant: the variants are the parallel work (threads in each worker would only compete)
     finishing = dict({"threads": 1}, **(finishing or {}))
+    toolpaths.check_finishing(**finishing)  # a cusp above the ball's radius is said once, not in every row
     rows = [None] * len(grid)
     done = 0
 

@@ -45,6 +45,14 @@ def finishing_settings(tool_diameter=None, cusp_height=None, tolerance=None, swe
                          extension=None if extension is None else float(extension))
 
 
+def check_finishing(tool_diameter=None, cusp_height=None, tolerance=None, sweep=None, zigzag=None, clearance=None,
+                    threads=None, extension=None):
+    """ValueError naming a finishing setting outside its limits (a cusp at or above the ball's radius…), as
+    every finishing checks first: for a caller about to start many (a strategy study)."""
+    _core.check_finishing_settings(finishing_settings(tool_diameter, cusp_height, tolerance, sweep, zigzag, clearance,
+                                                      threads, extension))
+
+
 def parallel_finishing(part, bottom_face, angle_deg=0.0, tool_diameter=None, cusp_height=None, tolerance=None,
                        sweep=None, zigzag=None, clearance=None, threads=None, extension=None, progress=None):
     """Planes containing the tool axis at angle_deg from X, spaced for the cusp height. Settings left out take

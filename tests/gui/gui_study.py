@@ -103,6 +103,15 @@ def bad_ranges_are_said_in_the_panel(run):
         result = p.run()
         run.check("%s: refused in the panel" % words, result is None and words in p.form.message.text()
                   and p.form.message.isVisible(), p.form.message.text())
+    tool, cusp = p.form.tool.value(), p.form.cusp.value()
+    fill(p, planes="0")
+    p.form.tool.setValue(1.0)
+    p.form.cusp.setValue(2.0)  # at or above the ball's radius: said once before any variant runs
+    result = p.run()
+    run.check("a cusp above the ball's radius is refused in the panel", result is None and
+              "below the tool radius" in p.form.message.text(), p.form.message.text())
+    p.form.tool.setValue(tool)
+    p.form.cusp.setValue(cusp)
     run.check("nothing ran", p.form.table.rowCount() == 0)
     fill(p, planes="0", k="1.5", p_values="20")
     p.run()

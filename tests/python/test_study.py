@@ -23,6 +23,7 @@ class Grid(unittest.TestCase):
                               (dict(planes_deg=(0,), feeds_mm_min=(0,)), "feed 0 mm/min must be positive"),
                               (dict(planes_deg=(0,), machines=("haas-vf2",)), "machine 'haas-vf2' is unknown"),
                               (dict(planes_deg=range(0, 100000)), "narrow the ranges"),
+                              (dict(planes_deg=(1e300,)), "plane angle 1e+300° must lie within [-360, 360]"),
                               # each range under the limit, their product far over it: refused before any is made
                               (dict(k=[i / 10000 for i in range(1, 10000)], p=range(1, 10000)),
                                "199960002 variants (more than 10000)")):
@@ -169,6 +170,8 @@ class Study(unittest.TestCase):
             ranked = study.rank([r for r in rows if r["feed_mm_min"] == feed], "time")
             self.assertEqual([r["angle_deg"] for r in ranked], [90.0, 0.0], "F%g" % feed)
             self.assertLess(ranked[0]["slowdown_share"], ranked[1]["slowdown_share"])
+        with self.assertRaisesRegex(ValueError, "cusp height 6 mm must be .* below the tool radius 5 mm"):
+            study.study(face, "Face1", None, None, grid, workers=1, finishing=dict(tool_diameter=10.0, cusp_height=6.0))
         with self.assertRaisesRegex(ValueError, "guide-curve and 4-step variants need the boundaries b1 and b2"):
             study.study(face, "Face1", None, None, study.variants(four_step=True), workers=1)
 

@@ -260,6 +260,10 @@ class StrategyStudyPanel(TaskPanel):
                 on_row, idle = self.progress_of(progress, len(grid))
                 rows = study.study(*shapes, grid, workers=workers, cache_dir=self.cache_dir, finishing=settings,
                                    progress=on_row, idle=idle)
+        except ValueError as error:  # a setting refused before any variant ran (a cusp above the ball's radius)
+            if not self.closed:
+                self.say(str(error))
+            return None
         except Exception as error:  # a failure of the run itself (each variant's own is in its row)
             if not self.closed:
                 self.say("The study failed: %s: %s" % (type(error).__name__, error))
