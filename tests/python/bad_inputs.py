@@ -371,6 +371,8 @@ CASES = [
     raises("study scheduler 42", "from hsmplanner import study as st\nst.study(part, 'Face4', b1, b2, st.variants(planes_deg=(0,)), scheduler=42)", "ValueError", "scheduler 42 must be a Dask scheduler's address"),
     raises("study Dask cluster of -1 workers", "from hsmplanner import study as st\nst.local_cluster(-1)", "ValueError", "workers -1 must be an integer in [1, 256]"),
     raises("refine K start NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, start=float('nan'))", "ValueError", "start K nan must lie inside ]0, 1["),
+    raises("finishing check cusp NaN", "from hsmplanner import toolpaths as tp\ntp.check_finishing(tool_diameter=10, cusp_height=float('nan'))", "ValueError", "cusp height"),
+    raises("study plane angle inf", "from hsmplanner import study as st\nst.variants(planes_deg=(float('inf'),))", "ValueError", "plane angle inf° must lie within [-360, 360]"),
     raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
 ]
 
