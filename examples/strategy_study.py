@@ -39,7 +39,7 @@ def table(rows):
                                                          "entries", "short", "path m")]
     for number, row in enumerate(rows, 1):
         lines.append("%-4d %-44s %8.1f %8.1f %8.1f%% %6d %7d %6d %8.2f" % (
-            number, row["name"].split(" F")[0], row["time_s"], row["length_over_feed_s"], 100 * row["slowdown_share"],
+            number, study.short_name(row), row["time_s"], row["length_over_feed_s"], 100 * row["slowdown_share"],
             row["passes"], row["entries"], row["short_passes"], row["path_mm"] / 1000.0))
     return lines
 
@@ -66,7 +66,7 @@ def main(argv):
     report += ["Failed: %s: %s" % (r["name"], r["error"]) for r in failed]
     report += ["Where the Pareto front's variants lose most time (runs of blocks below F/2; lost against length/feed):"]
     for row in front:
-        report += ["  %s: %s" % (row["name"].split(" F")[0], "; ".join(
+        report += ["  %s: %s" % (study.short_name(row), "; ".join(
             "%.2f s at X%.0f Y%.0f over %.0f mm (%s)" % (w["lost_s"], w["x_mm"], w["y_mm"], w["length_mm"], w["held_by"])
             for w in row["worst_slowdowns"]))]
     report += [""]

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <utility>
 #include <thread>
 #include <vector>
 
@@ -33,23 +34,10 @@ void parallelSlices(long n, int threads, long grain, Work&& work) {
   if (failure) std::rethrow_exception(failure);
 }
 
-// Calls work(from, to) over [0, n) in chunks of `chunk` items that `threads` threads (0: all cores) take in
-// turn as they finish: the load balances itself where items cost unequally (a drop-cutter point over a dense
-// region of the mesh costs several times one over a sparse one, so equal halves finish apart).
-template <class Work>
-void parallelChunks(long n, int threads, long chunk, Work&& work) {
-  chunk = std::max<long>(1, chunk);
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const long workers = std::min<long>(threads, (n + chunk - 1) / chunk);
-  std::atomic<long> next{0};
-  parallelSlices(workers, static_cast<int>(workers), 1, [&](long, long) {  // one slice per thread
-    for (long from = next.fetch_add(chunk); from < n; from = next.fetch_add(chunk)) work(from, std::min(n, from + chunk));
-  });
-}
-
-// parallelChunks for work whose progress a caller reports from its own thread (a Python callback): the calling
-// thread takes chunks too and, after each of its chunks, calls report(items done); an exception there (the user
-// cancelled) stops the other threads at their next chunk and reaches the caller after the join.
+// Chunks of `chunk` items taken in turn by `threads` threads (0: all cores), the calling thread one of them; after
+// each of its chunks the calling thread calls report(items done) (a Python progress callback must be called
+// from there); an exception there (the user cancelled) stops the other threads at their next chunk and reaches
+// the caller after the join, as one in another thread does.
 template <class Work, class Report>
 void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Report&& report) {
   chunk = std::max<long>(1, chunk);
@@ -88,6 +76,14 @@ void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Repor
   }
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+// Calls work(from, to) over [0, n) in chunks of `chunk` items that `threads` threads (0: all cores) take in
+// turn as they finish: the load balances itself where items cost unequally (a drop-cutter point over a dense
+// region of the mesh costs several times one over a sparse one, so equal halves finish apart).
+template <class Work>
+void parallelChunks(long n, int threads, long chunk, Work&& work) {
+  parallelChunksReporting(n, threads, chunk, std::forward<Work>(work), [](long) {});
 }
 
 }  // namespace hsm

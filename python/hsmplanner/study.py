@@ -137,7 +137,6 @@ def variants(planes_deg=(), k=(), p=(), median=(False, True), four_step=False, f
         shapes.append(dict(strategy="4-step"))
     grid = [dict(shape, feed_mm_min=float(f), machine=name) for shape in shapes for f in feeds_mm_min for name in machines]
     _check(bool(grid), "the grid is empty: give plane angles, K and P ranges or four_step=True, and feeds and machines")
-    _check(len(grid) <= MAX_VARIANTS, "%d variants (more than %d): narrow the ranges" % (len(grid), MAX_VARIANTS))
     for variant in grid:
         variant["name"] = variant_name(variant)
     # a value typed twice (K 0.5,0.5) is one variant, not two rows racing for one cache file
@@ -166,19 +165,24 @@ def variant_name(v):
     return "%s F%g %s" % (head, v["feed_mm_min"], v["machine"])
 
 
+def short_name(row):
+    """The strategy part of a variant's name, without feed and machine ('planes 30°', 'guide B1→B2 K0.75 P5')."""
+    return row["name"].split(" F")[0]
+
+
 def variant_moves(variant, part_brep, face, b1_brep, b2_brep, finishing=None):
     """The variant's finishing path: (moves, path statistics) — what run_variant scores and a feed map draws."""
-    settings = dict(finishing or {})
+    settings, part_brep = dict(finishing or {}), as_brep(part_brep)
     if variant["strategy"] == "planes":
-        return toolpaths.parallel_finishing(as_brep(part_brep), face, variant["angle_deg"], **settings)
-    part = shape_from_brep(as_brep(part_brep))
+        return toolpaths.parallel_finishing(part_brep, face, variant["angle_deg"], **settings)
+    part = shape_from_brep(part_brep)
     b1, b2 = shape_from_brep(as_brep(b1_brep)), shape_from_brep(as_brep(b2_brep))
     bottom = part.getElement(face)
     if variant["strategy"] == "guide":
         net = curvenet.curve_net(b1, b2, variant["k"], step=variant["p"], mode=variant["mode"], face=bottom)
     else:
         net, _ = curvenet.guidance_curves(b1, b2, face=bottom)
-    return toolpaths.guide_finishing(as_brep(part_brep), face, net, **settings)
+    return toolpaths.guide_finishing(part_brep, face, net, **settings)
 
 
 def simulate_variant(variant, moves):
@@ -204,16 +208,15 @@ def score(variant, stats, result):
     scores = evaluation.evaluate(result)
     total = sum(scores["feed_classes_time"]) or 1.0
     blocks = result.blocks
-    cutting = np.asarray(blocks["motion"]) != 0
-    times = np.asarray(blocks["time"])[cutting]
-    slow = np.asarray(blocks["mean_feed"])[cutting] < 0.5 * np.asarray(blocks["programmed_feed"])[cutting]
+    times = np.asarray(blocks["time"])
+    cutting, slow = np.asarray(blocks["motion"]) != 0, _slow_cutting(blocks)
     lengths = np.asarray(stats.get("pass_lengths", []))
     row.update(time_s=scores["machining_time_s"], length_over_feed_s=scores["naive_time_s"],
                path_mm=scores["path_length_mm"], blocks=scores["blocks"], entries=scores["tool_entries"],
                passes=int(stats.get("passes", len(lengths))),
                short_passes=int(np.sum(lengths < evaluation.SHORT_SEQUENCE_MM)),
                # the share of cutting time spent below half the programmed feed (blocks' mean feed)
-               slowdown_share=float(times[slow].sum() / times.sum()) if times.sum() > 0 else 0.0)
+               slowdown_share=float(times[slow].sum() / times[cutting].sum()) if times[cutting].sum() > 0 else 0.0)
     for name, t in zip(FEED_CLASS_NAMES, scores["feed_classes_time"]):
         row["time_share_" + name] = t / total
     row["worst_slowdowns"] = worst_slowdowns(blocks)
@@ -221,14 +224,19 @@ def score(variant, stats, result):
     return row
 
 
+def _slow_cutting(blocks):
+    """Per block: a cutting block whose mean feed is below half the programmed one (the issue's 'below 0.5·F')."""
+    feed = np.asarray(blocks["programmed_feed"])
+    return (np.asarray(blocks["motion"]) != 0) & (np.asarray(blocks["mean_feed"]) < 0.5 * feed)
+
+
 def worst_slowdowns(blocks, count=WORST_REGIONS):
     """Where the machine loses the most time: runs of consecutive cutting blocks whose mean feed is below half
     the programmed one, the `count` that lose most against length/feed, each as {x_mm, y_mm, z_mm (the run's
     middle, weighted by time), length_mm, time_s, lost_s, held_by (what set the blocks' speed limit longest:
     an axis, or F where the feed itself did and the time went to the ramps between short blocks)}."""
-    motion, feed = np.asarray(blocks["motion"]), np.asarray(blocks["programmed_feed"])
-    slow = (motion != 0) & (np.asarray(blocks["mean_feed"]) < 0.5 * feed)
-    edges = np.flatnonzero(np.diff(np.concatenate(([0], slow.astype(np.int8), [0]))))
+    feed = np.asarray(blocks["programmed_feed"])
+    edges = np.flatnonzero(np.diff(np.concatenate(([0], _slow_cutting(blocks).astype(np.int8), [0]))))
     time, length = np.asarray(blocks["time"]), np.asarray(blocks["length"])
     middle = 0.5 * (np.asarray(blocks["start"]) + np.asarray(blocks["end"]))
     regions = []
@@ -292,7 +300,7 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     _check(not needs_boundaries or (b1 is not None and b2 is not None),
            "guide-curve and 4-step variants need the boundaries b1 and b2 (edges of the face): give them, or study "
            "plane directions only")
-    inputs = (as_brep(part), face, *(None if b is None else as_brep(b) for b in (b1, b2)))
+    inputs = _inputs(part, face, b1, b2)
     # one thread per variant: the variants are the parallel work (threads in each worker would only compete)
     finishing = dict({"threads": 1}, **(finishing or {}))
     toolpaths.check_finishing(**finishing)  # a cusp above the ball's radius is said once, not in every row
@@ -314,6 +322,11 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     else:
         _run_on_processes(workers or os.cpu_count(), grid, inputs, finishing, cache_dir, finished, idle)
     return [row if row is not None else dict(variant, error="cancelled") for row, variant in zip(rows, grid)]
+
+
+def _inputs(part, face, b1, b2):
+    """What every variant runs on, as it travels to workers: the shapes as BREP text (no boundaries: None)."""
+    return (as_brep(part), face, *(None if b is None else as_brep(b) for b in (b1, b2)))
 
 
 def _collect(futures, ready, finished, idle, failed_row):
@@ -470,10 +483,10 @@ def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machin
            "max evaluations %r must be an integer in [3, 100]" % (max_evaluations,))
     key = {"time": "time_s", "slowdown": "slowdown_share"}.get(by)
     _check(key is not None, "refine K by %r: use 'time' or 'slowdown'" % (by,))
-    inputs = (as_brep(part), face, as_brep(b1), as_brep(b2))
+    inputs = _inputs(part, face, b1, b2)
     evaluated, cache = [], {}
 
-    def score(k):
+    def evaluate_k(k):
         k = round(k, 6)
         if k not in cache:
             variant = variants(k=(k,), p=(p,), median=(median,), feeds_mm_min=(feed_mm_min,), machines=(machine,),
@@ -490,17 +503,17 @@ def refine_k(part, face, b1, b2, median=True, p=10.0, feed_mm_min=4000.0, machin
     c, d = b - ratio * (b - a), a + ratio * (b - a)
     try:
         if start is not None:
-            score(start)
-        fc, fd = score(c), score(d)
+            evaluate_k(start)
+        fc, fd = evaluate_k(c), evaluate_k(d)
         while b - a > tolerance and len(evaluated) < max_evaluations:
             if fc <= fd:
                 b, d, fd = d, c, fc
                 c = b - ratio * (b - a)
-                fc = score(c)
+                fc = evaluate_k(c)
             else:
                 a, c, fc = c, d, fd
                 d = a + ratio * (b - a)
-                fd = score(d)
+                fd = evaluate_k(d)
     except StopIteration:
         pass
     ran = [r for r in evaluated if not r.get("error")]
@@ -517,10 +530,19 @@ def rank(rows, by="time"):
     if by == "slowdown":
         return sorted(ran, key=lambda r: (r["slowdown_share"], r["time_s"]))
     if by == "pareto":
-        from .plots.strategy_study import pareto_front  # one definition of the front, for the table and plots
-
         return pareto_front(ran)
     raise ValueError("rank by %r: use 'time', 'slowdown' or 'pareto'" % (by,))
+
+
+def pareto_front(rows):
+    """The rows that ran and that no other beats on both time and slowdown share, fastest first."""
+    ran = [r for r in rows if not r.get("error")]
+    return sorted((r for r in ran if not any(_dominates(o, r) for o in ran)), key=lambda r: r["time_s"])
+
+
+def _dominates(a, b):
+    no_worse = a["time_s"] <= b["time_s"] and a["slowdown_share"] <= b["slowdown_share"]
+    return no_worse and (a["time_s"] < b["time_s"] or a["slowdown_share"] < b["slowdown_share"])
 
 
 def write_csv(rows, path):
@@ -542,7 +564,7 @@ def write_json(rows, path):
     return path
 
 
-__all__ = ["parse_range", "variants", "paper_grid", "variant_name", "variant_moves", "simulate_variant", "run_variant", "score", "worst_slowdowns", "local_cluster", "study", "refine_k", "rank", "write_csv", "write_json", "_core"]
+__all__ = ["parse_range", "variants", "paper_grid", "variant_name", "short_name", "variant_moves", "simulate_variant", "run_variant", "score", "worst_slowdowns", "local_cluster", "study", "refine_k", "rank", "pareto_front", "write_csv", "write_json", "_core"]
 
 
 if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)

@@ -148,12 +148,12 @@ def create_operation(row, inputs, job, controller, settings):
             values.update(K=row["k"], Step=row["p"])
         net = guide_curve_net_object.create(document, inputs.boundary_1, inputs.boundary_2,
                                             (inputs.part, [inputs.face]), name="StudyNet", **values)
-        net.Label = "Net %s" % row["name"].split(" F")[0]  # the strategy without feed and machine
+        net.Label = "Net %s" % study.short_name(row)
         op = finishing_ops.CreateGuideCurveFinishing("GuideCurveFinishing", parentJob=job)
         op.Net = net
         op.Areas = finishing.AREA_CHOICES[0]  # the net's elementary areas, as the study machined them
     op.ToolController = controller
     op.CuspHeight = settings["cusp_height"]
     op.Tolerance = settings["tolerance"]
-    op.Label = "%s (study)" % row["name"].split(" F")[0]
+    op.Label = "%s (study)" % study.short_name(row)
     return op, net

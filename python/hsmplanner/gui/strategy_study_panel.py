@@ -387,8 +387,7 @@ class StrategyStudyPanel(TaskPanel):
         figure.set_layout_engine("constrained")  # labels kept inside whatever size the canvas is given
         axes = figure.add_subplot(1, 1, 1)
         selected = self.selected_rows()
-        draw_pareto(axes, self.rows, [r["name"] for r in selected], label_front=wide)
-        front = study.rank(self.rows, "pareto")
+        front = draw_pareto(axes, self.rows, [r["name"] for r in selected], label_front=wide)
         axes.scatter([r["time_s"] for r in front], [100 * r["slowdown_share"] for r in front], s=70,
                      facecolors="none", edgecolors="black", linewidths=1.0, zorder=3)
         axes.set_title("%d variants, %d on the Pareto front" % (len(ran), len(front)), fontsize=8 if wide else 7)
@@ -407,7 +406,7 @@ class StrategyStudyPanel(TaskPanel):
         low, high = axes.get_xlim()
         for row in selected[:MAX_MAPS]:
             right_half = row["time_s"] > 0.5 * (low + high)  # named on the side with room, inside the axes
-            axes.annotate(row["name"].split(" F")[0], (row["time_s"], 100 * row["slowdown_share"]), fontsize=5,
+            axes.annotate(study.short_name(row), (row["time_s"], 100 * row["slowdown_share"]), fontsize=5,
                           xytext=(-5 if right_half else 5, 5), textcoords="offset points",
                           ha="right" if right_half else "left", annotation_clip=True)
 

@@ -1,25 +1,16 @@
 """Pictures of the automatic strategy study (issue 18): each variant as a point of simulated time against the
 share of cutting time below half the feed, the Pareto front drawn through the variants no other beats on both,
-and the feed-class shares of the best rows as stacked bars. Inputs are the study's rows: no FreeCAD, no core."""
+and the feed-class shares of the best rows as stacked bars. Inputs are the study's rows (no FreeCAD); the front
+and the names are the study's own (hsmplanner.study)."""
 import numpy as np
 
+from ..study import FEED_CLASS_NAMES, pareto_front, short_name
 from .common import new_figure
 
 STRATEGY_STYLES = {"planes": ("tab:blue", "o", "parallel planes"), "guide": ("tab:orange", "s", "guide curves"),
                    "4-step": ("tab:red", "*", "the paper's 4-step method")}
-FEED_CLASSES = [("time_share_below_20", "< 20 %"), ("time_share_20_40", "20–40 %"), ("time_share_40_60", "40–60 %"),
-                ("time_share_60_80", "60–80 %"), ("time_share_above_80", "> 80 % of F")]
-
-
-def pareto_front(rows):
-    """The rows no other row beats on both time and slowdown share, fastest first."""
-    ran = [r for r in rows if not r.get("error")]
-    return sorted((r for r in ran if not any(_dominates(o, r) for o in ran)), key=lambda r: r["time_s"])
-
-
-def _dominates(a, b):
-    no_worse = a["time_s"] <= b["time_s"] and a["slowdown_share"] <= b["slowdown_share"]
-    return no_worse and (a["time_s"] < b["time_s"] or a["slowdown_share"] < b["slowdown_share"])
+FEED_CLASSES = list(zip(("time_share_" + name for name in FEED_CLASS_NAMES),
+                        ("< 20 %", "20–40 %", "40–60 %", "60–80 %", "> 80 % of F")))
 
 
 def draw_pareto(axes, rows, selected=(), label_front=True):
@@ -37,7 +28,7 @@ def draw_pareto(axes, rows, selected=(), label_front=True):
                   color="black", linewidth=1.0, label="Pareto front", zorder=2)
         if label_front:
             for r in front:
-                axes.annotate(r["name"].split(" F")[0], (r["time_s"], 100 * r["slowdown_share"]), fontsize=6,
+                axes.annotate(short_name(r), (r["time_s"], 100 * r["slowdown_share"]), fontsize=6,
                               xytext=(4, 3), textcoords="offset points")
     chosen = [r for r in ran if r["name"] in set(selected)]
     if chosen:
@@ -60,7 +51,7 @@ def draw_feed_classes(axes, rows):
         axes.barh(np.arange(len(rows)), share, left=bottom, color=colour, label=label, edgecolor="grey",
                   linewidth=0.3)
         bottom += share
-    axes.set_yticks(np.arange(len(rows)), [r["name"].split(" F")[0] for r in rows], fontsize=6)
+    axes.set_yticks(np.arange(len(rows)), [short_name(r) for r in rows], fontsize=6)
     axes.invert_yaxis()
     axes.set_xlabel("share of the machining time in each feed class, %", fontsize=8)
     axes.tick_params(axis="x", labelsize=7)
@@ -92,7 +83,7 @@ def draw_feed_maps(figure, maps, columns=2):
     axes = [figure.add_subplot(rows, columns, k + 1) for k in range(len(maps))]
     for panel, (row, blocks) in zip(axes, maps):
         draw_feed_map(panel, blocks, linewidth=1.2)
-        panel.set_title("%s: %.1f s, %.1f %% below F/2" % (row["name"].split(" F")[0], row["time_s"],
+        panel.set_title("%s: %.1f s, %.1f %% below F/2" % (short_name(row), row["time_s"],
                                                             100 * row["slowdown_share"]), fontsize=8)
         panel.tick_params(labelsize=6)
         panel.xaxis.label.set_size(7)
