@@ -74,6 +74,8 @@ def parse_range(text, field):
     """The values of a range as the user typed it: "0,45,90", or "0:180:15" (start:stop:step, stop excluded:
     180° is 0° again for planes). Empty text is no value. ValueError names `field` and what is wrong; more than
     MAX_VARIANTS values are refused before any is made (a typo of 0:180:0.000001 would fill the memory)."""
+    _check(text is None or isinstance(text, str), "%s: %r is not text: give %s (lists go to variants())"
+           % (field, text, RANGE_HELP))
     text = (text or "").strip()
     if not text:
         return []

@@ -373,6 +373,9 @@ CASES = [
     raises("refine K start NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, start=float('nan'))", "ValueError", "start K nan must lie inside ]0, 1["),
     raises("finishing check cusp NaN", "from hsmplanner import toolpaths as tp\ntp.check_finishing(tool_diameter=10, cusp_height=float('nan'))", "ValueError", "cusp height"),
     raises("study plane angle inf", "from hsmplanner import study as st\nst.variants(planes_deg=(float('inf'),))", "ValueError", "plane angle inf° must lie within [-360, 360]"),
+    raises("study range 0:1e9:1e-9", "from hsmplanner import study as st\nst.parse_range('0:1e9:1e-9', 'P')", "ValueError", "P: 1000000000000000000 values (more than 10000)"),
+    raises("study range NaN step", "from hsmplanner import study as st\nst.parse_range('0:10:nan', 'K')", "ValueError", "K: 'nan' is not a finite number"),
+    raises("study range of a list", "from hsmplanner import study as st\nst.parse_range([1, 2], 'K')", "ValueError", "K: [1, 2] is not text"),
     raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
 ]
 
