@@ -1,15 +1,26 @@
 # HSM Planner. Two commands matter (README): `make demo` runs the main job, `make test` runs every test.
 # Each target installs the Debian packages it misses, rebuilds what is stale and links the workbench.
+# HSM Planner is built for Debian 13 (FreeCAD 1.0): on an older Debian every target runs in a Debian 13 root
+# that scripts/debian13.sh makes and keeps (the repository and ../shared seen at the same paths).
+ifeq ($(shell scripts/debian13.sh needed),yes)
+.DEFAULT_GOAL := all
+.PHONY: all $(MAKECMDGOALS)
+all $(MAKECMDGOALS):
+	@scripts/debian13.sh run $(MAKE) --no-print-directory $@ $(MAKEOVERRIDES)
+else
 BUILD_DIR ?= build
 OUT ?= out
 JOBS ?= $(shell nproc)
 FREECADCMD ?= freecadcmd
+# Debian's own Python (the one FreeCAD embeds) and cmake, whatever else comes first on the PATH.
 PYTHON := /usr/bin/python3
+CMAKE := /usr/bin/cmake
+CTEST := /usr/bin/ctest
 
 ASAN_DIR ?= build-asan
 FUZZ_SECONDS ?= 60
 
-.PHONY: all deps configure build link test test-cpp test-python test-gui test-asan test-oracle fuzz demo bench clean
+.PHONY: all deps asan-deps configure build link test test-cpp test-python test-gui test-asan test-oracle fuzz demo bench clean
 
 all: build
 
@@ -17,12 +28,12 @@ deps:
 	@scripts/install-deps.sh
 
 $(BUILD_DIR)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$(PYTHON)
+	$(CMAKE) -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$(PYTHON)
 
 configure: $(BUILD_DIR)/CMakeCache.txt
 
 build: deps configure
-	cmake --build $(BUILD_DIR) -j $(JOBS)
+	$(CMAKE) --build $(BUILD_DIR) -j $(JOBS)
 	@$(FREECADCMD) scripts/link_workbench.py $(CURDIR) > $(BUILD_DIR)/link.log 2>&1 || { cat $(BUILD_DIR)/link.log; exit 1; }
 	@grep -h "linked" $(BUILD_DIR)/link.log || true
 
@@ -40,15 +51,18 @@ test-gui: build
 
 # The core and its C++ tests under AddressSanitizer and UndefinedBehaviorSanitizer (clang, no Python module);
 # also builds the libFuzzer harnesses that `make fuzz` runs.
-$(ASAN_DIR)/CMakeCache.txt: | deps
-	cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DHSM_FUZZ=ON \
+asan-deps: deps
+	@scripts/install-deps.sh scripts/debian-packages-asan.txt
+
+$(ASAN_DIR)/CMakeCache.txt: | asan-deps
+	$(CMAKE) -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DHSM_FUZZ=ON \
 	  -DHSM_BUILD_PYTHON=OFF -DHSM_BUILD_BENCHMARKS=OFF
 
 test-asan: $(ASAN_DIR)/CMakeCache.txt
-	cmake --build $(ASAN_DIR) -j $(JOBS)
+	$(CMAKE) --build $(ASAN_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/cpp/lsan.supp \
-	  ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
+	  $(CTEST) --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
 
 # LinuxCNC 2.9 as an oracle for the feed-rate simulator (docs/oracle.md), not part of `make test`: runs each
 # program of tests/oracle/programs/ in a headless LinuxCNC simulation (installs linuxcnc-uspace if missing;
@@ -59,7 +73,7 @@ test-oracle: build
 
 # Each harness for FUZZ_SECONDS (default 60) on its corpus; new inputs are added to tests/fuzz/corpus/.
 fuzz: $(ASAN_DIR)/CMakeCache.txt
-	cmake --build $(ASAN_DIR) -j $(JOBS)
+	$(CMAKE) --build $(ASAN_DIR) -j $(JOBS)
 	scripts/run-fuzzers.sh $(ASAN_DIR) $(FUZZ_SECONDS)
 
 demo: build
@@ -86,3 +100,5 @@ bench: build
 
 clean:
 	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so
+
+endif

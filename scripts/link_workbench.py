@@ -42,8 +42,24 @@ def link_posts(repo):
             os.symlink(source, link)
 
 
-if len(sys.argv) < 2:
-    raise SystemExit("usage: freecadcmd scripts/link_workbench.py REPO_DIR")
-link_workbench(sys.argv[1])
-link_posts(os.path.realpath(sys.argv[1]))
+def repo_argument():
+    """REPO_DIR: the argument after this script's path (freecadcmd 1.0 puts itself first in sys.argv)."""
+    script = next((i for i, a in enumerate(sys.argv) if a.endswith(".py")), 0)
+    args = sys.argv[script + 1:]
+    if not args:
+        raise SystemExit("usage: freecadcmd scripts/link_workbench.py REPO_DIR")
+    return args[0]
+
+
+try:
+    repo = repo_argument()
+    link_workbench(repo)
+    link_posts(os.path.realpath(repo))
+except SystemExit as failure:
+    if failure.code not in (None, 0):
+        sys.stderr.write("%s\n" % failure.code)
+    sys.stdout.flush()
+    sys.stderr.flush()  # freecadcmd 1.0 exits without flushing them
+    raise SystemExit(0 if failure.code in (None, 0) else 1)
+sys.stdout.flush()
 raise SystemExit(0)  # or freecadcmd would try to open the remaining arguments as documents

@@ -2,6 +2,7 @@
 
     freecadcmd scripts/make_test_data.py
 """
+import sys
 import json
 import os
 
@@ -15,4 +16,5 @@ with open(os.path.join(DATA, "master_bottom_feature.json"), "w") as stream:
     json.dump({"bottom_face": feature.bottom_face, "boundary_1": feature.boundary_1,
                "boundary_2": feature.boundary_2, "volume_mm3": round(feature.shape.Volume, 3)}, stream, indent=2)
 print("test data written to", os.path.normpath(DATA))
+sys.stdout.flush()  # freecadcmd 1.0 drops unflushed output on SystemExit
 raise SystemExit(0)

@@ -17,7 +17,7 @@ fresh_home() {
 }
 
 run_cpp() {
-  ctest --test-dir "$build_dir" --output-on-failure -j 2
+  /usr/bin/ctest --test-dir "$build_dir" --output-on-failure -j 2
 }
 
 run_python() {

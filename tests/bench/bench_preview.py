@@ -1,6 +1,7 @@
 """Time of one live-preview update of the Guide curve net panel, from FreeCAD shapes to curves, measured in
 one run beside the core alone: `freecadcmd tests/bench/bench_preview.py`.
 """
+import sys
 import time
 
 import hsmplanner
@@ -31,4 +32,5 @@ cases = [
 print("%-52s %9s %9s" % ("case", "best ms", "median ms"))
 for name, function in cases:
     print("%-52s %9.1f %9.1f" % ((name,) + best_of(function, 5 if "split" in name else 15)))
+sys.stdout.flush()  # freecadcmd 1.0 drops unflushed output on SystemExit
 raise SystemExit(0)
