@@ -1,4 +1,5 @@
 #include "curvenet/regions.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/text.hpp"
@@ -7,7 +8,6 @@
 #include "curvenet/fitting.hpp"
 
 #include <BRepAlgoAPI_Splitter.hxx>
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
@@ -114,8 +114,7 @@ void checkNetOnFace(const CurveNet& net, const TopoDS_Face& face, const Eigen::V
 std::vector<AreaRegion> areaRegions(const CurveNet& net, const TopoDS_Face& face, const Eigen::Vector3d& toolAxis) {
   if (face.IsNull()) throw InputError("the bottom face is null: pass the face the net lies on");
   if (net.curves.size() < 2) throw InputError("the net has fewer than two curves");
-  Bnd_Box box;
-  BRepBndLib::Add(face, box);
+  const Bnd_Box box = geometry::exactBounds(face);
   const double size = std::sqrt(box.SquareExtent());
   const gp_Vec axis(toolAxis.x(), toolAxis.y(), toolAxis.z());
   checkNetOnFace(net, face, toolAxis, size);

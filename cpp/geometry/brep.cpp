@@ -1,9 +1,9 @@
 #include "geometry/brep.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/occt_guard.hpp"
 
-#include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
@@ -100,8 +100,7 @@ ShapeSummary summarize(const TopoDS_Shape& shape) {
     BRepGProp::LinearProperties(edges(i), linear);
     summary.length += linear.Mass();
   }
-  Bnd_Box box;
-  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+  Bnd_Box box = geometry::exactBounds(shape);
   if (!box.IsVoid()) {
     double x0, y0, z0, x1, y1, z1;
     box.Get(x0, y0, z0, x1, y1, z1);

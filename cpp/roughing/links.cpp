@@ -1,10 +1,10 @@
 // Safe links between the sweeps of several regions (sweep.hpp: joinSweeps).
 #include "roughing/sweep.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/text.hpp"
 
-#include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <Eigen/Geometry>
 
@@ -81,8 +81,7 @@ std::vector<ToolMove> joinSweeps(const std::vector<std::vector<ToolMove>>& regio
       if (axis.isZero()) axis = m.axis.normalized();
       oneAxis = oneAxis && m.axis.normalized().dot(axis) > 1.0 - 1e-12;
     }
-  Bnd_Box box;
-  BRepBndLib::Add(stock, box);
+  Bnd_Box box = geometry::exactBounds(stock);
   if (box.IsVoid()) throw InputError("joining sweeps: the stock is empty");
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);

@@ -1,10 +1,10 @@
 #include "roughing/projection.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "roughing/meridian.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -221,8 +221,7 @@ Eigen::Vector3d middleOf(const SubVolume& first) {
 }
 
 double sizeOf(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box);
+  Bnd_Box box = geometry::exactBounds(shape);
   return std::sqrt(box.SquareExtent());
 }
 

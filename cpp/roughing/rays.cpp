@@ -1,6 +1,6 @@
 #include "roughing/rays.hpp"
+#include "geometry/bounds.hpp"
 
-#include <BRepBndLib.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -11,8 +11,7 @@ namespace hsm::roughing {
 RayCaster::RayCaster(const TopoDS_Shape& shape, double tolerance) {
   for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
     faces_.push_back(TopoDS::Face(it.Current()));
-    Bnd_Box box;
-    BRepBndLib::Add(faces_.back(), box);
+    Bnd_Box box = geometry::exactBounds(faces_.back());
     box.Enlarge(tolerance);
     boxes_.push_back(box);
     intersectors_.push_back(std::make_unique<IntCurvesFace_Intersector>(faces_.back(), tolerance));

@@ -3,6 +3,7 @@
 // volume is reachable when nothing of the part lies above it (the highest part surface over its cell of the
 // plane normal to d is below it).
 #include "roughing/roughing.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/parallel.hpp"
@@ -11,7 +12,6 @@
 #include "roughing/rays.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepBndLib.hxx>
 #include <gp_Lin.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepTools.hxx>
@@ -36,8 +36,7 @@ constexpr double kMinResolutionDeg = 0.5;
 // Points of the solid on a grid of `spacing` (cell centres inside it), column by column: a vertical line through
 // each column meets the solid's faces, and the stretches between entries and exits hold its points.
 std::vector<Eigen::Vector3d> gridPoints(const TopoDS_Shape& solid, double spacing) {
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box, Standard_False);  // the geometry's bounds, not a triangulation's: the grid must not depend on what meshed the solid before
+  Bnd_Box box = geometry::exactBounds(solid);
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
   const double cells = std::ceil((x1 - x0) / spacing) * std::ceil((y1 - y0) / spacing) * std::ceil((z1 - z0) / spacing);
@@ -179,8 +178,7 @@ ReachProblem reachProblem(const RemovalSolid& solid, const TopoDS_Shape& part, c
   problem.points = gridPoints(solid.solid, settings.setupGrid);
   if (problem.points.empty())
     throw InputError("the setup grid of " + number(settings.setupGrid) + " mm puts no point inside the volume: use a finer grid");
-  Bnd_Box box;
-  BRepBndLib::Add(part, box);
+  Bnd_Box box = geometry::exactBounds(part);
   problem.mesh = geometry::meshFacesAfresh(part, std::max(1e-3, 5e-3 * std::sqrt(box.SquareExtent())));
   return problem;
 }

@@ -1,4 +1,5 @@
 #include "roughing/slicing.hpp"
+#include "geometry/bounds.hpp"
 
 #include "geometry/mesh.hpp"
 #include "roughing/meridian.hpp"
@@ -8,7 +9,6 @@
 #include "common/text.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -57,8 +57,7 @@ struct Box {
 };
 
 Box boxOf(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box);
+  Bnd_Box box = geometry::exactBounds(shape);
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
   return {{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)}, std::hypot(x1 - x0, y1 - y0, z1 - z0)};

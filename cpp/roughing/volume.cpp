@@ -1,4 +1,5 @@
 #include "roughing/roughing.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/occt_progress.hpp"
@@ -6,7 +7,6 @@
 #include "roughing/rays.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <Bnd_Box.hxx>
 #include <Poly_Triangulation.hxx>
@@ -247,8 +247,7 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
   // The stock must hold the part: no node of the part's mesh lies outside it (a boolean part − stock would
   // cost as much as the cut itself).
   {
-    Bnd_Box box;
-    BRepBndLib::Add(part, box);
+    Bnd_Box box = geometry::exactBounds(part);
     const double size = std::sqrt(box.SquareExtent());
     BRepMesh_IncrementalMesh(part, 2e-3 * size, Standard_False, 0.5, Standard_True);
     BRepClass3d_SolidClassifier inStock(stock);

@@ -1,4 +1,5 @@
 #include "toolpath/finishing_context.hpp"
+#include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
 #include "common/parallel.hpp"
@@ -7,7 +8,6 @@
 #include "geometry/mesh.hpp"
 #include "toolpath/reach.hpp"
 
-#include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -64,15 +64,13 @@ Context::Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettin
   // Every face of the part that the ball can meet above the bottom face holds the tool up (a pass must
   // not cut through the part to reach it); faces beyond the tool's reach in plan are left out. The bottom
   // face itself is dropped on exactly, and meshed too where part of it looks down.
-  Bnd_Box reachBox;
-  BRepBndLib::AddOptimal(bottom_, reachBox, false, false);
+  Bnd_Box reachBox = geometry::exactBounds(bottom_);
   reachBox.Enlarge(settings.toolRadius + std::max(settings.extension, settings.toolRadius) + 1.0);
   reachBox.OpenZmin();  // in plan only: a face far above (a shelf) or below still holds the tool
   reachBox.OpenZmax();
   std::vector<int> others;
   for (int i = 1; i <= faces.Extent(); ++i) {
-    Bnd_Box faceBox;
-    BRepBndLib::Add(faces(i), faceBox);
+    Bnd_Box faceBox = geometry::exactBounds(faces(i));
     const bool nearInPlan = !faceBox.IsVoid() && !reachBox.IsOut(faceBox);
     if ((i != bottomFace || reach.up < 1.0) && nearInPlan) others.push_back(i);
   }
@@ -82,13 +80,11 @@ Context::Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettin
   cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
   exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius, reach.toolSide);
   gauge_ = std::make_unique<CuspGauge>(*exact_, settings.toolRadius);
-  Bnd_Box box;
-  BRepBndLib::Add(part, box);
+  Bnd_Box box = geometry::exactBounds(part);
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
   safeHeight_ = z1 + settings.clearance;
-  Bnd_Box faceBox;
-  BRepBndLib::AddOptimal(bottom_, faceBox, false, false);
+  Bnd_Box faceBox = geometry::exactBounds(bottom_);
   faceBox.Get(x0, y0, z0, x1, y1, z1);
   faceMin_ = Vector2(x0, y0);
   faceMax_ = Vector2(x1, y1);

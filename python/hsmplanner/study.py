@@ -22,7 +22,9 @@ import json
 import math
 import multiprocessing
 import os
+import signal
 import sys
+import threading
 import time
 
 import numpy as np
@@ -350,9 +352,18 @@ def _collect(futures, ready, finished, idle, failed_row):
     return True
 
 
+def _broken_pipes_raise():
+    """Writing to a worker that died must raise BrokenPipeError, as in any Python, not kill the process:
+    python3 ignores SIGPIPE at start-up, FreeCAD 1.0's embedded interpreter leaves it at the default, so
+    the first write to a stopped worker's pipe ended freecadcmd (exit 141) or FreeCAD with the document."""
+    if threading.current_thread() is threading.main_thread() and signal.getsignal(signal.SIGPIPE) == signal.SIG_DFL:
+        signal.signal(signal.SIGPIPE, signal.SIG_IGN)
+
+
 def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished, idle):
     # fork: the workers inherit the imported core (and inside freecadcmd, sys.executable is not a Python)
     context = multiprocessing.get_context("fork")
+    _broken_pipes_raise()
     with _plain_streams_in_workers():
         pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context)
         try:
@@ -455,6 +466,7 @@ def local_cluster(workers=2):
     import dask
     import distributed
 
+    _broken_pipes_raise()
     # the workers start as fresh Python processes: inside freecadcmd, sys.executable is FreeCAD, not a Python
     multiprocessing.set_executable(_python_executable())
     # no statistical profiler in the workers: sampling every thread's stack each 10 ms cost the variants 10 %
