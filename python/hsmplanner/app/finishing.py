@@ -15,6 +15,13 @@ from .guide_curve_net_object import net_curve_edges
 AREA_CHOICES = ["Elementary areas of the net", "Between the boundaries"]
 
 
+def exact_top(shape):
+    """The highest z of `shape`'s geometry. Shape.BoundBox reads the triangulation FreeCAD's 3D view leaves on
+    a displayed part and the looser control points of one never displayed, so retracts taken from it differed
+    between the GUI and freecadcmd for the same document."""
+    return shape.optimalBoundingBox(False, False).ZMax
+
+
 def net_curves(net):
     """The curves of a Guide curve net object as core curves, B1 to B2 (its CurveShapes)."""
     return [hsmplanner.as_curve(edge) for edge in net_curve_edges(net)]

@@ -9,7 +9,9 @@ import hsmplanner
 
 from . import finishing
 from .compat import cam_module
+from .op_comments import mend_leading_comments
 from .progress import freecad_progress
+from .stock_heights import use_exact_stock_depths
 from .property_limits import PropertyLimits
 
 PathOp = cam_module("op")
@@ -45,6 +47,9 @@ class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
         obj.addProperty("App::PropertyFloatList", "PassLengths", "Result", "length of each pass, mm")
         obj.setEditorMode("PassLengths", 1)
 
+    def opUpdateDepths(self, obj):
+        use_exact_stock_depths(obj, getattr(self, "job", None))
+
     def options(self, obj, part_top):
         finishing.check_tool(obj.ToolController, self.tool)
         clearance = max(1.0, obj.SafeHeight.Value - part_top) if hasattr(obj, "SafeHeight") else 5.0
@@ -53,6 +58,7 @@ class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
                     clearance=clearance)
 
     def emit(self, obj, moves, stats):
+        mend_leading_comments(self.commandlist, obj)
         for warning in stats["warnings"]:
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         obj.Passes = stats["passes"]
@@ -81,7 +87,7 @@ class ObjectGuideCurveFinishing(_FinishingOp):
         direction = tuple(obj.Net.ChosenDirection)
         with freecad_progress("%s: guide-curve finishing" % obj.Label) as progress:
             moves, stats = hsmplanner.guide_finishing(shape, face, areas, direction, progress=progress,
-                                                      **self.options(obj, shape.BoundBox.ZMax))
+                                                      **self.options(obj, finishing.exact_top(shape)))
         self.emit(obj, moves, stats)
 
 
@@ -98,7 +104,7 @@ class ObjectParallelPlaneFinishing(_FinishingOp):
         face = subs[0] if not isinstance(subs, str) else subs
         with freecad_progress("%s: parallel-plane finishing" % obj.Label) as progress:
             moves, stats = hsmplanner.parallel_finishing(part.Shape, face, obj.Angle.Value, progress=progress,
-                                                         **self.options(obj, part.Shape.BoundBox.ZMax))
+                                                         **self.options(obj, finishing.exact_top(part.Shape)))
         self.emit(obj, moves, stats)
 
 

@@ -12,6 +12,7 @@ import FreeCAD
 from hsmplanner import feedsim, roughing
 
 from .compat import cam_module
+from .op_comments import mend_leading_comments
 from .property_limits import PropertyLimits
 from .roughing_commands import sweep_commands
 
@@ -112,6 +113,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         if report.too_close:
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
+        mend_leading_comments(self.commandlist, obj)
         self.commandlist.extend(sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
         closest = report.minimum
         obj.Passes = passes
