@@ -377,11 +377,23 @@ def _run_on_processes(workers, grid, inputs, finishing, cache_dir, finished, idl
         completed = _collect(futures, ready, finished, idle, lambda i, error: _failed(grid[i], error))
     finally:
         if not completed:  # cancelled: the running variants are stopped, not left to load the cores
-            for process in list((getattr(pool, "_processes", None) or {}).values()):  # (no public way in 3.11)
-                process.terminate()
+            _stop_workers(list((getattr(pool, "_processes", None) or {}).values()))  # (no public way in 3.13)
         # not waited for when cancelled: the pool's threads could wait for ever on the pipes of the processes
         # just stopped
         pool.shutdown(wait=completed, cancel_futures=not completed)
+
+
+def _stop_workers(processes, grace_s=2.0):
+    """Terminates the pool's worker processes and reaps them before the run returns: a forked FreeCAD takes
+    a moment to die, and a caller that closed the study (the panel) would otherwise still see them running.
+    A worker that has not ended after grace_s is killed."""
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join(grace_s)
+        if process.is_alive():
+            process.kill()
+            process.join(grace_s)
 
 
 def _failed(variant, error):

@@ -210,27 +210,37 @@ def _no_gate():
     FreeCADGui.Selection.removeSelectionGate()
 
 
+def _base_state_methods():
+    """The save and restore methods of FreeCAD's operation view provider: dumps/loads from 1.0 on, only
+    __getstate__/__setstate__ on 0.20. Asked by name, not by hasattr on an instance: from Python 3.11 every
+    object has an __getstate__, which returns the live __dict__ (the view object, the panel) instead of the
+    operation's four saved strings."""
+    base = PathOpGui.ViewProvider
+    if "dumps" in vars(base):
+        return base.dumps, base.loads
+    return base.__getstate__, base.__setstate__
+
+
 class ViewProviderFinishing(PathOpGui.ViewProvider):
     """FreeCAD's operation view provider, saving the icon by name: a saved document holds no path into the
     saving user's files (another user, or a moved install, would see FreeCAD's generic icon)."""
 
-    def getIcon(self):
-        return self.OpIcon
+    _base_dumps, _base_loads = _base_state_methods()
 
-    def __getstate__(self):
-        state = super().__getstate__()
+    def getIcon(self):
+        """Our icon; FreeCAD's "inactive operation" icon once CAM's Toggle Operation has disabled it."""
+        return self.OpIcon if self.Object.Active else super().getIcon()
+
+    def dumps(self):
+        state = dict(self._base_dumps())
         state["OpIcon"] = icon_name(state["OpIcon"])
         return state
 
-    def __setstate__(self, state):
-        super().__setstate__(state)
+    def loads(self, state):
+        self._base_loads(state)
         self.OpIcon = icon(icon_name(self.OpIcon))  # also mends documents saved with a path
 
-    def dumps(self):  # FreeCAD 1.x spelling
-        return self.__getstate__()
-
-    def loads(self, state):
-        self.__setstate__(state)
+    __getstate__, __setstate__ = dumps, loads  # the FreeCAD 0.20 spelling
 
     def getSelectionFactory(self):
         return _no_gate
@@ -275,11 +285,6 @@ class ViewProviderVolumeRoughing(ViewProviderFinishing):
         if len(segments) and getattr(self.vobj, "Visibility", True):
             self.ticks = line_set(list(segments), width=1.0)
             root.addChild(self.ticks)
-
-    def __getstate__(self):
-        state = super().__getstate__()
-        state.pop("ticks", None)
-        return state
 
 
 def icon_name(path_or_name):
