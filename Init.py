@@ -15,3 +15,11 @@ def _hsm_planner_add_python_path():
 
 _hsm_planner_add_python_path()
 del _hsm_planner_add_python_path
+
+
+# Documents saved with FreeCAD 0.20 name their Job's proxies by 0.20 module names (PathScripts.PathJob…):
+# resolve those to FreeCAD 1.x's modules before any document opens.
+import hsmplanner_legacy_modules as _hsm_legacy_modules
+
+_hsm_legacy_modules.install()
+del _hsm_legacy_modules

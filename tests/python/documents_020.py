@@ -1,0 +1,363 @@
+"""Documents saved with FreeCAD 0.20.2 (../shared/data/freecad-0.20), opened in the running FreeCAD: what must
+have come through, and how each recomputed path may differ from the one saved. Shared by
+test_documents_020.py (freecadcmd) and tests/gui/gui_documents_020.py (the GUI): each check returns the list
+of its problems, empty when the document is fine.
+
+EXPECTED_DIFFERENCES is the one table of the paths that do not come out as saved, each with its reason and
+a rule that accepts that difference and nothing else; docs/freecad-versions.md ("Documents saved with
+FreeCAD 0.20") gives the same table.
+"""
+import json
+import math
+import os
+import shutil
+
+import FreeCAD
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+DATA = os.environ.get("HSM_FREECAD020_DATA",
+                      os.path.normpath(os.path.join(REPO, "..", "shared", "data", "freecad-0.20")))
+DOCUMENTS = ["master_study.FCStd", "slot_job.FCStd", "impeller_job.FCStd"]
+LENGTH_TOLERANCE_MM = 1e-3  # documents.json keeps lengths to 3 decimals
+
+
+def saved_record():
+    """documents.json: per document, its objects and each path's command count and length as saved."""
+    path = os.path.join(DATA, "documents.json")
+    if not os.path.isfile(path):
+        raise FileNotFoundError("%s is missing: the FreeCAD 0.20 documents live in ../shared/data/freecad-0.20 "
+                                "beside the repository (or set HSM_FREECAD020_DATA to their folder)" % path)
+    with open(path) as stream:
+        return json.load(stream)
+
+
+def open_copy(name, folder):
+    """Opens a copy of the saved document `name` made in `folder` (the shared original is never written)."""
+    copy = os.path.join(folder, name)
+    shutil.copyfile(os.path.join(DATA, name), copy)
+    return FreeCAD.openDocument(copy)
+
+
+# --- objects and proxies ----------------------------------------------------------------------------------
+
+def is_ours(obj):
+    return type(getattr(obj, "Proxy", None)).__module__.startswith("hsmplanner.")
+
+
+def proxy_problems(document, names):
+    """Every object of documents.json is there, and every Python feature among them has its proxy again."""
+    problems = []
+    for name in names:
+        obj = document.getObject(name)
+        if obj is None:
+            problems.append("%s: missing after opening" % name)
+        elif obj.TypeId.endswith("Python") and getattr(obj, "Proxy", None) is None:
+            problems.append("%s (%s): proxy not restored (its module is not importable)" % (name, obj.TypeId))
+    return problems
+
+
+def job_problems(document):
+    """Each Job is FreeCAD's own again (its class from the running FreeCAD) and holds its operations, tool
+    controllers, tool bits, stock and setup sheet as FreeCAD's own objects."""
+    from hsmplanner.app.compat import cam_module
+
+    expected = {"Job": (cam_module("job"), "ObjectJob"),
+                "ToolController": (cam_module("tool_controller"), "ToolController"),
+                "ToolBit": (cam_module("tool_bit"), "ToolBit")}
+    problems = []
+
+    def check(obj, role, what):
+        module, name = expected[role]
+        if obj is None or not isinstance(getattr(obj, "Proxy", None), getattr(module, name)):
+            problems.append("%s: not a %s.%s (%r)" % (what, module.__name__, name, getattr(obj, "Proxy", None)))
+
+    jobs = [o for o in document.Objects if type(getattr(o, "Proxy", None)).__name__ == "ObjectJob"]
+    if not jobs:
+        problems.append("no Job restored")
+    for job in jobs:
+        check(job, "Job", job.Name)
+        for controller in job.Tools.Group:
+            check(controller, "ToolController", controller.Name)
+            check(getattr(controller, "Tool", None), "ToolBit", "the tool of " + controller.Name)
+        for op in job.Operations.Group:
+            if op.ToolController not in job.Tools.Group:
+                problems.append("%s: its tool controller is not one of %s's" % (op.Name, job.Name))
+        for role in ("Stock", "SetupSheet"):
+            resource = getattr(job, role, None)
+            if resource is None or getattr(resource, "Proxy", None) is None:
+                problems.append("%s: its %s did not come through" % (job.Name, role))
+    return problems
+
+
+# --- properties of our objects ----------------------------------------------------------------------------
+
+def fresh_objects(document):
+    """One object of each of our proxy classes, made by today's code in `document`: what a restored object
+    must have (by class name)."""
+    from hsmplanner.app import (feedrate_object, finishing_ops, guide_curve_net_object, master_feature_object,
+                                roughing_object, roughing_op, roughing_parts)
+    from hsmplanner.app.compat import create_job
+
+    block, block_stock = roughing_parts.create_slanted_slot_block(document)
+    job = create_job([block])
+    made = [block, block_stock, roughing_parts.create_impeller(document)[0],
+            finishing_ops.CreateGuideCurveFinishing("FreshGuide", parentJob=job),
+            finishing_ops.CreateParallelPlaneFinishing("FreshPlanes", parentJob=job),
+            roughing_op.CreateVolumeRoughing("FreshRoughing", parentJob=job)]
+    # Last, and never recomputed: without inputs these would only report their errors.
+    analysis = document.addObject(feedrate_object.TYPE_NAME, "FreshAnalysis")
+    feedrate_object.FeedRateAnalysis(analysis)
+    made += [analysis, guide_curve_net_object.create(document), roughing_object.create(block, recompute=False),
+             master_feature_object.create(document)]
+    return {type(obj.Proxy).__name__: obj for obj in made}
+
+
+def _value_problem(obj, name):
+    """What is wrong with one property's value, or None."""
+    kind, value = obj.getTypeIdOfProperty(name), getattr(obj, name)
+    if kind == "App::PropertyEnumeration":
+        choices = obj.getEnumerationsOfProperty(name)
+        if value not in choices:
+            return "%s = %r is not one of its choices %s" % (name, value, choices)
+    number = getattr(value, "Value", value)
+    if isinstance(number, float) and not math.isfinite(number):
+        return "%s = %r" % (name, value)
+    if kind == "App::PropertyLength" and number < 0:
+        return "%s = %r is negative" % (name, value)
+    if kind.startswith("App::PropertyLink"):
+        targets = value if isinstance(value, list) else [value]
+        for target in targets:
+            target = target[0] if isinstance(target, tuple) else target
+            if target is not None and target.Document != obj.Document:
+                return "%s links %s of another document" % (name, target.Name)
+    return None
+
+
+def property_problems(document, fresh):
+    """Every property today's code gives an object of its class exists on the restored object, with the same
+    type, the same choices (enumerations) and a sane value; and the links every such object needs are set."""
+    problems = []
+    for obj in (o for o in document.Objects if is_ours(o)):
+        model = fresh.get(type(obj.Proxy).__name__)
+        if model is None:
+            problems.append("%s: no fresh %s to compare with (add it to fresh_objects)" % (obj.Name, type(obj.Proxy)))
+            continue
+        for name in model.PropertiesList:
+            if name not in obj.PropertiesList:
+                problems.append("%s: property %s missing (add it in onDocumentRestored)" % (obj.Name, name))
+                continue
+            if obj.getTypeIdOfProperty(name) != model.getTypeIdOfProperty(name):
+                problems.append("%s.%s is a %s, today's code makes a %s" % (obj.Name, name,
+                                obj.getTypeIdOfProperty(name), model.getTypeIdOfProperty(name)))
+            elif (model.getTypeIdOfProperty(name) == "App::PropertyEnumeration"
+                  and obj.getEnumerationsOfProperty(name) != model.getEnumerationsOfProperty(name)):
+                problems.append("%s.%s offers %s, today's code %s" % (obj.Name, name,
+                                obj.getEnumerationsOfProperty(name), model.getEnumerationsOfProperty(name)))
+            problem = _value_problem(obj, name)
+            if problem:
+                problems.append("%s: %s" % (obj.Name, problem))
+        for name in REQUIRED_LINKS.get(type(obj.Proxy).__name__, ()):
+            if getattr(obj, name, None) in (None, [], ()):
+                problems.append("%s: %s is not set" % (obj.Name, name))
+    return problems
+
+
+# The links without which an object of the class cannot recompute (as the saved documents have them).
+REQUIRED_LINKS = {
+    "GuideCurveNet": ("Boundary1", "Boundary2", "BottomFace"),
+    "ObjectGuideCurveFinishing": ("Net", "ToolController"),
+    "ObjectVolumeRoughing": ("Volume", "ToolController"),
+    "RoughingVolume": ("Part", "Stock"),
+    "TestPartStock": ("Part",),
+    "FeedRateAnalysis": ("Source",),
+}
+
+
+# --- paths ------------------------------------------------------------------------------------------------
+
+def paths_of(document):
+    """{object name: its Path's commands} of every object with a Path."""
+    return {obj.Name: list(obj.Path.Commands) for obj in document.Objects if hasattr(obj, "Path")}
+
+
+def recompute_all(document):
+    """Recomputes every object of ours and the Jobs' stocks (opening leaves some untouched, and an untouched
+    operation would keep its saved path); returns the objects left invalid."""
+    for obj in document.Objects:
+        if is_ours(obj) or type(getattr(obj, "Proxy", None)).__name__.startswith("Stock"):
+            obj.touch()
+    document.recompute()
+    return ["%s: %s" % (o.Name, o.getStatusString()) for o in document.Objects if not o.isValid()]
+
+
+def path_length(commands):
+    import Path
+
+    return Path.Path(commands).Length
+
+
+def _moves(commands):
+    return [c for c in commands if not c.Name.startswith("(")]
+
+
+def only_retract_heights(saved_z, new_z):
+    """A rule: the same commands, but for the head comment (see same_head_comment) and the G0 moves at Z
+    `saved_z`, which are at `new_z` now with X and Y unchanged."""
+
+    def rule(obj, saved, now):
+        problems = same_head_comment(obj, saved, now)
+        saved_moves, new_moves = _moves(saved), _moves(now)
+        if len(saved_moves) != len(new_moves):
+            return problems + ["%d moves, %d saved" % (len(new_moves), len(saved_moves))]
+        moved = 0
+        for index, (old, new) in enumerate(zip(saved_moves, new_moves)):
+            if old.toGCode() == new.toGCode():
+                continue
+            expected = dict(old.Parameters, Z=new_z)
+            if (old.Name != "G0" or new.Name != "G0" or abs(old.Parameters.get("Z", math.nan) - saved_z) > 1e-6
+                    or set(expected) != set(new.Parameters)
+                    or any(abs(expected[k] - new.Parameters[k]) > 1e-6 for k in expected)):
+                problems.append("move %d: %s, saved %s: not a retract moved from Z%g to Z%g"
+                                % (index, new.toGCode(), old.toGCode(), saved_z, new_z))
+            else:
+                moved += 1
+        if not moved:
+            problems.append("no retract moved from Z%g to Z%g: the difference is gone, drop it from the table"
+                            % (saved_z, new_z))
+        return problems
+
+    return rule
+
+
+def same_head_comment(obj, saved, now):
+    """The head comment is the label as op_comments writes it (brackets for parentheses); the saved one was
+    FreeCAD 0.20's, whose inner '(' Path.Command dropped."""
+    from hsmplanner.app.op_comments import comment_text
+
+    head = [c.Name for c in now if c.Name.startswith("(")][:1]
+    wanted = "(%s)" % comment_text(obj.Label)
+    return [] if head == [wanted] else ["head comment %s, expected %s" % (head, wanted)]
+
+
+def same_tool_path(tolerance_mm, angle_tolerance_deg, count_share):
+    """A rule: the recomputed moves and the saved ones lie on each other's path, every tool tip within
+    `tolerance_mm` of the other polyline and its A/C within `angle_tolerance_deg` of the other's there, with a
+    command count within `count_share` of the saved one (a pass's points thinned at other places)."""
+
+    def rule(obj, saved, now):
+        import numpy
+
+        problems = [] if [c.Name for c in saved[:1]] == [c.Name for c in now[:1]] else ["head comment changed"]
+        if abs(len(now) - len(saved)) > count_share * len(saved):
+            problems.append("%d commands, %d saved: more than %g %% apart" % (len(now), len(saved),
+                                                                               100 * count_share))
+        old, new = _tips(saved, numpy), _tips(now, numpy)
+        for what, points, polyline in (("recomputed", new, old), ("saved", old, new)):
+            distance, angles = _nearest_on_polyline(points, polyline, numpy)
+            worst = int(numpy.argmax(distance))
+            if distance[worst] > tolerance_mm:
+                problems.append("%s tool tip %d at %s is %.4f mm from the other path (> %g mm)"
+                                % (what, worst, points[worst, :3].round(4).tolist(), distance[worst], tolerance_mm))
+            turned = numpy.abs(points[:, 3:] - angles).max()
+            if turned > angle_tolerance_deg:
+                problems.append("%s A/C differ by %.4f° from the other path's there (> %g°)"
+                                % (what, turned, angle_tolerance_deg))
+        return problems
+
+    return rule
+
+
+def _tips(commands, numpy):
+    """(x, y, z, a, c) after each motion command (modal: an axis not written keeps its value)."""
+    state, rows = dict(X=0.0, Y=0.0, Z=0.0, A=0.0, C=0.0), []
+    for command in commands:
+        if command.Name in ("G0", "G1", "G2", "G3"):
+            state.update({k: v for k, v in command.Parameters.items() if k in state})
+            rows.append([state[k] for k in "XYZAC"])
+    return numpy.array(rows)
+
+
+def _nearest_on_polyline(points, polyline, numpy, chunk=256):
+    """For each (x, y, z, a, c) of `points`: the distance of its tip to the tool-tip polyline of `polyline`, and
+    the polyline's A/C interpolated at the nearest point (a controller interpolates them along the move)."""
+    start, step = polyline[:-1], polyline[1:] - polyline[:-1]
+    length2 = numpy.maximum((step[:, :3] ** 2).sum(axis=1), 1e-300)
+    distances, angles = numpy.empty(len(points)), numpy.empty((len(points), 2))
+    for first in range(0, len(points), chunk):
+        tips = points[first:first + chunk, None, :3]
+        t = numpy.clip(((tips - start[:, :3]) * step[:, :3]).sum(axis=2) / length2, 0.0, 1.0)
+        nearest = start + t[..., None] * step
+        d = numpy.sqrt(((nearest[..., :3] - tips) ** 2).sum(axis=2))
+        best = d.argmin(axis=1)
+        rows = numpy.arange(len(best))
+        distances[first:first + chunk] = d[rows, best]
+        angles[first:first + chunk] = nearest[rows, best, 3:]
+    return distances, angles
+
+
+class Difference:
+    """How a recomputed path differs from the one saved on FreeCAD 0.20.2, and why."""
+
+    def __init__(self, reason, rule, commands=None, length_mm=None):
+        self.reason, self.rule = reason, rule
+        self.commands, self.length_mm = commands, length_mm  # as recomputed on FreeCAD 1.0, for the docs' table
+
+
+# (document, object) -> Difference. Every other path must come out as saved.
+EXPECTED_DIFFERENCES = {
+    ("master_study.FCStd", "GuideCurveFinishing"): Difference(
+        "our code: retracts at the Safe height, 4.000 (the stock's exact top 1.000 + SafeHeightOffset 3), where "
+        "0.20 added the 0.0117 mm by which the triangulation of the displayed part rose above its exact top "
+        "(the core reads exact bounds now); the head comment '(guide B→median K0.5 P20 (study))' is written "
+        "'[study]' (0.20 dropped the inner '(' and left 'study))')",
+        only_retract_heights(4.01171, 4.0), commands=1502, length_mm=5220.472),
+    ("impeller_job.FCStd", "VolumeRoughing"): Difference(
+        "OCCT 7.8: the volume to remove (stock − part, 7 channels) comes out 4e-5 mm³ smaller (of 102840.6 mm³), "
+        "its sub-volumes shift by 1e-5 mm and the passes' points with them, and the passes' chords (0.01 mm "
+        "tolerance) fall at other places: 2 points more. The same 7 passes; every tool tip within 0.0105 mm "
+        "and 0.023° of the saved path (allowed: twice the chord tolerance, 0.1°)",
+        same_tool_path(tolerance_mm=0.02, angle_tolerance_deg=0.1, count_share=0.01), commands=1817,
+        length_mm=1103.760),
+}
+
+
+def path_problems(name, record, saved_paths, document):
+    """Each recomputed path against documents.json (count, length): equal, or differing only as the table
+    says; the table's entries must still be needed."""
+    problems = []
+    for obj_name, as_saved in record["path_commands_and_length_as_saved"].items():
+        obj = document.getObject(obj_name)
+        now = list(obj.Path.Commands)
+        count, length = len(now), path_length(now)
+        same = count == as_saved["commands"] and abs(length - as_saved["length_mm"]) <= LENGTH_TOLERANCE_MM
+        same = same and [c.toGCode() for c in now] == [c.toGCode() for c in saved_paths[obj_name]]
+        difference = EXPECTED_DIFFERENCES.get((name, obj_name))
+        if difference is None:
+            if not same:
+                problems.append("%s %s: %d commands, %.3f mm after recompute; saved %d, %.3f mm: explain it in "
+                                "EXPECTED_DIFFERENCES" % (name, obj_name, count, length, as_saved["commands"],
+                                                          as_saved["length_mm"]))
+            continue
+        if same:
+            problems.append("%s %s comes out as saved: drop it from EXPECTED_DIFFERENCES" % (name, obj_name))
+            continue
+        problems += ["%s %s: %s" % (name, obj_name, p) for p in difference.rule(obj, saved_paths[obj_name], now)]
+        if (count, round(length, 3)) != (difference.commands, difference.length_mm):
+            problems.append("%s %s: %d commands, %.3f mm; the table says %s, %s: update it and the docs"
+                            % (name, obj_name, count, length, difference.commands, difference.length_mm))
+    return problems
+
+
+def saved_path_problems(record, saved_paths):
+    """The paths as opened are those documents.json describes (else the data and the record disagree)."""
+    problems = []
+    for obj_name, as_saved in record["path_commands_and_length_as_saved"].items():
+        commands = saved_paths.get(obj_name)
+        if commands is None:
+            problems.append("%s: no path after opening" % obj_name)
+        elif (len(commands) != as_saved["commands"]
+              or abs(path_length(commands) - as_saved["length_mm"]) > LENGTH_TOLERANCE_MM):
+            problems.append("%s as opened: %d commands, %.3f mm; documents.json says %d, %.3f mm"
+                            % (obj_name, len(commands), path_length(commands), as_saved["commands"],
+                               as_saved["length_mm"]))
+    return problems

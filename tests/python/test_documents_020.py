@@ -1,0 +1,123 @@
+"""Documents saved with FreeCAD 0.20.2 open in this FreeCAD: every object with its proxy (ours and the Job's),
+every property today's code defines, and paths that recompute as saved or differ only as
+documents_020.EXPECTED_DIFFERENCES says, and why."""
+import os
+import tempfile
+import unittest
+
+import FreeCAD
+import Path
+
+import documents_020 as documents
+
+
+class _SavedDocument:
+    """One saved document, opened from a copy; test_a/b before any recompute, test_c recomputes."""
+
+    NAME = None
+
+    @classmethod
+    def setUpClass(cls):
+        cls.record = documents.saved_record()[cls.NAME]
+        folder = tempfile.TemporaryDirectory(prefix="hsm-test-")
+        cls.addClassCleanup(folder.cleanup)
+        cls.folder = folder.name
+        cls.document = documents.open_copy(cls.NAME, cls.folder)
+        cls.saved_paths = documents.paths_of(cls.document)
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.document.Name)
+
+    def test_a_every_object_comes_back_with_its_proxy(self):
+        self.assertEqual(documents.proxy_problems(self.document, self.record["objects"]), [])
+        self.assertEqual(documents.job_problems(self.document), [])
+        self.assertEqual(documents.saved_path_problems(self.record, self.saved_paths), [])
+
+    def test_b_our_objects_have_every_property_of_today(self):
+        scratch = FreeCAD.newDocument("Fresh020")
+        try:
+            fresh = documents.fresh_objects(scratch)
+            self.assertEqual(documents.property_problems(self.document, fresh), [])
+        finally:
+            FreeCAD.closeDocument(scratch.Name)
+
+    def test_c_recomputed_paths_are_as_saved_or_as_explained(self):
+        self.assertEqual(documents.recompute_all(self.document), [])
+        self.assertEqual(documents.path_problems(self.NAME, self.record, self.saved_paths, self.document), [])
+
+
+class MasterStudy(_SavedDocument, unittest.TestCase):
+    NAME = "master_study.FCStd"
+
+
+class SlotJob(_SavedDocument, unittest.TestCase):
+    NAME = "slot_job.FCStd"
+
+
+class ImpellerJob(_SavedDocument, unittest.TestCase):
+    NAME = "impeller_job.FCStd"
+
+
+def command(text):
+    return Path.Command(text)
+
+
+class _Op:
+    Label = "guide (study)"
+
+
+class TheRulesRefuseOtherDifferences(unittest.TestCase):
+    """The expected-difference rules accept their difference only: each fails on a path that differs more."""
+
+    saved = [command("(guide study))"), command("G0 X1 Y2 Z4.01171"), command("G1 X1 Y2 Z0 F5"),
+             command("G0 X1 Y2 Z4.01171")]
+
+    def retracts(self, now):
+        return documents.only_retract_heights(4.01171, 4.0)(_Op(), self.saved, now)
+
+    def test_lowered_retracts_and_the_bracketed_comment_pass(self):
+        now = [command("(guide [study])"), command("G0 X1 Y2 Z4"), command("G1 X1 Y2 Z0 F5"), command("G0 X1 Y2 Z4")]
+        self.assertEqual(self.retracts(now), [])
+
+    def test_a_moved_cut_a_shifted_retract_or_the_old_comment_fail(self):
+        moved_cut = [command("(guide [study])"), command("G0 X1 Y2 Z4"), command("G1 X1 Y2.1 Z0 F5"),
+                     command("G0 X1 Y2 Z4")]
+        shifted = [command("(guide [study])"), command("G0 X1.5 Y2 Z4"), command("G1 X1 Y2 Z0 F5"),
+                   command("G0 X1 Y2 Z4")]
+        old_comment = [command("(guide study))")] + self.saved[1:2] + [command("G1 X1 Y2 Z0 F5"),
+                                                                       command("G0 X1 Y2 Z4")]
+        self.assertRegex(" ".join(self.retracts(moved_cut)), "move 1: G1")
+        self.assertRegex(" ".join(self.retracts(shifted)), "move 0: G0 X1.5")
+        self.assertRegex(" ".join(self.retracts(old_comment)), "head comment")
+
+    def test_no_change_at_all_says_the_entry_is_stale(self):
+        self.assertRegex(" ".join(self.retracts([command("(guide [study])")] + self.saved[1:])), "drop it")
+
+    def test_the_tool_path_rule_catches_a_tip_off_the_path(self):
+        rule = documents.same_tool_path(tolerance_mm=0.01, angle_tolerance_deg=0.2, count_share=0.01)
+        saved = [command("(op)")] + [command("G1 X%d Y0 Z0 A0 C0 F5" % x) for x in range(200)]
+        close = [command("(op)")] + [command("G1 X%g Y0.005 Z0 A0.1 C0 F5" % x) for x in [0] + [x + 0.5 for x in range(199)] + [199]]
+        off = close[:101] + [command("G1 X100 Y0.05 Z0 A0 C0 F5")] + close[102:]
+        tilted = close[:101] + [command("G1 X100 Y0 Z0 A1 C0 F5")] + close[102:]
+        self.assertEqual(rule(_Op(), saved, close), [])
+        self.assertRegex(" ".join(rule(_Op(), saved, off)), "recomputed tool tip 100 .* 0.05.. mm from the other path")
+        self.assertRegex(" ".join(rule(_Op(), saved, tilted)), "A/C differ")
+        shortened = close[:150]
+        self.assertRegex(" ".join(rule(_Op(), saved, shortened)), "more than 1 %")
+        self.assertRegex(" ".join(rule(_Op(), saved, shortened)), "saved tool tip .* from the other path")
+
+
+class TheDataIsThere(unittest.TestCase):
+    def test_the_three_documents_and_their_record(self):
+        record = documents.saved_record()
+        self.assertEqual(sorted(record), sorted(documents.DOCUMENTS))
+        for name in documents.DOCUMENTS:
+            self.assertTrue(os.path.isfile(os.path.join(documents.DATA, name)), name)
+        for (name, obj), difference in documents.EXPECTED_DIFFERENCES.items():
+            self.assertIn(obj, record[name]["path_commands_and_length_as_saved"], (name, obj))
+            self.assertTrue(difference.reason)
+
+
+if __name__ == "__main__":
+    unittest.main()
