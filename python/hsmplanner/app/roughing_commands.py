@@ -53,6 +53,31 @@ def work_plane_comments(paths, machine):
                          % tuple(float(a) for a in axis))]
 
 
+def program_moves(commands, names=()):
+    """The straight moves (G0/G1) of Path commands as a controller reads them, each word modal from the last
+    (X Y Z and the rotary axes `names` from 0 until first written): (the index in `commands` of each move's
+    command (n,), its tool tip X Y Z (n, 3), its angles (n, len(names)), whether it is a feed (n,) booleans).
+    Our commands are absolute G0/G1 (sweep_commands); arcs and canned cycles are not moves here."""
+    import numpy as np
+
+    position, angles = {"X": 0.0, "Y": 0.0, "Z": 0.0}, {name: 0.0 for name in names}
+    index, tips, turns, feeds = [], [], [], []
+    for number, command in enumerate(commands):
+        if command.Name not in ("G0", "G1", "G00", "G01"):
+            continue
+        for key, value in command.Parameters.items():
+            if key in position:
+                position[key] = value
+            elif key in angles:
+                angles[key] = value
+        index.append(number)
+        tips.append([position["X"], position["Y"], position["Z"]])
+        turns.append([angles[name] for name in names])
+        feeds.append(command.Name in ("G1", "G01"))
+    return (np.asarray(index, dtype=np.int64), np.asarray(tips, dtype=float).reshape(-1, 3),
+            np.asarray(turns, dtype=float).reshape(len(tips), len(names)), np.asarray(feeds, dtype=bool))
+
+
 def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
     """Segments (N, 2, 3) along the tool axis, `length_mm` long from the tip, every `every_mm` of the feed moves
     of `commands` (Path commands with A/B/C of `machine`, as sweep_commands writes them): what the 3D view draws
@@ -64,26 +89,12 @@ def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
     if not (every_mm > 0 and length_mm > 0):
         raise ValueError("tick spacing %g mm and length %g mm must be positive" % (every_mm, length_mm))
     names = [a.name for a in machine.rotary_axes]
-    position, angles = {"X": 0.0, "Y": 0.0, "Z": 0.0}, {name: 0.0 for name in names}
-    tips, turns, feeds = [], [], []
-    for command in commands:
-        if command.Name not in ("G0", "G1", "G00", "G01"):
-            continue
-        for key, value in command.Parameters.items():
-            if key in position:
-                position[key] = value
-            elif key in angles:
-                angles[key] = value
-        tips.append([position["X"], position["Y"], position["Z"]])
-        turns.append([angles[name] for name in names])
-        feeds.append(command.Name in ("G1", "G01"))
+    _, tips, turns, feeds = program_moves(commands, names)
     if len(tips) < 2:
         return np.zeros((0, 2, 3))
-    tips = np.asarray(tips)
     lengths = np.where(feeds[1:], np.linalg.norm(np.diff(tips, axis=0), axis=1), 0.0)
     every = max(every_mm, float(np.sum(lengths)) / 20000.0)
     travelled = np.concatenate([[0.0], np.cumsum(lengths)])
-    turns = np.asarray(turns, dtype=float).reshape(len(tips), len(names))
     segments = []
     for mark in np.arange(every, travelled[-1] + 1e-9, every):
         # On the feed move where the mark falls, tip and angles in proportion (the angles as a controller

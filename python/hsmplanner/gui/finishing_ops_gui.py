@@ -12,6 +12,8 @@ from hsmplanner.app import finishing, finishing_ops, roughing_commands, roughing
 from hsmplanner.app.compat import cam_module
 from hsmplanner.resources import icon
 
+from .tip_path import TipPathView
+
 PathOpGui = cam_module("op_gui")
 
 
@@ -246,9 +248,10 @@ class ViewProviderFinishing(PathOpGui.ViewProvider):
         return _no_gate
 
 
-class ViewProviderVolumeRoughing(ViewProviderFinishing):
-    """The operation's view with ticks of the tool axis every 5 mm of feed moves over FreeCAD's path: a 4- or
-    5-axis path shows the tool turn (the angles of the operation's Machine turned back into axes)."""
+class ViewProviderVolumeRoughing(TipPathView, ViewProviderFinishing):
+    """The operation's view with ticks of the tool axis every 5 mm of feed moves over its path: a 4- or 5-axis
+    path shows the tool turn (the angles of the operation's Machine turned back into axes). A path with A/B/C
+    is drawn where the tool tip goes (gui/tip_path.py: FreeCAD's drawing would turn it off the part)."""
 
     TICK_EVERY_MM, TICK_LENGTH_MM = 5.0, 4.0
 
@@ -263,6 +266,7 @@ class ViewProviderVolumeRoughing(ViewProviderFinishing):
             self.show_ticks(obj)
 
     def onChanged(self, vobj, prop):
+        super().onChanged(vobj, prop)
         if prop == "Visibility":  # the ticks hang off the root node: they follow the path's visibility by hand
             self.show_ticks(vobj.Object)
 
