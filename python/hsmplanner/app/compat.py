@@ -29,6 +29,11 @@ def cam_command_name(name):
     return ("CAM_" if is_cam_era() else "Path_") + name
 
 
+def cam_menu_name():
+    """The menu of the Path/CAM workbench, as a message tells a user where to find a command."""
+    return "CAM" if is_cam_era() else "Path"
+
+
 def cam_preferences_path():
     return "User parameter:BaseApp/Preferences/Mod/" + ("CAM" if is_cam_era() else "Path")
 

@@ -9,7 +9,7 @@ import Path
 import hsmplanner
 from hsmplanner.toolpaths import face_number
 
-from .compat import cam_module
+from .compat import cam_menu_name, cam_module
 from .guide_curve_net_object import net_curve_edges
 
 AREA_CHOICES = ["Elementary areas of the net", "Between the boundaries"]
@@ -68,8 +68,9 @@ def check_tool(controller, tool):
     if not is_ball_end(tool):
         kind = getattr(tool, "ShapeName", None) or getattr(tool, "ToolType", None) or type(tool).__name__
         raise ValueError("%s holds a %s tool (%s, Ø%s): ball-end finishing needs a ball end mill; add one "
-                         "(Path ▸ ToolBit library, shape ballend) and choose its tool controller"
-                         % (label, kind, getattr(tool, "Label", "?"), getattr(tool, "Diameter", "?")))
+                         "(%s ▸ ToolBit library, shape ballend) and choose its tool controller"
+                         % (label, kind, getattr(tool, "Label", "?"), getattr(tool, "Diameter", "?"),
+                            cam_menu_name()))
     if not controller.HorizFeed.Value > 0:
         raise ValueError("%s has a horizontal feed of 0 mm/min: the path would cut at F0; set its HorizFeed "
                          "(and VertFeed)" % label)
