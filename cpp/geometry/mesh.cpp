@@ -1,4 +1,5 @@
 #include "geometry/mesh.hpp"
+#include "common/fork_safety.hpp"
 
 #include "common/error.hpp"
 
@@ -42,7 +43,7 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
   std::vector<int> wanted = faces;
   if (wanted.empty())
     for (int i = 1; i <= map.Extent(); ++i) wanted.push_back(i);
-  // Only the faces asked for are meshed (a compound of them), in parallel.
+  // Only the faces asked for are meshed (a compound of them), in parallel where OCCT safely can.
   BRep_Builder builder;
   TopoDS_Compound selected;
   builder.MakeCompound(selected);
@@ -52,7 +53,7 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
                        std::to_string(map.Extent()) + " faces");
     builder.Add(selected, map(index));
   }
-  BRepMesh_IncrementalMesh(selected, deflection, Standard_False, 0.5, Standard_True);
+  BRepMesh_IncrementalMesh(selected, deflection, Standard_False, 0.5, occtMayRunInParallel());
   TriangleMesh mesh;
   for (int index : wanted) {
     const TopoDS_Face face = TopoDS::Face(map(index));

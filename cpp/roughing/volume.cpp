@@ -1,4 +1,5 @@
 #include "roughing/roughing.hpp"
+#include "common/fork_safety.hpp"
 #include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
@@ -249,7 +250,7 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
   {
     Bnd_Box box = geometry::exactBounds(part);
     const double size = std::sqrt(box.SquareExtent());
-    BRepMesh_IncrementalMesh(part, 2e-3 * size, Standard_False, 0.5, Standard_True);
+    BRepMesh_IncrementalMesh(part, 2e-3 * size, Standard_False, 0.5, occtMayRunInParallel());
     BRepClass3d_SolidClassifier inStock(stock);
     for (TopExp_Explorer it(part, TopAbs_FACE); it.More(); it.Next()) {
       TopLoc_Location location;

@@ -202,3 +202,30 @@ class Study(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ForkedWorkers(unittest.TestCase):
+    """A worker forked from FreeCAD 1.0 meshes a part the parent never meshed: OCCT's parallel mesh waited
+    for ever there on the thread pool the parent's TBB arena had before the fork (the study hung)."""
+
+    def test_a_forked_child_finishes_a_part_meshed_nowhere_before(self):
+        import signal
+
+        import hsmplanner
+        from hsmplanner.app.master_feature import MasterFeatureParameters, make_master_bottom_feature
+
+        feature = make_master_bottom_feature(MasterFeatureParameters(length=131.0, sag=4.5))  # no kept mesh
+        child = os.fork()
+        if child == 0:  # pragma: no cover - the child's verdict is its exit code
+            code = 1
+            try:
+                signal.alarm(60)  # a hung mesh ends the child with SIGALRM
+                moves, stats = hsmplanner.parallel_finishing(feature.shape, feature.bottom_face, angle_deg=20.0,
+                                                             tool_diameter=10.0, cusp_height=0.1)
+                code = 0 if stats["passes"] > 5 and len(moves) > 100 else 2
+            finally:
+                os._exit(code)
+        _, status = os.waitpid(child, 0)
+        self.assertFalse(os.WIFSIGNALED(status), "the forked child hung and was stopped by signal %d"
+                         % (os.WTERMSIG(status) if os.WIFSIGNALED(status) else 0))
+        self.assertEqual(os.WEXITSTATUS(status), 0, "the forked child failed to finish the part")
