@@ -59,7 +59,7 @@ def main(argv):
     summary = {
         "parameters": {p: getattr(obj, p).Value for p in ("Length", "Width", "Depth", "Sag", "DraftAngle")},
         "bottom_face": obj.BottomFace, "boundary_1": obj.Boundary1, "boundary_2": obj.Boundary2,
-        "volume_mm3": round(shape.Volume, 1), "bottom_area_mm2": round(bottom.Area, 1),
+        "volume_mm3": round(hsmplanner.shape_summary(shape).volume, 1), "bottom_area_mm2": round(bottom.Area, 1),
         "boundary_1_detail": b1, "boundary_2_detail": b2,
         "boundary_gap_min_max_mm": [round(float(gap.min()), 2), round(float(gap.max()), 2)],
     }

@@ -84,7 +84,9 @@ ShapeSummary summarize(const TopoDS_Shape& shape) {
 
   GProp_GProps props;
   if (summary.solids > 0) {
-    BRepGProp::VolumeProperties(shape, props);
+    // Adaptive integration to a relative 1e-7: the fixed Gauss order of the plain call is 0.06 % off on the
+    // master feature's B-spline faces (530,319 against 530,018.7 mm3) and moves with their parametrisation.
+    BRepGProp::VolumeProperties(shape, props, 1e-7);
     summary.volume = props.Mass();
   }
   if (summary.faces > 0) {
