@@ -55,4 +55,5 @@ for level in "${levels[@]}"; do
   [[ " ${failed[*]} " == *" $level "* ]] && verdict=FAILED
   printf '%-7s %-7s %4ss\n' "$level" "$verdict" "${seconds[$level]}"
 done
+echo "levels: $(( ${#levels[@]} - ${#failed[@]} )) passed, ${#failed[@]} failed"
 [ ${#failed[@]} -eq 0 ]
