@@ -143,7 +143,9 @@ cl::Paths scaledX(cl::Paths paths, double factor) {
 cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                     const Window& window, double clearance, double tolerance, const cl::Paths& within) {
   // Only what falls on `within` matters (the tool's centre is kept there): each bin's growth is cut to its
-  // bounding rectangle before the difference unites them all.
+  // bounding rectangle before the difference unites them all. Where the centre goes nowhere (a level the
+  // tool fits nowhere in), nothing is kept out: the window of no path is unbounded, not a rectangle.
+  if (within.empty()) return {};
   const Window box = windowAround(within, 1.0);
   const cl::Paths rectangle = {{{cl::cInt(box.x0), cl::cInt(box.y0)}, {cl::cInt(box.x1), cl::cInt(box.y0)},
                                 {cl::cInt(box.x1), cl::cInt(box.y1)}, {cl::cInt(box.x0), cl::cInt(box.y1)}}};
