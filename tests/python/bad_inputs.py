@@ -377,6 +377,24 @@ CASES = [
     raises("study range NaN step", "from hsmplanner import study as st\nst.parse_range('0:10:nan', 'K')", "ValueError", "K: 'nan' is not a finite number"),
     raises("study range of a list", "from hsmplanner import study as st\nst.parse_range([1, 2], 'K')", "ValueError", "K: [1, 2] is not text"),
     raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
+    # --- the FreeCAD 1.0 port's helpers: comments, script arguments, exact boxes -----------------------------
+    holds("a head comment of nested parentheses, a 1e6-character label and a number",
+          "from hsmplanner.app.op_comments import comment_text\n"
+          "result = [comment_text('a ((b)) c)'), comment_text('(' * 10**6), comment_text(1e9), comment_text('')]",
+          "result[0] == 'a [[b]] c]' and '(' not in result[1] and len(result[1]) == 10**6 and result[2] == '1000000000.0'"
+          " and result[3] == ''"),
+    holds("head comments mended in an empty program",
+          "import types\nfrom hsmplanner.app.op_comments import mend_leading_comments\ncommands = []\n"
+          "mend_leading_comments(commands, types.SimpleNamespace(Label='x (y)', Comment='(z'))",
+          "commands == []"),
+    holds("script arguments of an empty argv, freecadcmd alone, and a script with none",
+          "from hsmplanner.scripting import script_arguments\n"
+          "result = [script_arguments([]), script_arguments(['freecadcmd']), script_arguments(['freecadcmd', 'a.py'])]",
+          "result == [[], [], []]"),
+    holds("the exact box of no shape, a null shape and an empty compound",
+          "from hsmplanner.app.stock_heights import exact_box, exact_stock_z\n"
+          "result = [exact_box([]), exact_box([Part.Shape()]), exact_box([None]), exact_stock_z(object())]",
+          "result == [None, None, None, None]"),
 ]
 
 
