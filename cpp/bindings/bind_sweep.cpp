@@ -2,6 +2,7 @@
 // (cpp/roughing/sweep.hpp, clearance.hpp, removal.hpp): thin, the moves as numpy arrays.
 #include "bindings/bindings.hpp"
 
+#include "common/text.hpp"
 #include "geometry/brep.hpp"
 #include "roughing/clearance.hpp"
 #include "roughing/removal.hpp"
@@ -161,6 +162,15 @@ void bindSweep(py::module_& m) {
       .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part")
       .def_readwrite("stock_mesh_stride", &RemovalSettings::stockMeshStride,
                      "> 0: the stock left as blocks of stride x stride rays (0: none)");
+  py::class_<RapidFault>(m, "RapidFault", "A rapid that cuts the stock left")
+      .def_readonly("move", &RapidFault::move, "index of the rapid in the moves")
+      .def_readonly("at", &RapidFault::at, "the tip where it first cuts, mm")
+      .def_readonly("along", &RapidFault::along, "share of the move's length before it cuts")
+      .def_readonly("volume", &RapidFault::volume, "mm³ it takes out")
+      .def("__repr__", [](const RapidFault& f) {
+        return "<RapidFault move " + std::to_string(f.move) + " at (" + number(f.at.x()) + ", " + number(f.at.y()) +
+               ", " + number(f.at.z()) + ") " + number(f.volume) + " mm3>";
+      });
   py::class_<RemovalResult>(m, "RemovalResult", "Lengths mm, volumes mm³, shares %")
       .def_readonly("resolution", &RemovalResult::resolution)
       .def_readonly("volume_to_remove", &RemovalResult::volumeToRemove)
@@ -178,6 +188,8 @@ void bindSweep(py::module_& m) {
       .def_readonly("gouge_volume", &RemovalResult::gougeVolume)
       .def_readonly("gouge_move", &RemovalResult::gougeMove)
       .def_readonly("gouge_at", &RemovalResult::gougeAt)
+      .def_readonly("rapid_faults", &RemovalResult::rapidFaults, "rapids that cut the stock left (faults)")
+      .def_readonly("rapid_volume", &RemovalResult::rapidVolume, "mm³ the rapids take out")
       .def_property_readonly("surface_points", [](const RemovalResult& r) {
         py::array_t<double> out({static_cast<py::ssize_t>(r.surfacePoints.size()), py::ssize_t(3)});
         for (size_t i = 0; i < r.surfacePoints.size(); ++i)
@@ -214,6 +226,23 @@ void bindSweep(py::module_& m) {
       },
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
       py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
+  m.def(
+      "keep_rapids_out_of_stock",
+      [](const py::array_t<double>& tips, const py::array_t<double>& axes, const py::array_t<long>& kinds,
+         const Cutter& cutter, const std::string& stockBrep, const std::string& partBrep, RemovalSettings settings,
+         double margin, const py::object& progress) {
+        const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
+        settings.progress = progressCallback(progress);
+        py::gil_scoped_release release;
+        RapidsMended mended = guarded("rapids in stock", [&] {
+          return keepRapidsOutOfStock(moves, cutter, stock, part, settings, margin);
+        });
+        py::gil_scoped_acquire acquire;
+        return py::make_tuple(moveArrays(mended.moves), mended.mended);
+      },
+      py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
+      py::arg("part_brep"), py::arg("settings"), py::arg("margin") = 1.0, py::arg("progress") = py::none());
 }
 
 }  // namespace hsm::bindings

@@ -2,6 +2,7 @@
 #include "roughing/slicing.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/occt_progress.hpp"
 #include "common/text.hpp"
 
@@ -107,6 +108,7 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   if (solid.solid.IsNull()) throw InputError("the volume to remove is empty: compute it from a stock and a part first");
   if (!(settings.step > 0.0) || !std::isfinite(settings.step))
     throw InputError("step " + number(settings.step) + " mm must be positive: the axial engagement, e.g. 8 mm for a Ø8 tool");
+  checkThreads(settings.threads, "partition");
   Partition result;
   result.strategy = strategy;
   result.step = settings.step;

@@ -20,7 +20,8 @@ namespace {
 
 constexpr long kMaxRays = 20'000'000;  // three models of them: material, part, part not entered
 constexpr long kMaxPositions = 10'000'000;
-constexpr int kCornerSegments = 8;  // a torus corner of radius 1 as 8 cones: within 5 µm of it
+constexpr int kCornerSegments = 8;
+constexpr double kRapidVolume = 1e-6;  // mm³: less is rounding at a grazing ray, not material  // a torus corner of radius 1 as 8 cones: within 5 µm of it
 
 // The cutter as a solid of revolution about its axis (z up from the tip): cones (cylinders when r0 = r1)
 // between heights h0 < h1, and spheres centred on the axis.
@@ -112,11 +113,19 @@ Span ballSpan(const Ball& b, const Eigen::Vector3d& q, const Eigen::Vector3d& d)
   return Interval{-half - root, -half + root};
 }
 
+// The distance between the positions sampled along a move: a ridge of s²/8r ≤ resolution/4 between the
+// scallops of the cutter's corner (its radius for a flat end), and at most 4 resolutions.
+double sampleStep(const Cutter& c, double resolution) {
+  const double corner = c.kind == CutterKind::Torus ? c.cornerRadius : c.radius();
+  return std::min(4.0 * resolution, std::sqrt(2.0 * std::max(corner, resolution) * resolution));
+}
+
 // One position of the tool: its tip, its frame (axis last) and its box.
 struct Position {
   Eigen::Vector3d tip, e1, e2, axis;
   Eigen::AlignedBox3d box;
   double step = 0.0;  // mm of the tip's path since the position before
+  double along = 0.0;  // share of its move's length at the position before this one (where it did not cut yet)
   int move = 0;
   bool feed = false;
 };
@@ -192,6 +201,7 @@ std::vector<Position> positionsOf(const std::vector<ToolMove>& moves, const Shap
       const double f = double(k) / n;
       Position p = positionAt(a.tip + f * (b.tip - a.tip), (1.0 - f) * a.axis.normalized() + f * b.axis.normalized(), shape);
       p.step = length / n;
+      p.along = double(k - 1) / n;
       p.move = static_cast<int>(i);
       p.feed = b.kind != MoveKind::Rapid;
       out.push_back(p);
@@ -284,7 +294,7 @@ public:
     part_.fill(partMesh_);
     material_.subtract(part_);
     uncut_ = part_;
-    threads_ = settings.threads > 0 ? settings.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = threadCount(settings.threads);
   }
 
   RemovalResult run(const std::vector<ToolMove>& moves) {
@@ -294,10 +304,7 @@ public:
     r.volumeToRemove = material_.volume();
     const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_);
     const double h = settings_.resolution;
-    const double corner = cutter_.kind == CutterKind::Flat ? cutter_.radius() : cutter_.kind == CutterKind::Ball
-                                                                                    ? cutter_.radius() : cutter_.cornerRadius;
-    const double step = std::min(4.0 * h, std::sqrt(2.0 * corner * h));  // a ridge of s²/8r ≤ h/4
-    const std::vector<Position> positions = positionsOf(moves, shape_, step);
+    const std::vector<Position> positions = positionsOf(moves, shape_, sampleStep(cutter_, h));
     r.positions = static_cast<long>(positions.size());
     for (size_t i = 1; i < moves.size(); ++i) {
       const double length = (moves[i].tip - moves[i - 1].tip).norm();
@@ -379,6 +386,12 @@ private:
         if (r.gougeMove < 0) r.gougeMove = at.move, r.gougeAt = at.tip;
         r.gougeVolume += gouge;
       }
+      if (!at.feed && volume > kRapidVolume) {
+        if (r.rapidFaults.empty() || r.rapidFaults.back().move != at.move)
+          r.rapidFaults.push_back({at.move, at.tip, at.along, 0.0});
+        r.rapidFaults.back().volume += volume;
+        r.rapidVolume += volume;
+      }
     }
   }
 
@@ -457,6 +470,52 @@ private:
 
 }  // namespace
 
+std::vector<ToolMove> feedThroughStock(const std::vector<ToolMove>& moves, const std::vector<RapidFault>& faults,
+                                       double margin) {
+  if (!(margin >= 0.0 && margin <= 1000.0))
+    throw InputError("rapids in stock: margin " + number(margin) + " mm is outside [0, 1000] mm (default 1)");
+  std::vector<ToolMove> out;
+  out.reserve(moves.size() + faults.size());
+  size_t next = 0;
+  for (size_t i = 0; i < moves.size(); ++i) {
+    if (next < faults.size() && faults[next].move == static_cast<int>(i)) {
+      const RapidFault& fault = faults[next++];
+      if (i == 0 || moves[i].kind != MoveKind::Rapid || !(fault.along >= 0.0 && fault.along <= 1.0))
+        throw InputError("rapids in stock: fault of move " + std::to_string(fault.move) +
+                         " is not a rapid of these moves (simulate these moves)");
+      const ToolMove& a = moves[i - 1];
+      const double length = (moves[i].tip - a.tip).norm();
+      const double split = length > 0.0 ? std::max(0.0, fault.along - margin / length) : 0.0;
+      if (split > 0.0) {
+        ToolMove air = moves[i];
+        air.tip = a.tip + split * (moves[i].tip - a.tip);
+        air.axis = ((1.0 - split) * a.axis.normalized() + split * moves[i].axis.normalized()).normalized();
+        out.push_back(air);
+      }
+      ToolMove into = moves[i];
+      into.kind = MoveKind::Plunge;
+      out.push_back(into);
+      continue;
+    }
+    out.push_back(moves[i]);
+  }
+  if (next != faults.size())
+    throw InputError("rapids in stock: fault of move " + std::to_string(faults[next].move) +
+                     " is not in these moves, or the faults are not in the moves' order");
+  return out;
+}
+
+RapidsMended keepRapidsOutOfStock(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
+                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin) {
+  RemovalSettings quick = settings;
+  quick.stockMeshStride = 0;
+  const RemovalResult r = simulateRemoval(moves, cutter, stock, part, quick);
+  // The first position that cut may be a sampling step past where the tool met the stock; and the stock's
+  // skin is known to a ray spacing.
+  const double skin = sampleStep(cutter, settings.resolution) + std::sqrt(2.0) * settings.resolution;
+  return {feedThroughStock(moves, r.rapidFaults, margin + skin), r.rapidFaults};
+}
+
 RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
                               const TopoDS_Shape& part, const RemovalSettings& settings) {
   checkCutter(cutter);
@@ -473,6 +532,7 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
   if (settings.stockMeshStride < 0 || settings.stockMeshStride > 100)
     throw InputError("material removal: stock mesh stride " + std::to_string(settings.stockMeshStride) +
                      " is outside [0, 100] rays (0: no mesh)");
+  checkThreads(settings.threads, "material removal");
   if (stock.IsNull()) throw InputError("material removal: no stock");
   for (const ToolMove& m : moves)
     if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))

@@ -29,6 +29,8 @@
 //                         (read on every other ray each way): the least stick-out at which the holder touches
 //                         nothing there;
 //   gouge                 the part's volume the cutter enters (Z rays), the first move that does and where;
+//   rapids in stock       every rapid (G0) that takes material out of the stock left at that time: a fault (a
+//                         rapid through material breaks tools), with where it first cuts and how much;
 //   stock on the part     at points of the part's surface about 2 resolutions apart, the thickness of material
 //                         left along the outward normal
 //                         (read on the ray direction nearest the normal, × its cosine): mean, max, standard
@@ -56,6 +58,15 @@ struct RemovalSettings {
   ProgressCallback progress;
 };
 
+// A rapid that cuts the stock left: the move, where along it the tool first takes material out (the tip, and
+// the share of the move's length before it), and the volume it takes out (Z rays), mm³.
+struct RapidFault {
+  int move = -1;
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();
+  double along = 0.0;
+  double volume = 0.0;
+};
+
 struct RemovalResult {
   double resolution = 0.0;                           // mm, reported with every figure
   double volumeToRemove = 0.0, remainingVolume = 0.0; // mm³
@@ -70,6 +81,8 @@ struct RemovalResult {
   double gougeVolume = 0.0;                          // mm³ of the part cut
   int gougeMove = -1;                                // first move that gouges
   Eigen::Vector3d gougeAt = Eigen::Vector3d::Zero(); // where (the tip there)
+  std::vector<RapidFault> rapidFaults;               // in the order of the moves
+  double rapidVolume = 0.0;                          // mm³ taken out by rapids, all faults
   // Stock left on the finished surfaces, at sample points of them (outward normal thickness, mm).
   std::vector<Eigen::Vector3d> surfacePoints;
   std::vector<double> thickness, weight;             // weight: the sample's share of area, mm²
@@ -84,5 +97,21 @@ struct RemovalResult {
 // more than 10 million tool positions, an empty stock; Cancelled when `progress` says stop.
 RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
                               const TopoDS_Shape& part, const RemovalSettings& settings = {});
+
+// The moves with every rapid of `faults` split where it meets the stock left: a rapid to `margin` mm (and the
+// simulation's sampling step) before the first position that cut, then the rest of the move as a plunge (the
+// entry feed). What in-process-stock-aware links do in CAM: approach fast through the air, slowly into what is
+// still there. Faults must be of these moves (simulateRemoval of them): InputError otherwise.
+std::vector<ToolMove> feedThroughStock(const std::vector<ToolMove>& moves, const std::vector<RapidFault>& faults,
+                                       double margin);
+
+// The moves simulated at settings.resolution and fed through the stock left where a rapid would cut it
+// (feedThroughStock, `margin` mm): the program whose rapids keep out of the stock, and the faults it mended.
+struct RapidsMended {
+  std::vector<ToolMove> moves;
+  std::vector<RapidFault> mended;
+};
+RapidsMended keepRapidsOutOfStock(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
+                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin = 1.0);
 
 }  // namespace hsm::roughing

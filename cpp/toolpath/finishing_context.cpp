@@ -43,8 +43,7 @@ void validate(const FinishingSettings& s) {
   if (!(s.extension <= 10.0 * s.toolRadius) || std::isnan(s.extension))
     throw InputError("extension " + mm(s.extension) + " past open boundaries must be at most ten tool radii (" +
                      mm(10.0 * s.toolRadius) + "); a negative value means the tool radius");
-  if (s.threads < 0 || s.threads > 1024)
-    throw InputError("threads " + std::to_string(s.threads) + " must be 0 (all cores) to 1024");
+  checkThreads(s.threads, "finishing");
 }
 
 std::string faceName(int index) { return "Face" + std::to_string(index); }

@@ -162,7 +162,7 @@ def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_sectio
     `resolution` mm fine (default 0.2; cpp/roughing/removal.hpp): a RemovalResult with V_r (remaining_share,
     %; beyond_allowance_share without the `allowance` layer left on the part, default 0.5 mm), the path, feed and in-material lengths, the least stick-out for the holder, any gouge (volume, first
     move, where) and the stock left on the part (thickness at surface_points, its weighted mean, max and
-    standard deviation) and, with `stock_mesh_stride` k > 0, the stock left as a closed mesh of blocks of k × k
+    standard deviation), every rapid that cuts the stock left (rapid_faults: move, where, volume; a fault) and, with `stock_mesh_stride` k > 0, the stock left as a closed mesh of blocks of k × k
     rays (stock_mesh: points, triangles; save_stl writes it). ValueError for bad settings or moves; Cancelled
     when `progress` returns False."""
     moves = paths.moves if hasattr(paths, "moves") else paths
@@ -172,6 +172,28 @@ def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_sectio
     tool = tool if tool is not None else _core.roughing.Cutter()
     return _core.roughing.simulate_removal(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
                                            as_brep(part), settings, progress)
+
+
+def keep_rapids_out_of_stock(paths, stock, part, tool=None, resolution=0.2, margin=1.0, threads=None,
+                             progress=None):
+    """The moves of `paths` (a SweepResult or a moves dict, e.g. join_paths') simulated through the stock at
+    `resolution` mm, every rapid that would cut the stock left at its time split: a rapid to `margin` mm (and
+    the sampling) before the stock, then the rest as a plunge at the entry feed. (moves dict, [RapidFault]
+    mended: the move, where, the volume the rapid would have taken out). A final simulate_removal of the moves
+    returned reports no rapid fault (rapid_faults)."""
+    moves = paths.moves if hasattr(paths, "moves") else paths
+    settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, threads=threads)
+    tool = tool if tool is not None else _core.roughing.Cutter()
+    return _core.roughing.keep_rapids_out_of_stock(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
+                                                   as_brep(part), settings, float(margin), progress)
+
+
+def rapid_note(fed):
+    """What keep_rapids_out_of_stock mended (a non-empty list of RapidFault), in words: how many, the largest."""
+    worst = max(fed, key=lambda f: f.volume)
+    return ("%d rapid%s would have cut stock left (the most %.1f mm³ at move %d, tip %.1f %.1f %.1f): they feed "
+            "into it from just above it" % (len(fed), "" if len(fed) == 1 else "s", worst.volume, worst.move,
+                                            worst.at[0], worst.at[1], worst.at[2]))
 
 
 def save_stl(mesh, path, name="stock left"):

@@ -378,15 +378,29 @@ def roughing_study_panel_runs_and_applies(run):
     study.form.resolution.setValue(1.0)
     study.run()
     table = study.form.table
-    rows = {table.verticalHeaderItem(r).text(): r for r in range(table.rowCount())}
-    vr = {name: float(table.item(r, 0).data(0)) for name, r in rows.items()}
+
+    def shown_rows():
+        """{label shown: (table row, V_r shown, feed shown)} as the user reads them."""
+        return {table.item(r, 0).text(): (r, float(table.item(r, 1).data(0)), float(table.item(r, 3).data(0)))
+                for r in range(table.rowCount())}
+
+    rows = shown_rows()
+    vr = {name: shown[1] for name, shown in rows.items()}
     run.notes["roughing study"] = {"rows": list(rows), "V_r %": vr, "status": study.form.status.text()}
     run.check("the table has S1 and S3 with their V_r", sorted(rows) == ["S1", "S3"] and all(0 < v < 100 for v in vr.values()),
               str(run.notes["roughing study"]))
     run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3", 100) < vr.get("S1", 0), str(vr))
+    measured = {r.row["strategy"]: (r.row["vr"], r.row["feed_mm"]) for r in study.results}
+    for column, order in ((1, QtCore.Qt.AscendingOrder), (1, QtCore.Qt.DescendingOrder), (3, QtCore.Qt.AscendingOrder)):
+        table.sortItems(column, order)
+        shown = shown_rows()
+        run.check("sorted by column %d: each label keeps its own figures" % column,
+                  all(abs(shown[n][1] - measured[n][0]) < 1e-9 and abs(shown[n][2] - measured[n][1]) < 1e-9
+                      for n in measured), "%s against %s" % (shown, measured))
     run.check("the stock maps are drawn", study.plots.window_button.isEnabled())
     run.screenshot("roughing_study_panel")
-    table.selectRow(rows.get("S3", 0))
+    table.selectRow(shown_rows()["S3"][0])
+    run.check("the row labelled S3 is the one selected", study.selected() == "S3", str(study.selected()))
     node = getattr(study, "map_node", None)
     cloud = node.getChild(3) if node is not None else None
     count = cloud.vertexProperty.getValue().vertex.getNum() if cloud is not None else 0
@@ -395,11 +409,14 @@ def roughing_study_panel_runs_and_applies(run):
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("roughing_study_stock_map")
     op = study.apply()
-    run.check("Apply adds a Volume roughing operation with S3", op is not None and slot.Strategy.startswith("S3"),
-              study.form.status.text())
+    status = study.form.status.text()
+    run.notes["roughing study"]["applied"] = status
+    run.check("Apply says S3 and sets S3 on every region", op is not None and status.startswith("S3 applied")
+              and slot.Strategy.startswith("S3") and slot.Region == 0, status)
     if op is not None:
         run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the applied operation computed")
-        run.check("the applied operation has passes", op.Passes > 0)
+        run.check("the applied operation has passes on the regions the row measured",
+                  op.Passes > 0 and op.RegionsSwept == study.result_of("S3").row["regions"], status)
     study.reject()
     run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
 

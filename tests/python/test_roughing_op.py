@@ -1,6 +1,7 @@
 """The Volume roughing operation in a real Path Job: a torus ToolBit, a Roughing volume, the path, and the
 posts (840D TRAORI, LinuxCNC xyzac-trt) read back by the simulator."""
 import os
+import re
 import unittest
 
 import FreeCAD
@@ -132,6 +133,55 @@ class VolumeRoughing(unittest.TestCase):
         self.assertGreater(hsmplanner.simulate(ngc, "linuxcnc-2.9-xyzac-trt", refuse_unknown_words=True)
                            .summary.cutting_blocks, 50)
         check_golden(self, ngc, "roughing_slot_s3_linuxcnc_trt.ngc")
+
+    def test_a_post_refuses_a_machine_the_operation_was_not_computed_for(self):
+        # The op's A C are the Mikron trunnion's angles: another machine's post would put the axis elsewhere.
+        self.assertEqual(self.op.Machine, "mikron-ucp710-ac-840d")
+        with self.assertRaisesRegex(ValueError, "LinuxCNC 5-axis post: Roughing was computed for machine "
+                                                "'mikron-ucp710-ac-840d', not 'linuxcnc-2.9-xyzac-trt'"):
+            linuxcnc5x_post.export([self.job, self.controller, self.op], "-", "--machine=linuxcnc-2.9-xyzac-trt")
+        with self.assertRaisesRegex(ValueError, "840D post: Roughing was computed for machine 'mikron-ucp710-ac-840d', "
+                                                "not 'linuxcnc-2.9-xyzac-trt'.*--machine=mikron-ucp710-ac-840d"):
+            siemens840d_post.export([self.job, self.controller, self.op], "-", "--machine=linuxcnc-2.9-xyzac-trt")
+        # Without --machine both take the operation's: the 840D post writes for it, the LinuxCNC post says why not.
+        self.assertIn("TRAORI", siemens840d_post.export([self.job, self.controller, self.op], "-", ""))
+        with self.assertRaisesRegex(ValueError, "machine 'mikron-ucp710-ac-840d' \\(the operations' Machine\\) is not a "
+                                                "LinuxCNC machine"):
+            linuxcnc5x_post.export([self.job, self.controller, self.op], "-", "")
+
+    def test_the_840d_changes_the_tool_before_it_switches_traori_on(self):
+        # As in Siemens' examples: T D M6 (and the length compensation D1 brings) first, then TRAORI; TRAFOOF
+        # before the program ends.
+        lines = [line.split(" ", 1)[-1] for line in
+                 siemens840d_post.export([self.job, self.controller, self.op], "-", "").splitlines()]
+        tool, on, off = lines.index("T3 D1 M6"), lines.index("TRAORI"), lines.index("TRAFOOF")
+        moves = [i for i, line in enumerate(lines) if re.match(r"(G[01] |[XYZAC]-?[0-9.])", line)]
+        self.assertLess(tool, on)
+        self.assertLess(on, moves[0])
+        self.assertLess(moves[-1], off)
+        self.assertEqual(lines[-1], "M30")
+
+    def test_a_new_job_s_default_tool_controller_gets_the_paper_s_torus(self):
+        # FreeCAD's default controller (a Ø5 flat end mill at feed 0) would cut at F0: the op takes the torus.
+        document = FreeCAD.newDocument("DefaultController")
+        try:
+            part, stock = roughing_parts.create_slanted_slot_block(document)
+            document.recompute()
+            volume = roughing_object.create(part, stock, Strategy="S1")
+            job = create_job([part])
+            self.assertTrue(all(c.HorizFeed.Value == 0 for c in job.Tools.Group), "FreeCAD's default has no feed")
+            op = roughing_op.CreateVolumeRoughing("Roughing", parentJob=job)
+            op.Volume = volume
+            document.recompute()
+            self.assertGreater(op.ToolController.HorizFeed.getValueAs("mm/min").Value, 0)
+            self.assertEqual(roughing_op.cutter_of(op.ToolController.Tool).kind.name, "torus")
+            self.assertGreater(op.Passes, 0)
+            # A controller set to feed 0 afterwards: no path, no exception (one Report-view line).
+            op.ToolController.HorizFeed = 0
+            document.recompute()
+            self.assertFalse(any(c.Name in ("G0", "G1") for c in op.Path.Commands), "no moves at F0")
+        finally:
+            FreeCAD.closeDocument(document.Name)
 
     def test_the_cutter_comes_from_the_tool(self):
         cutter = roughing_op.cutter_of(self.controller.Tool)

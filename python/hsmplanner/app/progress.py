@@ -17,7 +17,8 @@ SHOW_AFTER_MS = 700  # quick computations flash no dialog
 
 @contextlib.contextmanager
 def freecad_progress(text):
-    """A progress callable for the core while the block runs; None outside the GUI."""
+    """A progress callable for the core while the block runs (its `say(text)` changes the dialog's words);
+    None outside the GUI."""
     if not FreeCAD.GuiUp:
         yield None
         return
@@ -36,6 +37,7 @@ def freecad_progress(text):
         QtWidgets.QApplication.processEvents()
         return not dialog.wasCanceled()
 
+    progress.say = lambda label: dialog.setLabelText("%s…" % label)  # what runs now, in a long series
     try:
         yield progress
     finally:

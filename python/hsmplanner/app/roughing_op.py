@@ -20,6 +20,7 @@ PathOp = cam_module("op")
 
 _DEFAULTS = roughing._core.roughing.SweepSettings()  # each default written once, in C++
 DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
+MEND_RESOLUTION = 0.2  # mm: the removal model that finds the rapids that would cut the stock left
 LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0)}
 
 
@@ -40,12 +41,15 @@ def cutter_of(tool):
                      % (shape or "unknown"))
 
 
-def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, spindle_rpm=12000, number=3):
-    """A bullnose ToolBit (default: the roughing paper's Ø8 r1 torus) and its tool controller, made the Job's
-    only one (headless FreeCAD 0.20 cannot choose among several for a new operation)."""
-    for old in list(job.Tools.Group):
-        job.Tools.removeObject(old)
-        job.Document.removeObject(old.Name)
+def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, spindle_rpm=12000, number=3,
+                     replace=True):
+    """A bullnose ToolBit (default: the roughing paper's Ø8 r1 torus) and its tool controller, added to `job`.
+
+    replace: the Job's only one (headless FreeCAD 0.20 cannot choose among several for a new operation)."""
+    if replace:
+        for old in list(job.Tools.Group):
+            job.Tools.removeObject(old)
+            job.Document.removeObject(old.Name)
     tool_bit, tool_controller = cam_module("tool_bit"), cam_module("tool_controller")
     shape = tool_bit.findToolShape("bullnose.fcstd")
     if not shape:
@@ -58,7 +62,52 @@ def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, s
     controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
     controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % (0.5 * feed_mm_min))
     controller.SpindleSpeed = spindle_rpm
-    job.Tools.addObject(controller)
+    job.Proxy.addToolController(controller) if hasattr(job.Proxy, "addToolController") else job.Tools.addObject(controller)
+    return controller
+
+
+# What a new Volume roughing operation gets when its Job has no roughing cutter with a feed: the roughing
+# paper's Ø8 r1 torus, at its 2 m/min.
+DEFAULT_TORUS = dict(diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, spindle_rpm=12000)
+
+
+def check_controller(controller):
+    """The core Cutter of a tool controller that roughing can use; ValueError naming what to set otherwise (no
+    tool, a tool that is not a torus, flat or ball end, a feed of 0: FreeCAD's default controller)."""
+    label = getattr(controller, "Label", "the tool controller")
+    if controller is None or getattr(controller, "Tool", None) is None:
+        raise ValueError("no tool controller: choose one with a torus (bullnose), flat or ball end mill")
+    cutter = cutter_of(controller.Tool)
+    if not controller.HorizFeed.Value > 0:
+        raise ValueError("%s has a horizontal feed of 0 mm/min: the path would cut at F0; set its HorizFeed (and "
+                         "VertFeed)" % label)
+    return cutter
+
+
+def is_roughing_controller(controller):
+    try:
+        check_controller(controller)
+    except ValueError:
+        return False
+    return True
+
+
+def roughing_controller(job, chosen=None):
+    """The tool controller a new Volume roughing takes: `chosen` (FreeCAD's pick) if roughing can use it, else
+    the Job's first such, else the paper's Ø8 r1 torus at F2000 added to the Job (and said in the Report
+    view): FreeCAD's default controller has feeds of 0 and would only make the operation fail."""
+    if chosen is not None and is_roughing_controller(chosen):
+        return chosen
+    usable = [controller for controller in job.Tools.Group if is_roughing_controller(controller)]
+    if usable:
+        return usable[0]
+    number = 1 + max([getattr(c, "ToolNumber", 0) for c in job.Tools.Group], default=0)
+    controller = torus_controller(job, number=number, replace=False, **DEFAULT_TORUS)
+    FreeCAD.Console.PrintMessage(
+        "%s had no roughing cutter with a feed: added '%s' (Ø%g r%g mm torus, F%g mm/min, S%g); change it in the "
+        "Job's tool controllers\n" % (job.Label, controller.Label, DEFAULT_TORUS["diameter"],
+                                      DEFAULT_TORUS["corner_radius"], DEFAULT_TORUS["feed_mm_min"],
+                                      DEFAULT_TORUS["spindle_rpm"]))
     return controller
 
 
@@ -85,17 +134,32 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         for name, kind, tip in (("Passes", "App::PropertyInteger", "passes of the last computation"),
                                 ("CuttingLength", "App::PropertyLength", "cutting path of the last computation"),
                                 ("ClosestApproach", "App::PropertyLength",
-                                 "least distance from the tool to the part, checked independently")):
+                                 "least distance from the tool to the part, checked independently"),
+                                ("RegionsSwept", "App::PropertyInteger", "regions of the volume swept and joined"),
+                                ("RapidsFed", "App::PropertyInteger",
+                                 "approaches that would have cut stock left as rapids, fed into it instead")):
             obj.addProperty(kind, name, "Result", tip)
             obj.setEditorMode(name, 1)
 
+    def opSetDefaultValues(self, obj, job):
+        obj.ToolController = roughing_controller(job, obj.ToolController)
+        obj.OpToolDiameter = obj.ToolController.Tool.Diameter
+
     def opExecute(self, obj):
+        """One line in the Report view for what the user must set (an empty path), not a traceback."""
+        try:
+            self.roughing(obj)
+        except (ValueError, RuntimeError) as error:
+            del self.commandlist[:]
+            FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, error))
+
+    def roughing(self, obj):
         if obj.Volume is None:
             raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
+        cutter = check_controller(obj.ToolController)
         volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
         if not partitions:
             raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
-        cutter = cutter_of(obj.ToolController.Tool)
         machine = feedsim.load_machine(obj.Machine)
         passes, length, swept = 0, 0.0, []
         for index, partition in partitions:
@@ -107,18 +171,24 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             passes += len(paths.passes)
             length += paths.cutting_length
             swept.append(paths)
-        # The regions as one program, linked through the air; checked whole, links included.
-        moves = roughing.join_paths(swept, stock_brep)
+        # The regions as one program, linked through the air; rapids kept out of the stock the program leaves
+        # at their time; checked whole against the part, links included.
+        moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
+                                                       tool=cutter, resolution=MEND_RESOLUTION)
+        if fed:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, roughing.rapid_note(fed)))
         report = roughing.check_clearance(moves, part_brep, cutter, obj.Allowance.Value - 0.01)
         if report.too_close:
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
         mend_leading_comments(self.commandlist, obj)
         self.commandlist.extend(sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
-        closest = report.minimum
         obj.Passes = passes
         obj.CuttingLength = length
-        obj.ClosestApproach = max(0.0, closest)
+        obj.ClosestApproach = max(0.0, report.minimum)
+        if hasattr(obj, "RegionsSwept"):
+            obj.RegionsSwept = len(partitions)
+            obj.RapidsFed = len(fed)
 
 
 def SetupProperties():

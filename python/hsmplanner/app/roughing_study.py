@@ -8,6 +8,7 @@ import tempfile
 import time
 
 from hsmplanner import feedsim, roughing
+from hsmplanner._core import roughing as core
 
 from .posts import siemens840d_post
 from .roughing_commands import ProgramSource, sweep_commands
@@ -17,8 +18,8 @@ PAPER = {"S1": (43.1, 3332, 44.1, 57), "S2": (14.1, 2987, 54.4, 49), "S3": (16.0
          "S4": (19.4, 2758, 56.2, 39), "S5": (9.3, 3343, 66.5, 44)}
 COLUMNS = ["strategy", "paper_vr", "vr", "vr_beyond_allowance", "paper_path_mm", "path_mm", "feed_mm",
            "paper_in_material", "in_material", "paper_stick_out_mm", "stick_out_mm", "gouge_mm3", "time_s",
-           "length_over_feed_s", "held_by", "stock_mean_mm", "stock_max_mm", "stock_std_mm", "resolution_mm",
-           "seconds", "note"]
+           "length_over_feed_s", "held_by", "stock_mean_mm", "stock_max_mm", "stock_std_mm", "rapids_fed",
+           "rapid_faults", "regions", "step_mm", "resolution_mm", "seconds", "note"]
 DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
 DEFAULT_FEED_MM_MIN = 2000.0
 
@@ -38,29 +39,36 @@ class StrategyResult:
 
 
 def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.2, machine=DEFAULT_MACHINE,
-                   feed_mm_min=DEFAULT_FEED_MM_MIN, program=None, stock_mesh_stride=0, progress=None):
-    """The strategy `name` on every region of `volume` (a VolumeToRemove of stock − part): a StrategyResult.
-    A region without the strategy's reference face (S2 without a cylinder) makes the row say why, with no
-    figures. `program`: where the posted 840D program is written (a temporary file otherwise).
-    `progress(done)`, done in [0, 1], returns False to cancel (hsmplanner.Cancelled)."""
+                   feed_mm_min=DEFAULT_FEED_MM_MIN, program=None, stock_mesh_stride=0, progress=None,
+                   partition_settings=None):
+    """The strategy `name` on every region of `volume` (a VolumeToRemove of stock − part), joined into one
+    program as a Volume roughing operation of all regions joins them, its rapids kept out of the stock left
+    (keep_rapids_out_of_stock): a StrategyResult. A region without the strategy's reference face (S2 without
+    a cylinder) makes the row say why, with no figures. `partition_settings`: roughing.partition's keywords
+    (step, setup_resolution_deg, setup_grid; a Roughing volume's own). `program`: where the posted 840D
+    program is written (a temporary file otherwise). `progress(done)`, done in [0, 1], returns False to
+    cancel (hsmplanner.Cancelled)."""
     start = time.perf_counter()
     row = dict.fromkeys(COLUMNS, "")
     paper = PAPER.get(name, ("", "", "", ""))
     row.update(strategy=name, paper_vr=paper[0], paper_path_mm=paper[1], paper_in_material=paper[2],
                paper_stick_out_mm=paper[3], resolution_mm=resolution)
     part_of = lambda a, b: (lambda done: progress(a + (b - a) * done)) if progress else None
+    settings = dict(partition_settings or {})
+    row.update(regions=len(volume.solids), step_mm=settings.get("step") or core.PartitionSettings().step)
     regions = []
     try:
         for k, solid in enumerate(volume.solids):
             share = 0.4 * k / len(volume.solids), 0.4 * (k + 1) / len(volume.solids)
-            partition = roughing.partition(solid, part_brep, name, progress=part_of(*share))
+            partition = roughing.partition(solid, part_brep, name, progress=part_of(*share), **settings)
             regions.append(roughing.sweep(partition, solid, part_brep, stock_brep, tool=tool))
     except ValueError as error:  # no face for this strategy: said in the row, the study goes on
         row["note"] = str(error)
         return StrategyResult(row)
-    moves = roughing.join_paths(regions, stock_brep)
+    moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(regions, stock_brep), stock_brep, part_brep,
+                                                   tool=tool, resolution=resolution, progress=part_of(0.4, 0.6))
     removal = roughing.simulate_removal(moves, stock_brep, part_brep, tool=tool, resolution=resolution,
-                                        stock_mesh_stride=stock_mesh_stride, progress=part_of(0.4, 0.95))
+                                        stock_mesh_stride=stock_mesh_stride, progress=part_of(0.6, 0.95))
     model = feedsim.load_machine(machine)
     temporary = program is None
     if temporary:
@@ -82,11 +90,22 @@ def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.
                length_over_feed_s=round(simulated.summary.naive_time, 1),
                held_by=", ".join("%s %.0f %%" % (k, 100 * v) for k, v in list(shares.items())[:3]),
                stock_mean_mm=round(removal.thickness_mean, 2), stock_max_mm=round(removal.thickness_max, 2),
-               stock_std_mm=round(removal.thickness_std, 2), seconds=round(time.perf_counter() - start, 1),
-               note="; ".join(sorted({w for r in regions for w in r.warnings}))[:300])
+               stock_std_mm=round(removal.thickness_std, 2), rapids_fed=len(fed),
+               rapid_faults=len(removal.rapid_faults), seconds=round(time.perf_counter() - start, 1),
+               note="; ".join(notes_of(regions, fed, removal))[:300])
     if progress:
         progress(1.0)
     return StrategyResult(row, removal)
+
+
+def notes_of(regions, fed, removal):
+    notes = sorted({w for r in regions for w in r.warnings})
+    if fed:
+        notes.insert(0, roughing.rapid_note(fed))
+    if removal.rapid_faults:
+        notes.insert(0, "FAULT: %d rapids still cut the stock left (%.2f mm³)" % (len(removal.rapid_faults),
+                                                                               removal.rapid_volume))
+    return notes
 
 
 def study(part_brep, stock_brep, strategies=("S1", "S2", "S3", "S4", "S5"), progress=None, **settings):

@@ -12,8 +12,10 @@ from hsmplanner.app.progress import freecad_progress
 from .task_panel import PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout
 
 STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
+PAPER_TORUS = "the paper's Ø8 r1 torus"  # the study's tool when the Job has none roughing can use
 # The table's columns: (heading, row key, tool tip).
-TABLE = [("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
+TABLE = [("strategy", "strategy", "the strategy whose figures the row holds (Apply makes it)"),
+         ("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
          ("no allow. %", "vr_beyond_allowance", "V_r without the allowance layer left on the part on purpose"),
          ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
          ("in mat. %", "in_material", "share of the feed path that cuts a chip"),
@@ -21,7 +23,8 @@ TABLE = [("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r
          ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
          ("stock mean", "stock_mean_mm", "stock left on the part, area-weighted mean, mm"),
          ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
-         ("held by", "held_by", "what held the speed, share of the time")]
+         ("held by", "held_by", "what held the speed, share of the time"),
+         ("rapids fed", "rapids_fed", "approaches that would have cut stock left as rapids: they feed into it")]
 
 
 def roughing_volumes(document):
@@ -112,8 +115,8 @@ class RoughingStudyPanel(TaskPanel):
         if getattr(self, "map_node", None) is not None:
             graph.removeChild(self.map_node)
             self.map_node = None
-        result = next((r for r in self.results if r.row["strategy"] == name and r.removal is not None), None)
-        if result is not None:
+        result = self.result_of(name)
+        if result is not None and result.removal is not None:
             _, points, thickness, _ = result.stock_map
             self.map_node = stock_map_node(points, thickness, title="%s: stock left on the part" % name)
             graph.addChild(self.map_node)
@@ -131,6 +134,18 @@ class RoughingStudyPanel(TaskPanel):
         rows = self.form.table.selectionModel().selectedRows() if self.form.table.selectionModel() else []
         return self.form.table.item(rows[0].row(), 0).data(QtCore.Qt.UserRole) if rows else None
 
+    def study_tool(self, volume):
+        """(Cutter or None for the paper's torus, feed mm/min, what it is): the Job's roughing tool controller,
+        so that Apply makes what the row measured."""
+        from hsmplanner.app import roughing_op
+
+        job = job_of(volume.Document)
+        for controller in (job.Tools.Group if job is not None else []):
+            if roughing_op.is_roughing_controller(controller):
+                return (roughing_op.check_controller(controller), controller.HorizFeed.getValueAs("mm/min").Value,
+                        controller.Label)
+        return None, roughing_study.DEFAULT_FEED_MM_MIN, PAPER_TORUS
+
     def run(self):
         """The checked strategies one after the other; Cancel stops the one running and keeps the others."""
         volume = self.volume()
@@ -140,30 +155,41 @@ class RoughingStudyPanel(TaskPanel):
             return
         try:
             removal_volume, part_brep, stock_brep, _ = volume.Proxy.computed(volume)
+            tool, feed, tool_name = self.study_tool(volume)
         except (ValueError, RuntimeError) as error:
             self.form.status.setText("%s: %s" % (volume.Label, error))
             return
-        self.results = []
+        self.results, self.studied = [], (volume.Name, tool_name)
+        partition = dict(step=volume.Step.Value, setup_resolution_deg=volume.SetupResolution.Value,
+                         setup_grid=volume.SetupGrid.Value)
         with freecad_progress("Roughing study of %s" % volume.Label) as progress:
             for k, name in enumerate(names):
                 share = (lambda done, k=k: progress((k + done) / len(names))) if progress else None
+                if progress:
+                    progress.say("Roughing study of %s: %s (%d of %d)" % (volume.Label, name, k + 1, len(names)))
                 try:
-                    result = roughing_study.study_strategy(name, part_brep, stock_brep, removal_volume,
-                                                           resolution=self.form.resolution.value(), progress=share)
+                    result = roughing_study.study_strategy(name, part_brep, stock_brep, removal_volume, tool=tool,
+                                                           feed_mm_min=feed, resolution=self.form.resolution.value(),
+                                                           progress=share, partition_settings=partition)
                 except hsmplanner.Cancelled:
                     self.form.status.setText("Cancelled during %s: the strategies before it are kept." % name)
                     break
                 self.results.append(result)
             else:
-                self.form.status.setText("%d strategies at %.2f mm." % (len(self.results), self.form.resolution.value()))
+                self.form.status.setText("%d strategies at %.2f mm, all %d regions joined, %s at F%g."
+                                         % (len(self.results), self.form.resolution.value(),
+                                            len(removal_volume.solids), tool_name, feed))
         self.fill_table()
         self.plots.redraw()
+
+    def result_of(self, name):
+        return next((r for r in self.results if r.row["strategy"] == name), None)
 
     def fill_table(self):
         table = self.form.table
         table.setSortingEnabled(False)
         table.setRowCount(len(self.results))
-        table.setVerticalHeaderLabels([r.row["strategy"] for r in self.results])
+        table.verticalHeader().hide()  # a header would keep its place when the rows sort: the label is a column
         for row, result in enumerate(self.results):
             values = result.row
             for column, (_, key, _) in enumerate(TABLE):
@@ -189,7 +215,8 @@ class RoughingStudyPanel(TaskPanel):
         return draw_stock_maps(figure, maps, columns=3 if wide else 2, bar=wide)
 
     def apply(self):
-        """The selected strategy on the Roughing volume, and a Volume roughing operation in the Job."""
+        """The selected strategy on the Roughing volume, all its regions as the study joined them, and a Volume
+        roughing operation in the Job that makes them; the status says what it made against the row."""
         from hsmplanner.app import roughing_op
         from hsmplanner.gui.finishing_ops_gui import COMMANDS
 
@@ -199,31 +226,39 @@ class RoughingStudyPanel(TaskPanel):
         document = volume.Document  # the studied volume's, whichever document is active now
         job = job_of(document)
         if job is None:
-            self.form.status.setText("No Job in this document: make one (Path → Job) to add the operation to.")
-            return None
-        try:
-            # first, on its own: FreeCAD's ToolBit GUI commits a transaction of its own, which would end ours
-            if not any(getattr(t, "Tool", None) is not None for t in job.Tools.Group):
-                roughing_op.torus_controller(job)  # the paper's Ø8 r1 torus when the Job has no tool yet
-        except Exception as error:  # noqa: BLE001 (whatever FreeCAD raises is said in the panel)
-            self.form.status.setText("Not applied: %s" % freecad_message(error))
+            self.form.status.setText("No Job in this document: make one (CAM → Job) to add the operation to.")
             return None
         document.openTransaction("Apply roughing strategy %s" % name)
         try:
+            controller = roughing_op.roughing_controller(job)  # the Job's, or the paper's torus added
             volume.Strategy = roughing_object.strategy_label(name)
+            volume.Region = 0  # every region, as the row measured them
             resources = COMMANDS["HSM_VolumeRoughing"]
             op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
             op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
             op.ViewObject.Proxy.OpIcon = resources.icon
+            op.ToolController = controller
             op.Volume = volume
             document.recompute()
-        except Exception as error:  # noqa: BLE001
+        except Exception as error:  # noqa: BLE001 (whatever FreeCAD raises is said in the panel)
             document.abortTransaction()
             self.form.status.setText("Not applied: %s" % freecad_message(error))
             return None
         document.commitTransaction()
-        self.form.status.setText("%s applied: %s in %s." % (name, op.Label, job.Label))
+        self.form.status.setText(self.applied_text(name, op, job))
         return op
+
+    def applied_text(self, name, op, job):
+        row = self.result_of(name).row
+        made = ("%s applied: %s in %s, %d region%s joined, %d passes, %.0f mm of cut"
+                % (name, op.Label, job.Label, op.RegionsSwept, "" if op.RegionsSwept == 1 else "s", op.Passes,
+                   op.CuttingLength.Value))
+        if row.get("regions") and op.RegionsSwept != row["regions"]:
+            made += " (the row measured %d regions)" % row["regions"]
+        tool = getattr(self, "studied", (None, None))[1]
+        if tool not in (None, PAPER_TORUS) and op.ToolController.Label != tool:
+            made += "; tool %s, the row's %s" % (op.ToolController.Label, tool)
+        return made + "."
 
 
 class CommandRoughingStudy:

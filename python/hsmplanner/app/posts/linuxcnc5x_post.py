@@ -2,7 +2,8 @@
 tip in the workpiece frame and the rotary axes are written as the Job's A, B, C (degrees), which the kinematics
 turn into joint positions. FreeCAD post contract: export(objectslist, filename, argstring).
 
-The machine (--machine, default linuxcnc-2.9-xyzac-trt) is checked: the program may turn only its rotary axes,
+The machine (--machine; default the operations' Machine, else linuxcnc-2.9-xyzac-trt) is checked against the
+Machine the operations were computed for (their A B C are its angles: another machine is refused, naming both): the program may turn only its rotary axes,
 within their travel. G64 P blends within the tolerance; feeds in mm/min.
 
     freecad: Job > Output > Processor 'hsm_linuxcnc5x' (the workbench links this file into the Macro folder)
@@ -12,13 +13,14 @@ import argparse
 import shlex
 
 from hsmplanner.app.posts.writer import (ROTARY, ProgramWriter, add_common_arguments, check_rotary_axes,
-                                         rotary_axes_of)
+                                         operations_machine, post_machine, rotary_axes_of)
 
 TOOLTIP = "LinuxCNC 2.9, 5 axes with TCP kinematics (xyzac-trt): tool tip X Y Z and A B C, G64 P, feeds in mm/min"
 
+DEFAULT_MACHINE = "linuxcnc-2.9-xyzac-trt"
 parser = argparse.ArgumentParser(prog="hsm_linuxcnc5x", add_help=False)
-parser.add_argument("--machine", default="linuxcnc-2.9-xyzac-trt",
-                    help="the machine (preset name or JSON file) whose rotary axes the Job's A B C are")
+parser.add_argument("--machine", default="", help="the machine (preset name or JSON file) whose rotary axes the "
+                    "Job's A B C are (default: the operations' Machine, else %s)" % DEFAULT_MACHINE)
 parser.add_argument("--tolerance", type=float, default=0.01, help="G64 P blending tolerance, mm (default 0.01)")
 add_common_arguments(parser, precision=4)
 TOOLTIP_ARGS = parser.format_help()
@@ -43,15 +45,15 @@ def check_travel(objectslist, machine):
 
 def export(objectslist, filename, argstring):
     """Write the program of `objectslist` (a Job, its tool controllers and operations) to `filename`."""
-    from hsmplanner import feedsim
-
     args = parser.parse_args(shlex.split(argstring or ""))
     if not args.tolerance > 0:
         raise ValueError("--tolerance must be positive, got %g" % args.tolerance)
-    machine = feedsim.load_machine(args.machine)
+    machine = post_machine(objectslist, args.machine, DEFAULT_MACHINE, "LinuxCNC 5-axis")
     if not machine.rotary_axes or not machine.tool_tip_programmed:
-        raise ValueError("machine '%s' is not a LinuxCNC machine with TCP kinematics: use a 5-axis preset such as "
-                         "linuxcnc-2.9-xyzac-trt, or FreeCAD's linuxcnc post for 3 axes" % machine.name)
+        whose = " (the operations' Machine)" if not args.machine and operations_machine(objectslist) else ""
+        raise ValueError("machine '%s'%s is not a LinuxCNC machine with TCP kinematics: use a 5-axis preset such as "
+                         "linuxcnc-2.9-xyzac-trt (the operation's Machine, recomputed), or FreeCAD's linuxcnc post for "
+                         "3 axes" % (machine.name, whose))
     check_rotary_axes(rotary_axes_of(objectslist), machine)
     check_travel(objectslist, machine)
     writer = ProgramWriter(args, comment_format="(%s)")

@@ -5,7 +5,8 @@ G642 rounding, SOFT and the compressor), ';' comments, N numbers, modal words wr
 feeds in mm/min, T/D/M6 tool calls and S/M3 spindle from the tool controllers.
 
 Five-axis: operations whose moves carry A, B or C (the angles of the Job's machine) are written between TRAORI
-and TRAFOOF, the tool tip programmed; the orientation as those angles (--orientation=angles, the default), or as
+and TRAFOOF, the tool tip programmed (TRAORI after the tool change and its length compensation, as in Siemens'
+examples; TRAFOOF before the next); the orientation as those angles (--orientation=angles, the default), or as
 the tool-axis vector A3= B3= C3= they give on --machine (--orientation=vectors, with ORIWKS ORIVECT: the
 controller interpolates the tool axis on the great circle in the workpiece frame and uses its own kinematics).
 
@@ -15,7 +16,8 @@ controller interpolates the tool axis on the great circle in the workpiece frame
 import argparse
 import shlex
 
-from hsmplanner.app.posts.writer import ProgramWriter, add_common_arguments, check_rotary_axes, rotary_axes_of
+from hsmplanner.app.posts.writer import (ProgramWriter, add_common_arguments, check_rotary_axes, post_machine,
+                                         rotary_axes_of)
 
 TOOLTIP = "Siemens 840D: CYCLE832(tolerance), G642, SOFT, ';' comments, N numbers, feeds in mm/min"
 
@@ -23,8 +25,8 @@ parser = argparse.ArgumentParser(prog="hsm_siemens840d", add_help=False)
 parser.add_argument("--tolerance", type=float, default=0.01, help="CYCLE832 tolerance, mm (default 0.01)")
 parser.add_argument("--orientation", choices=("angles", "vectors"), default="angles",
                     help="5-axis moves: the machine's A B C as given, or tool-axis vectors A3 B3 C3 (needs --machine)")
-parser.add_argument("--machine", default="", help="the machine of the Job's A B C (a preset name or JSON file): "
-                    "checks the rotary axes, and gives the vectors")
+parser.add_argument("--machine", default="", help="the machine of the Job's A B C (a preset name or JSON file; "
+                    "default: the operations' Machine): checks the rotary axes, and gives the vectors")
 add_common_arguments(parser, precision=3)
 TOOLTIP_ARGS = parser.format_help()
 
@@ -35,10 +37,8 @@ def export(objectslist, filename, argstring):
     if not args.tolerance > 0:
         raise ValueError("--tolerance must be positive, got %g" % args.tolerance)
     rotary = rotary_axes_of(objectslist)
-    machine = None
-    if args.machine:
-        from hsmplanner import feedsim
-        machine = feedsim.load_machine(args.machine)
+    machine = post_machine(objectslist, args.machine, None, "840D")
+    if machine is not None:
         check_rotary_axes(rotary, machine)
     writer = ProgramWriter(args, radius_letter="CR=", rotary_mode=args.orientation if rotary else "angles",
                            machine=machine)
@@ -49,13 +49,10 @@ def export(objectslist, filename, argstring):
     writer.block("CYCLE832(%g,1,1)" % args.tolerance)  # 1 = _FINISH: G642, SOFT, COMPCAD within the tolerance
     writer.block("G642 SOFT")
     if rotary:
-        writer.comment("5-axis: tool tip programmed, rotary axes %s" % ", ".join(rotary))
-        writer.block("TRAORI")
-        if args.orientation == "vectors":
-            writer.block("ORIWKS ORIVECT")
+        writer.comment("5-axis: tool tip programmed, rotary axes %s, TRAORI after each tool change" % ", ".join(rotary))
+        writer.transform_with(["TRAORI"] + (["ORIWKS ORIVECT"] if args.orientation == "vectors" else []), "TRAFOOF")
     writer.objects(objectslist)
-    if rotary:
-        writer.block("TRAFOOF")
+    writer.finish()
     writer.block("CYCLE832()")
     writer.block("M5")
     writer.block("M30")

@@ -45,6 +45,40 @@ def check_rotary_axes(used, machine):
                             "rotary axes " + ", ".join(names) if names else "no rotary axes"))
 
 
+def operations_machine(objects):
+    """The one Machine (a preset name) the operations of `objects` were computed for, or None when none has one;
+    ValueError when they name several (one program runs on one machine)."""
+    names = {}
+    for obj in objects:
+        name = getattr(obj, "Machine", None)
+        if isinstance(name, str) and name and hasattr(obj, "Path") and not hasattr(obj, "Operations"):
+            names.setdefault(name, obj.Label)
+    if len(names) > 1:
+        raise ValueError("the operations were computed for different machines (%s): one program runs on one machine; "
+                         "set the same Machine on each" % ", ".join("%s: %s" % (label, name)
+                                                                   for name, label in sorted(names.items())))
+    return next(iter(names), None)
+
+
+def post_machine(objects, asked, default, post):
+    """The MachineModel a post writes for: `asked` (--machine), else the operations' Machine, else `default`
+    (None: no machine). ValueError naming both when the operations were computed for another machine than
+    the one asked: their A B C are that machine's angles."""
+    from hsmplanner import feedsim
+
+    computed = operations_machine(objects)
+    name = asked or computed or default
+    if not name:
+        return None
+    machine = feedsim.load_machine(name)
+    if computed and feedsim.load_machine(computed).name != machine.name:
+        operation = next(o.Label for o in objects if getattr(o, "Machine", None) == computed)
+        raise ValueError("%s post: %s was computed for machine '%s', not '%s' (--machine): its A B C are that "
+                         "machine's angles; post with --machine=%s, or set the operation's Machine to %s and "
+                         "recompute" % (post, operation, computed, machine.name, computed, machine.name))
+    return machine
+
+
 class ProgramWriter:
     """Blocks of one program. `comment_format` wraps a comment ('; %s' on the 840D, '(%s)' on LinuxCNC);
     `radius_letter` is how an arc's radius is written ('CR=' on the 840D)."""
@@ -55,8 +89,25 @@ class ProgramWriter:
         self.comment_format, self.radius_letter = comment_format, radius_letter
         self.rotary_mode, self.machine = rotary_mode, machine
         self.angles = {letter: 0.0 for letter in ROTARY}
+        self.transformation, self.transforming = None, False
         if rotary_mode == "vectors" and machine is None:
             raise ValueError("orientation vectors need the machine whose A, B, C the operations give: --machine NAME")
+
+    def transform_with(self, on_blocks, off_block):
+        """A 5-axis transformation (the 840D's TRAORI … TRAFOOF) switched on before the first move of an
+        operation, after the tool change and its length compensation, and off before the next tool change and
+        at the end (finish)."""
+        self.transformation = (list(on_blocks), off_block)
+
+    def transform(self, on):
+        if self.transformation is None or on == self.transforming:
+            return
+        for text in (self.transformation[0] if on else [self.transformation[1]]):
+            self.block(text)
+        self.transforming = on
+
+    def finish(self):
+        self.transform(False)
 
     def block(self, text):
         if not self.args.no_line_numbers:
@@ -118,6 +169,7 @@ class ProgramWriter:
             self.block(" ".join(words))
 
     def tool(self, controller, call="T%d D1 M6"):
+        self.transform(False)  # a tool change runs without the transformation
         self.comment("tool: %s" % controller.Label)
         self.block(call % controller.ToolNumber)
         speed = getattr(controller, "SpindleSpeed", 0)
@@ -146,6 +198,7 @@ class ProgramWriter:
                 self.tool(obj, tool_call)
                 continue
             self.comment("operation: %s" % obj.Label)
+            self.transform(True)
             for command in obj.Path.Commands:
                 self.command(command)
 
