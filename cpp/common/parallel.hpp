@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <string>
@@ -64,46 +65,70 @@ void parallelSlices(long n, int threads, long grain, Work&& work) {
   if (failure) std::rethrow_exception(failure);
 }
 
-// Chunks of `chunk` items taken in turn by `threads` threads (0: all cores), the calling thread one of them; after
-// each of its chunks the calling thread calls report(items done) (a Python progress callback must be called
-// from there); an exception there (the user cancelled) stops the other threads at their next chunk and reaches
-// the caller after the join, as one in another thread does.
+// Chunks of `chunk` items taken in turn by `threads` worker threads (0: all cores; one: the calling thread
+// itself); after each chunk done the calling thread calls report(items done) (a Python progress callback must
+// be called from there); an exception there (the user cancelled) stops the workers at their next chunk and
+// reaches the caller after the join, as one in a worker does.
 template <class Work, class Report>
 void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Report&& report) {
   chunk = std::max<long>(1, chunk);
-  threads = threadCount(threads);
-  const long helpers = std::min<long>(threads, (n + chunk - 1) / chunk) - 1;
+  const long workers = std::min<long>(threadCount(threads), (n + chunk - 1) / chunk);
+  if (workers <= 1) {
+    for (long from = 0; from < n; from += chunk) {
+      work(from, std::min(n, from + chunk));
+      report(std::min(n, from + chunk));
+    }
+    return;
+  }
+  // The calling thread only reports: woken by each chunk done, it hears a cancel while the workers work,
+  // however long its own chunk would have taken.
   std::atomic<long> next{0}, done{0};
   std::atomic<bool> stop{false};
-  const auto takeChunk = [&] {
-    const long from = stop ? n : next.fetch_add(chunk);
-    if (from >= n) return false;
-    const long to = std::min(n, from + chunk);
-    work(from, to);
-    done += to - from;
-    return true;
-  };
-  std::exception_ptr failure;
+  std::exception_ptr failure, cancelled;
   std::mutex mutex;
+  std::condition_variable progressed;
+  long finished = 0;  // workers that returned (under `mutex`)
   std::vector<std::thread> pool;
-  startEach(pool, helpers, [&](long) {
+  startEach(pool, workers, [&](long) {
     try {
-      while (takeChunk()) {
+      for (long from = next.fetch_add(chunk); from < n && !stop; from = next.fetch_add(chunk)) {
+        work(from, std::min(n, from + chunk));
+        done += std::min(n, from + chunk) - from;
+        { const std::lock_guard<std::mutex> lock(mutex); }  // the reporter checks `done` under the lock
+        progressed.notify_one();
       }
     } catch (...) {
       stop = true;
       const std::lock_guard<std::mutex> lock(mutex);
       if (!failure) failure = std::current_exception();
     }
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      ++finished;
+    }
+    progressed.notify_one();
   });
-  try {
-    while (takeChunk()) report(done.load());
-  } catch (...) {
-    stop = true;
-    for (auto& t : pool) t.join();
-    throw;
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    long reported = 0;
+    while (finished < workers) {
+      progressed.wait(lock, [&] { return finished == workers || done.load() != reported; });
+      const long now = done.load();
+      if (now == reported) continue;
+      reported = now;
+      if (cancelled) continue;
+      lock.unlock();
+      try {
+        report(now);
+      } catch (...) {
+        stop = true;
+        cancelled = std::current_exception();
+      }
+      lock.lock();
+    }
   }
   for (auto& t : pool) t.join();
+  if (cancelled) std::rethrow_exception(cancelled);
   if (failure) std::rethrow_exception(failure);
 }
 

@@ -99,6 +99,32 @@ class SlantedSlot(unittest.TestCase):
         with self.assertRaises(hsmplanner.Cancelled):
             roughing.volume_to_remove(self.stock, self.part, progress=lambda done: False)
 
+    def test_no_rapid_of_any_strategy_cuts_the_stock_left(self):
+        # Each strategy's program with its rapids kept out of the stock (at 0.2 mm), checked on another model
+        # (0.25 mm): no rapid takes anything out; and a rapid down into the stock is found and mended.
+        for name in ("S1", "S3", "S4", "S5"):
+            with self.subTest(strategy=name):
+                paths = roughing.sweep(roughing.partition(self.solid, self.part, name), self.solid, self.part,
+                                       self.stock)
+                moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths([paths], self.stock), self.stock,
+                                                               self.part)
+                check = roughing.simulate_removal(moves, self.stock, self.part, resolution=0.25)
+                self.assertEqual(list(check.rapid_faults), [], "rapids cut the stock left")
+                self.assertEqual(check.rapid_volume, 0.0)
+        top = self.stock.BoundBox.ZMax
+        inside = shape_of(self.solid.brep).Solids[0].CenterOfMass
+        rapid = roughing.MOVE_KINDS.index("rapid")
+        down = {"tip": np.array([[inside.x, inside.y, top + 10.0], [inside.x, inside.y, inside.z]]),
+                "axis": np.array([[0.0, 0.0, 1.0]] * 2), "kind": np.array([rapid, rapid])}
+        faults = roughing.simulate_removal(down, self.stock, self.part).rapid_faults
+        self.assertEqual([f.move for f in faults], [1])
+        self.assertGreater(faults[0].volume, 10.0)
+        moves, fed = roughing.keep_rapids_out_of_stock(down, self.stock, self.part, margin=1.0)
+        self.assertEqual([roughing.MOVE_KINDS[k] for k in moves["kind"]], ["rapid", "rapid", "plunge"])
+        self.assertGreaterEqual(moves["tip"][1][2], faults[0].at[2] + 1.0 - 1e-9)  # stops a margin above the stock
+        self.assertEqual(list(roughing.simulate_removal(moves, self.stock, self.part).rapid_faults), [])
+        self.assertIn("1 rapid would have cut stock left", roughing.rapid_note(fed))
+
     def test_bad_inputs_name_the_input_and_the_fix(self):
         cases = [
             (lambda: roughing.partition(self.solid, self.part, "S2"), ValueError, "needs a cylindrical crossable face"),

@@ -174,3 +174,54 @@ TEST(Removal, TheSlantedSlotNeedsItsSetupDirection) {
   EXPECT_EQ(setup.gougeMove, -1);
   EXPECT_NEAR(setup.thicknessMean, 0.5, 0.1) << "the allowance, with the corners' few extra";
 }
+
+// A rapid straight down 5 mm into the slab's stock: a fault where it meets the stock (z 20), with the volume it
+// takes out; fed through the stock from above it instead, the same material goes and no rapid cuts.
+TEST(Removal, ARapidIntoTheStockIsAFaultAndFeedingItInMendsIt) {
+  const Slab s;
+  const std::vector<ToolMove> moves = {move(MoveKind::Rapid, 20, 20, 30), move(MoveKind::Rapid, 20, 20, 15),
+                                       move(MoveKind::Cut, 30, 20, 15), move(MoveKind::Rapid, 30, 20, 30)};
+  const RemovalResult r = simulateRemoval(moves, flat(10.0), s.stock, s.part);
+  ASSERT_EQ(r.rapidFaults.size(), 1u);
+  const RapidFault& fault = r.rapidFaults[0];
+  EXPECT_EQ(fault.move, 1);
+  EXPECT_NEAR(fault.at.z(), 20.0, 1.0);  // the first position that cut, within a sampling step of the stock
+  EXPECT_LE(fault.along * 15.0, 10.0 + 1e-9);  // before it the tool was in the air: 10 of the move's 15 mm
+  EXPECT_NEAR(fault.volume, M_PI * 25.0 * 5.0, 0.03 * M_PI * 25.0 * 5.0);
+  EXPECT_NEAR(r.rapidVolume, fault.volume, 1e-9);
+
+  const std::vector<ToolMove> mended = feedThroughStock(moves, r.rapidFaults, 1.0);
+  ASSERT_EQ(mended.size(), moves.size() + 1);
+  EXPECT_EQ(mended[1].kind, MoveKind::Rapid);
+  EXPECT_GE(mended[1].tip.z(), 21.0 - 1e-9);  // the rapid stops a margin above the stock
+  EXPECT_EQ(mended[2].kind, MoveKind::Plunge);
+  EXPECT_NEAR(mended[2].tip.z(), 15.0, 1e-12);
+  const RemovalResult again = simulateRemoval(mended, flat(10.0), s.stock, s.part);
+  EXPECT_TRUE(again.rapidFaults.empty());
+  EXPECT_NEAR(again.remainingVolume, r.remainingVolume, 1e-6);
+
+  const RapidsMended kept = keepRapidsOutOfStock(moves, flat(10.0), s.stock, s.part, RemovalSettings{});
+  EXPECT_EQ(kept.mended.size(), 1u);
+  EXPECT_TRUE(simulateRemoval(kept.moves, flat(10.0), s.stock, s.part).rapidFaults.empty());
+  // The slab's own slot program approaches through the air: nothing to mend.
+  EXPECT_TRUE(simulateRemoval(s.slot, flat(10.0), s.stock, s.part).rapidFaults.empty());
+}
+
+TEST(Removal, FaultsOfOtherMovesAndBadThreadsAreRefused) {
+  const Slab s;
+  RapidFault cut;
+  cut.move = 2;  // a cut, not a rapid
+  EXPECT_THROW(feedThroughStock(s.slot, {cut}, 1.0), InputError);
+  RapidFault beyond;
+  beyond.move = 9;
+  EXPECT_THROW(feedThroughStock(s.slot, {beyond}, 1.0), InputError);
+  EXPECT_THROW(feedThroughStock(s.slot, {}, -1.0), InputError);
+  RemovalSettings many;
+  many.threads = 10000;  // would start 10,000 threads: refused by name, not a crash
+  try {
+    simulateRemoval(s.slot, flat(10.0), s.stock, s.part, many);
+    FAIL() << "10000 threads accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("threads 10000"), std::string::npos) << e.what();
+  }
+}
