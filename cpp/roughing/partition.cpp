@@ -60,37 +60,51 @@ int largestFace(const RemovalSolid& s, Keep&& keep) {
   return best;
 }
 
-int referenceFace(const RemovalSolid& s, Strategy strategy) {
+// The reference face of `strategy` in the solid (1-based), or 0 when it has none (S3 needs none: 0 too).
+int referenceFaceOrNone(const RemovalSolid& s, Strategy strategy) {
   switch (strategy) {
-    case Strategy::PlanesParallelToFace: {
-      const int f = largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Plane; });
-      if (f == 0) throw InputError("S1 needs a planar crossable face (an inlet plane, a stock top) and this volume has none: use S3");
-      return f;
-    }
-    case Strategy::CoaxialCylinders: {
-      const int f = largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Cylinder; });
-      if (f == 0)
-        throw InputError("S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3 or S4");
-      return f;
-    }
+    case Strategy::PlanesParallelToFace:
+      return largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Plane; });
+    case Strategy::CoaxialCylinders:
+      return largestFace(s, [](FaceClass c, SurfaceKind k) { return c == FaceClass::Crossable && k == SurfaceKind::Cylinder; });
     case Strategy::StockOffsets: {
-      int f = largestFace(s, [](FaceClass c, SurfaceKind k) {
+      const int f = largestFace(s, [](FaceClass c, SurfaceKind k) {
         return c == FaceClass::Crossable && k != SurfaceKind::Plane && k != SurfaceKind::Cylinder;
       });
-      if (f == 0) f = largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::Crossable; });
-      if (f == 0) throw InputError("S4 needs a crossable face (the stock skin) and this volume has none");
-      return f;
+      return f != 0 ? f : largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::Crossable; });
     }
-    case Strategy::HubOffsets: {
-      const int f = largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::FacingCrossable; });
-      if (f == 0)
-        throw InputError("S5 needs a face of the part that faces a crossable face (a hub, a floor) and this volume has "
-                         "none: use S1 to S4");
-      return f;
-    }
+    case Strategy::HubOffsets:
+      return largestFace(s, [](FaceClass c, SurfaceKind) { return c == FaceClass::FacingCrossable; });
     case Strategy::SetupPlanes: return 0;
   }
   return 0;
+}
+
+// "S1, S3 or S5": the strategies this solid has the reference face of (S3 always).
+std::string applicableStrategies(const RemovalSolid& s) {
+  std::vector<std::string> names;
+  for (Strategy k : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
+                     Strategy::StockOffsets, Strategy::HubOffsets})
+    if (k == Strategy::SetupPlanes || referenceFaceOrNone(s, k) != 0) names.push_back(strategyName(k).substr(0, 2));
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i) out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return out;
+}
+
+int referenceFace(const RemovalSolid& s, Strategy strategy) {
+  const int f = referenceFaceOrNone(s, strategy);
+  if (f != 0 || strategy == Strategy::SetupPlanes) return f;
+  const std::string use = ": use " + applicableStrategies(s);
+  switch (strategy) {
+    case Strategy::PlanesParallelToFace:
+      throw InputError("S1 needs a planar crossable face (an inlet plane, a stock top) and this volume has none" + use);
+    case Strategy::CoaxialCylinders:
+      throw InputError("S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none" + use);
+    case Strategy::StockOffsets: throw InputError("S4 needs a crossable face (the stock skin) and this volume has none" + use);
+    default:
+      throw InputError("S5 needs a face of the part that faces a crossable face (a hub, a floor) and this volume has "
+                       "none" + use);
+  }
 }
 
 TopoDS_Face faceOf(const RemovalSolid& s, int index) {
@@ -113,6 +127,10 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   result.strategy = strategy;
   result.step = settings.step;
   result.referenceFace = referenceFace(solid, strategy);
+  if (strategy == Strategy::StockOffsets &&
+      solid.faceKinds[static_cast<size_t>(result.referenceFace - 1)] == SurfaceKind::Plane)
+    result.warnings.push_back("S4: the stock skin here is a plane, so its offsets are planes parallel to it: the "
+                              "sub-volumes and the path are S1's on that face");
   ProgressReporter reporter(settings.progress, "partition");
 
   // The slicing family: a depth measure over space and the surface at each depth.

@@ -191,7 +191,7 @@ def keep_rapids_out_of_stock(paths, stock, part, tool=None, resolution=0.2, marg
 def rapid_note(fed):
     """What keep_rapids_out_of_stock mended (a non-empty list of RapidFault), in words: how many, the largest."""
     worst = max(fed, key=lambda f: f.volume)
-    return ("%d rapid%s would have cut stock left (the most %.1f mm³ at move %d, tip %.1f %.1f %.1f): they feed "
+    return ("%d rapid%s would have cut stock left (the most %.3g mm³ at move %d, tip %.1f %.1f %.1f): they feed "
             "into it from just above it" % (len(fed), "" if len(fed) == 1 else "s", worst.volume, worst.move,
                                             worst.at[0], worst.at[1], worst.at[2]))
 

@@ -172,8 +172,10 @@ def bad_input_in_the_panel_and_ok(run):
     p.strategy.setCurrentIndex(2)  # S2: the slot has no cylindrical crossable face
     run.check("S2 refused", not p.compute())
     run.check("the message names the strategy and the fix", "S2 needs a cylindrical" in p.message.text()
-              and "use S1, S3 or S4" in p.message.text(), p.message.text())
+              and "use S1, S3, S4 or S5" in p.message.text(), p.message.text())
     run.check("the object stays valid", obj.isValid(), str(obj.State))
+    run.check("the volume stays in the view, its faces by class", len(obj.Shape.Solids) == 1 and obj.RegionCount == 1
+              and set(drawn_colours(obj)) == palette_of("FACE_CLASS_COLORS"), "%d solids" % len(obj.Shape.Solids))
     run.check("one line in the Report view", run.wait_until(
         lambda: "RoughingVolume: S2 needs a cylindrical" in run.report_view_text(), 5.0, "the Report view's line"))
     run.check("no traceback in the Report view", "Traceback" not in run.report_view_text())

@@ -272,7 +272,7 @@ CASES = [
            "ValueError", "step 500 mm is larger than the volume's extent"),
     raises("roughing volume S2 on the slot (no cylindrical crossable face)",
            "o = new_slot_roughing(Strategy='S2'); roughing_error(o)", "ValueError",
-           "S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3 or S4"),
+           "S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3, S4 or S5"),
     raises("roughing volume S1 between two spheres (no planar crossable face)",
            "d = new_document(); from hsmplanner.app import roughing_object\n"
            "o = roughing_object.create(new_solid(Part.makeSphere(10), 'Ball', d), "

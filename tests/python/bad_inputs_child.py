@@ -173,8 +173,10 @@ def roughing_error(obj):
         raise RuntimeError("the roughing volume is marked invalid: %s" % obj.getStatusString())
     if obj.Proxy.error is None:
         return obj
-    if obj.Volume != 0.0 or not obj.Shape.isNull() or obj.SubVolumeCount:
-        raise RuntimeError("a failed roughing volume kept a result")
+    if obj.SubVolumeCount or not obj.SubVolumeShape.isNull():
+        raise RuntimeError("a failed roughing volume kept sub-volumes")
+    if (obj.Volume != 0.0 or not obj.Shape.isNull()) and not obj.Proxy.refused:
+        raise RuntimeError("a failed roughing volume kept a result")  # only a refused strategy keeps the volume
     raise ValueError(obj.Proxy.error)
 
 

@@ -129,6 +129,10 @@ class RoughingStudyExample(unittest.TestCase):
             self.assertTrue(0.0 < float(row["in_material"]) <= 100.0, row)
             self.assertGreater(float(row["time_s"]), float(row["length_over_feed_s"]) * 0.99, row)
             self.assertGreaterEqual(float(row["stock_mean_mm"]), 0.45, row)
+            # No rapid of the joined program takes material out of the stock left (the approaches that would
+            # have are fed in), on all seven channels.
+            self.assertEqual(int(row["rapid_faults"]), 0, row)
+            self.assertEqual(int(row["regions"]), 7, row)
         # The continuous 5-axis strategies need the least stick-out (the paper's S4 and S5: 39 and 44 mm).
         stick = {r["strategy"]: float(r["stick_out_mm"]) for r in rows}
         self.assertLess(max(stick["S4"], stick["S5"]), min(stick["S1"], stick["S2"], stick["S3"]))

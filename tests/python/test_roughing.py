@@ -99,6 +99,13 @@ class SlantedSlot(unittest.TestCase):
         with self.assertRaises(hsmplanner.Cancelled):
             roughing.volume_to_remove(self.stock, self.part, progress=lambda done: False)
 
+    def test_s4_on_a_planar_skin_says_it_is_s1(self):
+        # The slot's stock skin is its top plane: S4's offsets of it are S1's planes, and the partition says so.
+        s4, s1 = (roughing.partition(self.solid, self.part, name) for name in ("S4", "S1"))
+        self.assertTrue(any("the stock skin here is a plane" in w and "S1's" in w for w in s4.warnings), s4.warnings)
+        self.assertFalse(any("stock skin" in w for w in s1.warnings))
+        np.testing.assert_allclose([v.volume for v in s4.sub_volumes], [v.volume for v in s1.sub_volumes], rtol=1e-9)
+
     def test_no_rapid_of_any_strategy_cuts_the_stock_left(self):
         # Each strategy's program with its rapids kept out of the stock (at 0.2 mm), checked on another model
         # (0.25 mm): no rapid takes anything out; and a rapid down into the stock is found and mended.

@@ -202,21 +202,29 @@ class RoughingVolumeOfTheSlot(SlotDocument):
         box.Shape = Part.makeBox(10, 10, 10)
         sheet = self.document.addObject("Part::Feature", "Sheet")
         sheet.Shape = Part.makePlane(200, 200, FreeCAD.Vector(-50, -50, 10))
-        cases = [(dict(Part=None), "Part is not set: link the part"),
-                 (dict(Part=self.part, Stock=self.part), "Part and Stock are both"),
-                 (dict(Stock=box), "the stock does not contain the part"),
-                 (dict(Stock=self.stock, Part=sheet), "holds no solid"),
-                 (dict(Part=self.part, Step=400.0), "larger than the volume's extent"),
-                 (dict(Step=8.0, Strategy=strategy_label("S2")), "S2 needs a cylindrical crossable face"),
-                 (dict(Strategy=strategy_label("S1"), Region=2), "Region 2: the volume to remove has 1 region")]
-        for properties, message in cases:
+        # Bad links leave no result; a strategy, step or region this volume cannot take leaves the volume to
+        # remove in the view (its faces by class), with no sub-volumes.
+        cases = [(dict(Part=None), "Part is not set: link the part", False),
+                 (dict(Part=self.part, Stock=self.part), "Part and Stock are both", False),
+                 (dict(Stock=box), "the stock does not contain the part", False),
+                 (dict(Stock=self.stock, Part=sheet), "holds no solid", False),
+                 (dict(Part=self.part, Step=400.0), "larger than the volume's extent", True),
+                 (dict(Step=8.0, Strategy=strategy_label("S2")), "S2 needs a cylindrical crossable face.*use S1, S3, "
+                                                                 "S4 or S5", True),
+                 (dict(Strategy=strategy_label("S1"), Region=2), "Region 2: the volume to remove has 1 region", True)]
+        for properties, message, keeps_volume in cases:
             for key, value in properties.items():
                 setattr(obj, key, value)
             self.document.recompute()
             self.assertTrue(obj.isValid(), "%s: %s" % (message, obj.State))
             self.assertRegex(obj.Proxy.error or "", message)
-            self.assertEqual((obj.Volume, obj.SubVolumeCount, obj.Shape.isNull(), list(obj.FaceColorIndex)),
-                             (0.0, 0, True, []), message)
+            self.assertEqual(obj.SubVolumeCount, 0, message)
+            if keeps_volume:
+                self.assertRelative(obj.Volume, SLOT_VOLUME)
+                self.assertEqual(len(obj.Shape.Solids), 1, message)
+                self.assertEqual(len(obj.FaceColorIndex), len(obj.Shape.Faces), message)
+            else:
+                self.assertEqual((obj.Volume, obj.Shape.isNull(), list(obj.FaceColorIndex)), (0.0, True, []), message)
         obj.Region = 1
         self.document.recompute()
         self.assertIsNone(obj.Proxy.error)

@@ -205,6 +205,11 @@ def class_counts(solid):
     return ", ".join("%s %d" % (name, counts.get(name, 0)) for name in CLASS_NAMES)
 
 
+class StrategyRefused(ValueError):
+    """The volume to remove was computed, the strategy cannot partition it (its reference face is missing): the
+    volume and its face classes stay, with no sub-volumes."""
+
+
 class RoughingVolume(PropertyLimits, NoSavedState):
     LIMITS = LIMITS
 
@@ -216,7 +221,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         self.forget()
 
     def forget(self):
-        self.error, self.cancelled = None, False
+        self.error, self.cancelled, self.refused = None, False, False
         self.volume_cache = None  # (key, VolumeToRemove, part BREP)
         self.partition_cache = collections.OrderedDict()
 
@@ -244,7 +249,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
     def execute(self, obj):
         if not hasattr(self, "partition_cache"):  # a proxy restored without its in-memory state
             self.forget()
-        self.error, self.cancelled = None, False
+        self.error, self.cancelled, self.refused = None, False, False
         try:
             self.run(obj)
         except hsmplanner.Cancelled:
@@ -255,7 +260,9 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         except (ValueError, RuntimeError) as error:  # bad input, or the core's boolean failed: one line
             self.error = str(error) or type(error).__name__
             FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, self.error))
-            self.failed(obj)
+            self.refused = isinstance(error, StrategyRefused)
+            if not self.refused:
+                self.failed(obj)
 
     def run(self, obj):
         """Computes what changed and stores the result; raises ValueError, RuntimeError or Cancelled."""
@@ -276,7 +283,13 @@ class RoughingVolume(PropertyLimits, NoSavedState):
                 self.volume_cache = (volume_key, volume, part_brep)
                 self.partition_cache.clear()
             _, volume, part_brep = self.volume_cache
-            partitions = self.partitions(obj, volume, part_brep, volume_key, settings, stage_partitions)
+            try:
+                partitions = self.partitions(obj, volume, part_brep, volume_key, settings, stage_partitions)
+            except ValueError as error:  # a strategy this volume cannot take: the volume itself still shows
+                self.store(obj, volume, [])
+                obj.InputSignature = ""
+                self.show(obj)
+                raise StrategyRefused(str(error)) from None
         self.store(obj, volume, partitions)
         obj.InputSignature = signature
         self.show(obj)
