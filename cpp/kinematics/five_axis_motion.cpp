@@ -105,8 +105,15 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
       }
     } else {
       for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
-        const int k = m.rotaryAxes[i].name - 'A';
+        const RotaryAxis& axis = m.rotaryAxes[i];
+        const int k = axis.name - 'A';
         if (block.rotaryEnd[k] != programmed_[k]) toAngles_[i] = block.rotaryEnd[k];
+        // An angle word the axis cannot reach: a real controller stops at its software limit (an alarm).
+        if (!axis.continuous && !(toAngles_[i] >= axis.minPosition - 1e-9 && toAngles_[i] <= axis.maxPosition + 1e-9))
+          throw InputError(where + std::string(1, axis.name) + hsm::number(toAngles_[i]) + " is outside the travel of " +
+                           std::string(1, axis.name) + " on machine \"" + m.name + "\" [" +
+                           hsm::number(axis.minPosition) + ", " + hsm::number(axis.maxPosition) +
+                           "] deg: correct the program, or choose the machine it was posted for");
       }
     }
     turn = std::max(std::abs(toAngles_[0] - fromAngles_[0]), std::abs(toAngles_[1] - fromAngles_[1]));

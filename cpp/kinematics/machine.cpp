@@ -23,6 +23,20 @@ constexpr const char* kAxes[] = {"X", "Y", "Z"};
   throw InputError(origin + ": " + what);
 }
 
+// An optional string or true/false of `node`, its type checked: nlohmann's own message names neither the key
+// nor the file.
+std::string text(const json& node, const std::string& key, const std::string& origin, const std::string& otherwise) {
+  if (!node.contains(key)) return otherwise;
+  if (!node.at(key).is_string()) bad(origin, "\"" + key + "\" must be text in quotes, got " + node.at(key).dump());
+  return node.at(key).get<std::string>();
+}
+
+bool flag(const json& node, const std::string& key, const std::string& origin, bool otherwise) {
+  if (!node.contains(key)) return otherwise;
+  if (!node.at(key).is_boolean()) bad(origin, "\"" + key + "\" must be true or false, got " + node.at(key).dump());
+  return node.at(key).get<bool>();
+}
+
 double number(const json& node, const std::string& key, const std::string& origin, double scale, bool positive) {
   if (!node.contains(key)) bad(origin, "missing \"" + key + "\": add it (see docs/machines.md)");
   const json& value = node.at(key);
@@ -67,11 +81,11 @@ Eigen::Vector3d vector3(const json& node, const std::string& key, const std::str
 RotaryAxis rotaryAxis(const json& node, const std::string& origin) {
   if (!node.is_object()) bad(origin, "each rotary axis must be an object, got " + node.dump());
   RotaryAxis axis;
-  const std::string name = node.value("name", "");
+  const std::string name = text(node, "name", origin + " rotary axis", "");
   if (name != "A" && name != "B" && name != "C") bad(origin, "a rotary axis needs \"name\": \"A\", \"B\" or \"C\"");
   axis.name = name[0];
   const std::string where = origin + " rotary axis " + name;
-  const std::string carrier = node.value("carrier", "");
+  const std::string carrier = text(node, "carrier", where, "");
   if (carrier != "table" && carrier != "head") bad(where, "\"carrier\" must be \"table\" or \"head\"");
   axis.onTable = carrier == "table";
   axis.direction = vector3(node, "direction", where);
@@ -82,7 +96,7 @@ RotaryAxis rotaryAxis(const json& node, const std::string& origin) {
   axis.rapidVelocity = number(node, "rapid_velocity_deg_min", where, kPerMinute, true);
   axis.maxAcceleration = number(node, "max_acceleration_deg_s2", where, 1.0, true);
   axis.maxJerk = number(node, "max_jerk_deg_s3", where, 1.0, true);
-  axis.continuous = node.value("continuous", false);
+  axis.continuous = flag(node, "continuous", where, false);
   if (!axis.continuous) {
     if (!node.contains("min_deg") || !node.contains("max_deg") || !node["min_deg"].is_number() ||
         !node["max_deg"].is_number())
@@ -194,18 +208,28 @@ void checkRotaryAxes(const MachineModel& m) {
     throw InputError(machine + "the two rotary axes are parallel: they cannot orient the tool");
 }
 
-MachineModel machineFromJson(const std::string& text, const std::string& origin) {
+static MachineModel machineFromJsonChecked(const std::string& source, const std::string& origin);
+
+MachineModel machineFromJson(const std::string& source, const std::string& origin) {
+  try {
+    return machineFromJsonChecked(source, origin);
+  } catch (const json::exception& error) {  // a type no check above foresaw: still the file's fault, by name
+    bad(origin, std::string("a value of the wrong type (") + error.what() + "): see docs/machines.md");
+  }
+}
+
+static MachineModel machineFromJsonChecked(const std::string& source, const std::string& origin) {
   json root;
   try {
-    root = json::parse(text);
+    root = json::parse(source);
   } catch (const json::parse_error& error) {
     bad(origin, std::string("not valid JSON (") + error.what() + ")");
   }
   if (!root.is_object()) bad(origin, "the top level must be an object");
   MachineModel m;
-  m.name = root.value("name", "");
+  m.name = text(root, "name", origin, "");
   if (m.name.empty()) bad(origin, "missing \"name\"");
-  m.description = root.value("description", "");
+  m.description = text(root, "description", origin, "");
   if (!root.contains("controller") || !root["controller"].is_string()) bad(origin, "missing \"controller\"");
   m.controller = controllerKind(root["controller"].get<std::string>(), origin);
   if (!root.contains("axes") || !root["axes"].is_object()) bad(origin, "missing \"axes\" with X, Y and Z");
@@ -221,7 +245,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
     bad(origin, "\"look_ahead_blocks\" must be a whole number up to 100000");
   m.lookAheadBlocks = static_cast<int>(lookAhead);
   m.cornerTolerance = number(root, "corner_tolerance_mm", origin, 1.0, false);
-  m.jerkLimitedByDefault = root.value("jerk_limited_by_default", m.controller == ControllerKind::Siemens840D);
+  m.jerkLimitedByDefault = flag(root, "jerk_limited_by_default", origin, m.controller == ControllerKind::Siemens840D);
   if (root.contains("arc_tolerance_mm")) m.arcTolerance = number(root, "arc_tolerance_mm", origin, 1.0, true);
   if (root.contains("compressor_path_limit_mm"))
     m.compressorPathLimit = number(root, "compressor_path_limit_mm", origin, 1.0, true);
@@ -234,7 +258,8 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin)
     if (m.toolAxis.norm() < 1e-9) bad(origin, "\"tool_axis\" must not be zero");
     m.toolAxis.normalize();
   }
-  m.toolTipProgrammed = m.hasRotaryAxes() && root.value("tool_tip_programmed", m.controller == ControllerKind::LinuxCNC);
+  m.toolTipProgrammed =
+      m.hasRotaryAxes() && flag(root, "tool_tip_programmed", origin, m.controller == ControllerKind::LinuxCNC);
   if (root.contains("kinematics")) {
     const std::string said = root["kinematics"].is_string() ? root["kinematics"].get<std::string>() : "?";
     if (said != m.kinematicsName())

@@ -288,7 +288,7 @@ def _run_cached(variant, inputs, finishing, cache_dir):
 
 
 def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, progress=None, scheduler=None,
-          idle=None):
+          idle=None, scheduler_timeout_s=SCHEDULER_TIMEOUT_S):
     """Every variant of `grid` (variants()) on the bottom face `face` ('Face4') of `part` between boundaries b1
     and b2 (shapes or BREP text; None for a grid of plane directions only), in worker processes (0: all cores; 1: in this process), or on a Dask
     cluster when `scheduler` is its address ('tcp://host:8786') or a distributed.Client (`workers` is then
@@ -296,8 +296,11 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
     one 'cancelled'. progress(done, row) after each finished variant; returning False cancels the rest.
     idle(), if given, is called about five times a second while variants run elsewhere (workers, a cluster):
     a GUI stays responsive and its Cancel is seen mid-variant; returning False cancels too. A worker process
-    that dies (a crash in a variant) fails its variant's row, not the study."""
+    that dies (a crash in a variant) fails its variant's row, not the study. A scheduler that does not answer,
+    or has no worker, within `scheduler_timeout_s` is a ValueError naming it."""
     _check(bool(grid), "the grid is empty: nothing to study")
+    _check(isinstance(scheduler_timeout_s, (int, float)) and 0.1 <= scheduler_timeout_s <= 3600,
+           "scheduler timeout %r s must be in [0.1, 3600]" % (scheduler_timeout_s,))
     _check(isinstance(workers, int) and 0 <= workers <= 256, "workers %r must be an integer in [0, 256] (0: all cores)"
            % (workers,))
     needs_boundaries = any(v.get("strategy") != "planes" for v in grid)
@@ -318,7 +321,7 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
         return progress(done / len(grid), row) if progress else True
 
     if scheduler is not None:
-        _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle)
+        _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle, scheduler_timeout_s)
     elif (workers or os.cpu_count() or 1) == 1:
         for index, variant in enumerate(grid):
             if finished(index, _run_cached(variant, inputs, finishing, cache_dir)) is False:
@@ -430,7 +433,7 @@ def _plain_streams_in_workers():
         _forking["active"] -= 1
 
 
-def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle):
+def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle, timeout_s=SCHEDULER_TIMEOUT_S):
     """The variants as tasks of a Dask cluster: the BREP texts are scattered once to every worker, each task
     is one variant (run_variant in the worker, which imports hsmplanner: start the workers with the
     repository's python/ folder on PYTHONPATH). Finished rows come back as they end; a cancel drops the rest."""
@@ -439,7 +442,7 @@ def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle):
     except ImportError as error:
         raise ImportError("a Dask scheduler was given but Dask distributed is missing: apt-get install "
                           "python3-distributed (%s)" % error) from None
-    client = scheduler if isinstance(scheduler, distributed.Client) else _connect(distributed, scheduler)
+    client = scheduler if isinstance(scheduler, distributed.Client) else _connect(distributed, scheduler, timeout_s)
     try:
         shared = client.scatter(list(inputs), broadcast=True, hash=False)
         futures = {client.submit(_run_cached, v, shared, finishing, cache_dir, pure=False): i
@@ -458,16 +461,24 @@ def _run_on_dask(scheduler, grid, inputs, finishing, cache_dir, finished, idle):
             client.close()
 
 
-def _connect(distributed, address):
+def _connect(distributed, address, timeout_s=SCHEDULER_TIMEOUT_S):
     _check(isinstance(address, str) and "://" in address,
            "scheduler %r must be a Dask scheduler's address such as 'tcp://host:8786' (or a distributed.Client)"
            % (address,))
     try:
-        return distributed.Client(address, timeout=SCHEDULER_TIMEOUT_S)
+        client = distributed.Client(address, timeout=timeout_s)
     except (OSError, TimeoutError) as error:
         raise ValueError("the Dask scheduler at %r did not answer within %d s (%s): start it (dask-scheduler) and "
                          "its workers (dask-worker %s, with HSM Planner's python/ on PYTHONPATH), or check the address"
-                         % (address, SCHEDULER_TIMEOUT_S, error, address)) from None
+                         % (address, timeout_s, error, address)) from None
+    try:
+        client.wait_for_workers(1, timeout=timeout_s)
+    except (OSError, TimeoutError) as error:
+        client.close()
+        raise ValueError("the Dask scheduler at %r has no workers after %d s (%s): start some (dask-worker %s, with "
+                         "HSM Planner's python/ on PYTHONPATH)" % (address, timeout_s, error or "none joined",
+                                                                  address)) from None
+    return client
 
 
 def local_cluster(workers=2):

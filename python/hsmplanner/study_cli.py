@@ -38,6 +38,8 @@ def parser():
     p.add_argument("--machine", action="append", default=None, help="machine model name (repeat for several)")
     p.add_argument("--workers", type=int, default=0, help="worker processes (0: all cores)")
     p.add_argument("--scheduler", default=None, help="a Dask scheduler's address (tcp://host:8786): run there")
+    p.add_argument("--scheduler-timeout", type=float, default=20.0,
+                   help="seconds to wait for the scheduler and its first worker (default 20)")
     p.add_argument("--cache", default=None, help="folder of cached results (inputs unchanged: not recomputed)")
     p.add_argument("--rank", choices=["time", "slowdown", "pareto"], default="time")
     p.add_argument("--csv", default=None, help="write every row here")
@@ -52,7 +54,11 @@ def read_part(path):
     if not os.path.isfile(path):
         raise ValueError("part file %r does not exist" % path)
     shape = Part.Shape()
-    shape.read(path)
+    try:
+        shape.read(path)
+    except Exception as error:  # noqa: BLE001 (FreeCAD raises its own types for a file it cannot read)
+        raise ValueError("part file %r is not a BREP or STEP file FreeCAD can read (%s): export the part as STEP "
+                         "(.step/.stp) or BREP (.brep)" % (path, str(error).strip() or type(error).__name__)) from None
     if shape.isNull() or not shape.Faces:
         raise ValueError("part file %r holds no faces: give a BREP or STEP solid" % path)
     return shape
@@ -90,8 +96,12 @@ def main(argv=None):
         sys.stderr.flush()
         return True
 
-    rows = study.study(shape, args.face, b1, b2, grid, workers=args.workers, cache_dir=args.cache, progress=progress,
-                       scheduler=args.scheduler)
+    try:
+        rows = study.study(shape, args.face, b1, b2, grid, workers=args.workers, cache_dir=args.cache,
+                           progress=progress, scheduler=args.scheduler, scheduler_timeout_s=args.scheduler_timeout)
+    except (ValueError, ImportError) as error:  # the scheduler (no answer, no workers) or Dask missing
+        print("\nhsmplanner.study: %s" % error, file=sys.stderr)
+        return 2
     sys.stderr.write("\n")
     for row in study.rank(rows, args.rank):
         print("%-48s %9.1f s %9.1f s  slowdown %5.1f %%  %5d passes" % (row["name"], row["time_s"],

@@ -330,6 +330,20 @@ CASES = [
     raises("machine with three rotary axes", "import json\nm = json.load(open(REPO + "
            "'/resources/machines/mikron-ucp710-ac-840d.json')); m['rotary_axes'].append(dict(m['rotary_axes'][0], name='B')); del m['kinematics']\n"
            "h.simulate('G1 X1 F100\\n', m)", "ValueError", "a machine has at most two"),
+    raises("machine file whose axis says continuous 'yes'", "import json, tempfile\nm = json.load(open(REPO + "
+           "'/resources/machines/mikron-ucp710-ac-840d.json')); m['rotary_axes'][0]['continuous'] = 'yes'\n"
+           "path = tempfile.mkdtemp() + '/mikron-edited.json'\njson.dump(m, open(path, 'w'))\nh.feedsim.load_machine(path)",
+           "ValueError", "mikron-edited.json rotary axis A: \"continuous\" must be true or false, got \"yes\""),
+    raises("machine file whose name is a number", "import json, tempfile\nm = json.load(open(REPO + "
+           "'/resources/machines/mikron-ucp710-ac-840d.json')); m['name'] = 1\n"
+           "path = tempfile.mkdtemp() + '/named-1.json'\njson.dump(m, open(path, 'w'))\nh.feedsim.load_machine(path)",
+           "ValueError", "named-1.json: \"name\" must be text in quotes, got 1"),
+    raises("an A word a million degrees out of travel", "h.simulate('TRAORI\\nG1 X10 A1000000 F2000\\n', 'mikron-ucp710-ac-840d')",
+           "ValueError", "line 2: A1e+06 is outside the travel of A on machine \"mikron-ucp710-ac-840d\" [-100, 120] deg"),
+    raises("an A word of 200 degrees", "h.simulate('TRAORI\\nG1 X10 A200 F2000\\n', 'mikron-ucp710-ac-840d')",
+           "ValueError", "line 2: A200 is outside the travel of A"),
+    raises("an A word of -500 degrees on the LinuxCNC trunnion", "h.simulate('G1 X10 A-500 F2000\\n', 'linuxcnc-2.9-xyzac-trt')",
+           "ValueError", "line 1: A-500 is outside the travel of A"),
     holds("a 5-axis block turning C 1e9 degrees is bounded work", "result = h.simulate('TRAORI\\nG1 X1 C999999999 F100\\n', "
           "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),    # --- material removal and joined regions (issue 17): absurd settings, bounded work ----------------------
     raises("removal resolution NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=float('nan'))",

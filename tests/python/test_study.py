@@ -198,6 +198,31 @@ class Study(unittest.TestCase):
                               capture_output=True, text=True, timeout=120)
         self.assertEqual(mode.returncode, 2)
         self.assertIn("net mode 'spiral' is unknown", mode.stderr)
+        # Files that are not STEP though named so, and schedulers that do not answer or have no worker: exit 2
+        # with one line naming the argument, no traceback.
+        text_file, noise_file = os.path.join(folder, "notes.step"), os.path.join(folder, "noise.step")
+        with open(text_file, "w") as stream:
+            stream.write("this is not a STEP file\n")
+        with open(noise_file, "wb") as stream:
+            stream.write(os.urandom(4096))
+        import distributed
+
+        cluster = distributed.LocalCluster(n_workers=0, processes=False, protocol="tcp://", dashboard_address=None)
+        address = cluster.scheduler_address
+        try:
+            for argument, words in (([text_file], "is not a BREP or STEP file FreeCAD can read"),
+                                    ([noise_file], "is not a BREP or STEP file FreeCAD can read"),
+                                    ([brep, "--scheduler", "tcp://127.0.0.1:9", "--scheduler-timeout", "2"],
+                                     "did not answer within 2 s"),
+                                    ([brep, "--scheduler", address, "--scheduler-timeout", "2"], "has no workers after 2 s")):
+                with self.subTest(argument=argument):
+                    done = subprocess.run(command[:3] + argument + command[4:], env=env, capture_output=True, text=True,
+                                          timeout=120)
+                    self.assertEqual(done.returncode, 2, done.stderr[-2000:])
+                    self.assertIn(words, done.stderr)
+                    self.assertNotIn("Traceback", done.stderr)
+        finally:
+            cluster.close()
 
 
 if __name__ == "__main__":
