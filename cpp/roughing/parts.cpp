@@ -4,6 +4,8 @@
 #include "common/text.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -26,8 +28,24 @@ namespace hsm::roughing {
 
 namespace {
 
+constexpr double kLargestPart = 1000.0;  // mm: a test part's sizes; larger ones only cost time (minutes)
+
 void positive(double value, const std::string& what) {
   if (!(value > 0.0) || !std::isfinite(value)) throw InputError(what + " = " + number(value) + " must be positive (mm)");
+  if (value > kLargestPart)
+    throw InputError(what + " = " + number(value) + " mm is larger than a test part's " + number(kLargestPart) + " mm");
+}
+
+// An angle of the part's shape, in degrees, within [low, high] (beyond, the shape is not the part any more).
+void angleWithin(double value, double low, double high, const std::string& what, const std::string& why) {
+  if (!(value >= low && value <= high))
+    throw InputError(what + " = " + number(value) + "° must be in [" + number(low) + "°, " + number(high) + "°]: " + why);
+}
+
+double volumeOf(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(shape, props);
+  return props.Mass();
 }
 
 TopoDS_Shape unified(const TopoDS_Shape& shape) {
@@ -99,6 +117,14 @@ PartAndStock impeller(const ImpellerParameters& p) {
   positive(p.channelHeight, "channel height");
   positive(p.thickness, "blade thickness");
   positive(p.baseThickness, "base thickness");
+  positive(p.outletRadius, "outlet radius");
+  // Beyond these the blades leave the channel (a lean past 30°: no blade between hub and shroud, the boolean
+  // gives nothing or the blank), or wrap about the axis so far that the booleans take minutes.
+  angleWithin(p.leanDeg, -30.0, 30.0, "blade lean", "the blade must stand between hub and shroud (the paper's 20°)");
+  angleWithin(p.wrapDeg, -120.0, 120.0, "blade wrap", "a blade turns at most a third of a turn from inlet to outlet");
+  if (p.outletRadius > 20.0 * p.hubInletRadius)
+    throw InputError("outlet radius " + number(p.outletRadius) + " mm is more than 20 times the hub inlet radius " +
+                     number(p.hubInletRadius) + " mm: the blades would be slivers at the inlet");
   const double a = p.outletRadius - p.hubInletRadius, b = p.height, h = p.channelHeight;
   if (!(a > h && b > h)) throw InputError("the channel height must be less than the hub's radial and axial extent");
   if (!(p.thickness * p.blades < 2.0 * M_PI * p.hubInletRadius * 0.5))
@@ -150,6 +176,12 @@ PartAndStock impeller(const ImpellerParameters& p) {
   PartAndStock r;
   r.part = unified(common.Shape());
   r.stock = blank;
+  // What the booleans gave is an impeller: a hub with blades on it, inside its blank and not the blank.
+  const double part = volumeOf(r.part), hubOnly = volumeOf(BRepAlgoAPI_Common(hubBody, blank).Shape()), stock = volumeOf(blank);
+  if (!(part > hubOnly * (1.0 + 1e-4) && part < stock * (1.0 - 1e-4)))
+    throw ComputationError("the impeller built with these parameters has no blades between hub and shroud (part " +
+                           number(part) + " mm³, hub " + number(hubOnly) + " mm³, blank " + number(stock) +
+                           " mm³): a smaller lean or wrap, thinner blades");
   return r;
 }
 

@@ -344,6 +344,18 @@ CASES = [
            "ValueError", "line 2: A200 is outside the travel of A"),
     raises("an A word of -500 degrees on the LinuxCNC trunnion", "h.simulate('G1 X10 A-500 F2000\\n', 'linuxcnc-2.9-xyzac-trt')",
            "ValueError", "line 1: A-500 is outside the travel of A"),
+    raises("impeller blade lean 45 deg (no blades)", "from hsmplanner import roughing as r\nr.impeller(lean_deg=45)",
+           "ValueError", "blade lean = 45° must be in [-30°, 30°]"),
+    raises("impeller blade lean NaN", "from hsmplanner import roughing as r\nr.impeller(lean_deg=float('nan'))",
+           "ValueError", "blade lean = nan° must be in [-30°, 30°]"),
+    raises("impeller wrap 720 deg (ran minutes)", "from hsmplanner import roughing as r\nr.impeller(wrap_deg=720)",
+           "ValueError", "blade wrap = 720° must be in [-120°, 120°]"),
+    raises("impeller outlet radius 1e5 mm", "from hsmplanner import roughing as r\nr.impeller(outlet_radius=1e5)",
+           "ValueError", "outlet radius = 100000 mm is larger than a test part's 1000 mm"),
+    raises("impeller outlet 30 times the hub inlet", "from hsmplanner import roughing as r\nr.impeller(outlet_radius=300)",
+           "ValueError", "more than 20 times the hub inlet radius"),
+    raises("slanted slot block 1e6 mm long", "from hsmplanner import roughing as r\nr.slanted_slot_block(length=1e6)",
+           "ValueError", "length = 1e+06 mm is larger than a test part's 1000 mm"),
     holds("a 5-axis block turning C 1e9 degrees is bounded work", "result = h.simulate('TRAORI\\nG1 X1 C999999999 F100\\n', "
           "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),    # --- material removal and joined regions (issue 17): absurd settings, bounded work ----------------------
     raises("removal resolution NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=float('nan'))",

@@ -52,11 +52,11 @@ IMPELLER_PARAMETERS = [
 
 # Property ranges (mm, degrees): beyond them the core would build a part nobody machines, or take minutes.
 # The core checks what depends on several values (the slot fits the block, the blades fit the inlet).
-SLOT_LIMITS = {"Length": (1.0, 2000.0), "Width": (1.0, 2000.0), "Height": (1.0, 2000.0), "SlotWidth": (0.5, 2000.0),
-               "SlotDepth": (0.5, 2000.0), "Tilt": (0.0, 59.0)}
-IMPELLER_LIMITS = {"Blades": (2, 24), "HubInletRadius": (1.0, 1000.0), "OutletRadius": (2.0, 2000.0),
-                   "Height": (1.0, 1000.0), "ChannelHeight": (0.5, 500.0), "Lean": (-45.0, 45.0),
-                   "Wrap": (-180.0, 180.0), "Thickness": (0.1, 100.0), "BaseThickness": (0.5, 500.0)}
+SLOT_LIMITS = {"Length": (1.0, 1000.0), "Width": (1.0, 1000.0), "Height": (1.0, 1000.0), "SlotWidth": (0.5, 1000.0),
+               "SlotDepth": (0.5, 1000.0), "Tilt": (0.0, 59.0)}
+IMPELLER_LIMITS = {"Blades": (2, 24), "HubInletRadius": (1.0, 500.0), "OutletRadius": (2.0, 1000.0),
+                   "Height": (1.0, 1000.0), "ChannelHeight": (0.5, 500.0), "Lean": (-30.0, 30.0),
+                   "Wrap": (-120.0, 120.0), "Thickness": (0.1, 100.0), "BaseThickness": (0.5, 500.0)}
 
 
 def _value(quantity):
