@@ -10,6 +10,7 @@ import tempfile
 import FreeCAD
 import FreeCADGui as Gui
 import numpy as np
+from PySide2 import QtCore
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_harness import OUT, GuiRun  # noqa: E402

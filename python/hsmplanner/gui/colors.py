@@ -27,4 +27,5 @@ FACE_CLASS_TIPS = ["stock skin: the tool may pass through it",
                    "a face of the part that sees the stock skin (a hub, a slot's floor): slices may follow it",
                    "any other face of the part (blade sides, slot walls)"]
 SLICE_COLORS = list(_PALETTE.SLICE_COLORS)
-SLICE_LABELS = ["even slices (0, 2, …)", "odd slices (1, 3, …)"]
+# ASCII: the 3D view's legend font (Coin's SoText2) has no "…" and drew "&" for it.
+SLICE_LABELS = ["even slices (0, 2, 4...)", "odd slices (1, 3, 5...)"]

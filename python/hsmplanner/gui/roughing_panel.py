@@ -36,6 +36,9 @@ def _swatch(color, tip=""):
     return swatch
 
 
+ERROR_STYLE = "color: #b00000;"
+
+
 class Legend(QtWidgets.QWidget):
     """The colours of the view and what they mean: one swatch and label per class (or per slice parity)."""
 
@@ -144,7 +147,7 @@ class RoughingPanel(TaskPanel):
         layout.addWidget(self.compute_button)
         self.message = QtWidgets.QLabel()
         self.message.setWordWrap(True)
-        self.message.setStyleSheet("color: #b00000;")
+        self.message.setStyleSheet(ERROR_STYLE)
         layout.addWidget(self.message)
         self.legend_box = QtWidgets.QGroupBox("Colours in the 3D view")  # near the top: always in sight
         legend_layout = QtWidgets.QVBoxLayout(self.legend_box)
@@ -265,7 +268,7 @@ class RoughingPanel(TaskPanel):
             self.refresh()
             self.say("Choose the part and the stock.")
             return False
-        self.say("Computing…")
+        self.say("Computing…", error=False)
         QtWidgets.QApplication.processEvents()
         self.document.recompute()
         self.refresh()
@@ -280,7 +283,9 @@ class RoughingPanel(TaskPanel):
                 self.document.recompute()
         self.refresh()
 
-    def say(self, text):
+    def say(self, text, error=True):
+        """A message under the settings: red for what is wrong, plain for what is going on."""
+        self.message.setStyleSheet(ERROR_STYLE if error else "")
         self.message.setText(text)
         self.message.setVisible(bool(text))
 

@@ -176,9 +176,10 @@ class RoughingStudyPanel(TaskPanel):
                     break
                 self.results.append(result)
             else:
-                self.form.status.setText("%d strategies at %.2f mm, all %d regions joined, %s at F%g."
+                count = len(removal_volume.solids)
+                self.form.status.setText("%d strategies at %.2f mm, %s joined, %s at F%g."
                                          % (len(self.results), self.form.resolution.value(),
-                                            len(removal_volume.solids), tool_name, feed))
+                                            "1 region" if count == 1 else "all %d regions" % count, tool_name, feed))
         self.fill_table()
         self.plots.redraw()
 
