@@ -183,6 +183,19 @@ class VolumeRoughing(unittest.TestCase):
         finally:
             FreeCAD.closeDocument(document.Name)
 
+    def test_a_feed_rate_analysis_of_the_op_takes_its_machine(self):
+        # Its A/C are the Mikron trunnion's: the analysis starts there, not on the 3-axis default.
+        from hsmplanner.app import feedrate_object
+        analysis = feedrate_object.create(self.op)
+        try:
+            self.assertEqual(analysis.Machine, self.op.Machine)
+            self.assertGreater(analysis.TotalTime, 0.0)
+            self.assertEqual(feedrate_object.create(self.job, document=self.document).Machine, self.op.Machine)
+        finally:
+            for obj in [o for o in self.document.Objects if o.TypeId == analysis.TypeId and o.Name.startswith(
+                    "FeedRateAnalysis")]:
+                self.document.removeObject(obj.Name)
+
     def test_the_cutter_comes_from_the_tool(self):
         cutter = roughing_op.cutter_of(self.controller.Tool)
         self.assertEqual(cutter.kind.name, "torus")

@@ -76,10 +76,24 @@ class FeedRateAnalysis(InMemoryResult):
         obj.TotalTime = 0.0  # last: the view provider redraws on it (an empty map)
 
 
-def create(source, machine=DEFAULT_MACHINE, document=None, name="FeedRateAnalysis"):
-    """Add a feed-rate analysis of `source` (a Job or an operation) on `machine`, recomputed."""
+def source_machine(source):
+    """The Machine the operation `source` (or every operation of the Job `source`) was computed for: its A/B/C
+    are that machine's angles. None when none says, or they differ."""
+    from .posts.writer import operations_machine
+
+    group = getattr(getattr(source, "Operations", None), "Group", None)
+    try:
+        return operations_machine(group if group is not None else [source])
+    except ValueError:
+        return None
+
+
+def create(source, machine=None, document=None, name="FeedRateAnalysis"):
+    """Add a feed-rate analysis of `source` (a Job or an operation) on `machine` (default: the Machine its
+    operations were computed for, else the 3-axis default), recomputed."""
     if not is_simulatable(source):
         raise ValueError("%s is not a Path/CAM Job or operation" % getattr(source, "Label", source))
+    machine = machine or source_machine(source) or DEFAULT_MACHINE
     document = document or source.Document
     obj = document.addObject(TYPE_NAME, name)
     FeedRateAnalysis(obj)
