@@ -111,6 +111,14 @@ def roughing_controller(job, chosen=None):
     return controller
 
 
+RESULTS = [("Passes", "App::PropertyInteger", "passes of the last computation"),
+           ("CuttingLength", "App::PropertyLength", "cutting path of the last computation"),
+           ("ClosestApproach", "App::PropertyLength", "least distance from the tool to the part, checked independently"),
+           ("RegionsSwept", "App::PropertyInteger", "regions of the volume swept and joined"),
+           ("RapidsFed", "App::PropertyInteger",
+            "approaches that would have cut stock left as rapids, fed into it instead")]
+
+
 class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
     LIMITS = LIMITS
 
@@ -131,15 +139,17 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         obj.Allowance = _DEFAULTS.allowance
         obj.addProperty("App::PropertyAngle", "RampAngle", "Roughing", "entries into material ramp at most this steep")
         obj.RampAngle = _DEFAULTS.ramp_angle_deg
-        for name, kind, tip in (("Passes", "App::PropertyInteger", "passes of the last computation"),
-                                ("CuttingLength", "App::PropertyLength", "cutting path of the last computation"),
-                                ("ClosestApproach", "App::PropertyLength",
-                                 "least distance from the tool to the part, checked independently"),
-                                ("RegionsSwept", "App::PropertyInteger", "regions of the volume swept and joined"),
-                                ("RapidsFed", "App::PropertyInteger",
-                                 "approaches that would have cut stock left as rapids, fed into it instead")):
-            obj.addProperty(kind, name, "Result", tip)
-            obj.setEditorMode(name, 1)
+        self.add_results(obj)
+
+    def add_results(self, obj):
+        """The Result properties, those a document saved before them lacks too."""
+        for name, kind, tip in RESULTS:
+            if name not in obj.PropertiesList:
+                obj.addProperty(kind, name, "Result", tip)
+                obj.setEditorMode(name, 1)
+
+    def opOnDocumentRestored(self, obj):
+        self.add_results(obj)
 
     def opSetDefaultValues(self, obj, job):
         obj.ToolController = roughing_controller(job, obj.ToolController)
@@ -186,9 +196,8 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         obj.Passes = passes
         obj.CuttingLength = length
         obj.ClosestApproach = max(0.0, report.minimum)
-        if hasattr(obj, "RegionsSwept"):
-            obj.RegionsSwept = len(partitions)
-            obj.RapidsFed = len(fed)
+        obj.RegionsSwept = len(partitions)
+        obj.RapidsFed = len(fed)
 
 
 def SetupProperties():
