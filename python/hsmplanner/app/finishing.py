@@ -9,6 +9,7 @@ import Path
 import hsmplanner
 from hsmplanner.toolpaths import face_number
 
+from .job_controllers import usable_or_added
 from .compat import cam_menu_name, cam_module
 from .guide_curve_net_object import net_curve_edges
 
@@ -95,18 +96,12 @@ def finishing_controller(job, chosen=None):
     with a feed, else the Job's first such controller, else a new Ø4 mm ball end at F4000 added to the Job
     (and said in the report view). FreeCAD's default controller, a Ø5 mm flat end mill with feeds of 0, would
     only make the operation fail."""
-    if chosen is not None and is_usable(chosen):
-        return chosen
-    usable = [controller for controller in job.Tools.Group if is_usable(controller)]
-    if usable:
-        return usable[0]
-    number = 1 + max([getattr(c, "ToolNumber", 0) for c in job.Tools.Group], default=0)
-    controller = ball_end_controller(job, number=number, replace=False, **DEFAULT_BALL_END)
-    FreeCAD.Console.PrintMessage(
-        "%s had no ball end mill with a feed: added '%s' (Ø%g mm, F%g mm/min, S%g); change it in the Job's "
-        "tool controllers\n" % (job.Label, controller.Label, DEFAULT_BALL_END["diameter"],
-                                DEFAULT_BALL_END["feed_mm_min"], DEFAULT_BALL_END["spindle_rpm"]))
-    return controller
+    def add(job, number):
+        return (ball_end_controller(job, number=number, replace=False, **DEFAULT_BALL_END),
+                "Ø%g mm, F%g mm/min, S%g" % (DEFAULT_BALL_END["diameter"], DEFAULT_BALL_END["feed_mm_min"],
+                                             DEFAULT_BALL_END["spindle_rpm"]))
+
+    return usable_or_added(job, chosen, is_usable, add, "ball end mill with a feed")
 
 
 def moves_to_commands(moves, feed, plunge_feed=None):

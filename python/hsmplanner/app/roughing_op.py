@@ -12,6 +12,7 @@ import FreeCAD
 from hsmplanner import feedsim, roughing
 
 from .compat import cam_module
+from .job_controllers import usable_or_added
 from .op_comments import mend_leading_comments
 from .property_limits import PropertyLimits
 from .roughing_commands import sweep_commands
@@ -96,19 +97,12 @@ def roughing_controller(job, chosen=None):
     """The tool controller a new Volume roughing takes: `chosen` (FreeCAD's pick) if roughing can use it, else
     the Job's first such, else the paper's Ø8 r1 torus at F2000 added to the Job (and said in the Report
     view): FreeCAD's default controller has feeds of 0 and would only make the operation fail."""
-    if chosen is not None and is_roughing_controller(chosen):
-        return chosen
-    usable = [controller for controller in job.Tools.Group if is_roughing_controller(controller)]
-    if usable:
-        return usable[0]
-    number = 1 + max([getattr(c, "ToolNumber", 0) for c in job.Tools.Group], default=0)
-    controller = torus_controller(job, number=number, replace=False, **DEFAULT_TORUS)
-    FreeCAD.Console.PrintMessage(
-        "%s had no roughing cutter with a feed: added '%s' (Ø%g r%g mm torus, F%g mm/min, S%g); change it in the "
-        "Job's tool controllers\n" % (job.Label, controller.Label, DEFAULT_TORUS["diameter"],
-                                      DEFAULT_TORUS["corner_radius"], DEFAULT_TORUS["feed_mm_min"],
-                                      DEFAULT_TORUS["spindle_rpm"]))
-    return controller
+    def add(job, number):
+        return (torus_controller(job, number=number, replace=False, **DEFAULT_TORUS),
+                "Ø%g r%g mm torus, F%g mm/min, S%g" % (DEFAULT_TORUS["diameter"], DEFAULT_TORUS["corner_radius"],
+                                                       DEFAULT_TORUS["feed_mm_min"], DEFAULT_TORUS["spindle_rpm"]))
+
+    return usable_or_added(job, chosen, is_roughing_controller, add, "roughing cutter with a feed")
 
 
 RESULTS = [("Passes", "App::PropertyInteger", "passes of the last computation"),
