@@ -96,6 +96,7 @@ bench: build
 	$(BUILD_DIR)/bin/bench_roughing
 	test ! -x $(BUILD_DIR)/bin/bench_removal_models || $(BUILD_DIR)/bin/bench_removal_models
 	scripts/run-freecadcmd.sh tests/bench/bench_finishing.py
+	scripts/run-freecadcmd.sh tests/bench/bench_partition.py
 	scripts/run-freecadcmd.sh tests/bench/bench_study.py
 
 clean:

@@ -1,7 +1,7 @@
 // OCCT's long operations (booleans, the splitter) report progress and stop on request through a
 // Message_ProgressIndicator: this one forwards their progress to the core's callback, mapped into
 // [from, to] of the caller's work, and asks OCCT to stop when the callback says cancel. OCCT then returns with
-// errors; the caller checks cancelled() and throws hsm::Cancelled (never through OCCT's frames).
+// errors; the caller's throwIfStopped throws hsm::Cancelled (never through OCCT's frames).
 #pragma once
 
 #include "common/progress.hpp"
@@ -11,6 +11,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
 
 namespace hsm {
 
@@ -19,24 +21,45 @@ public:
   OcctProgress(ProgressCallback callback, double from, double to)
       : callback_(std::move(callback)), from_(from), to_(to) {}
 
-  bool cancelled() const { return cancelled_; }
+  // After OCCT returns: throws what the callback threw (a Python error), or Cancelled when it said stop.
+  void throwIfStopped(const std::string& what) const {
+    if (error_) std::rethrow_exception(error_);
+    if (cancelled_) throw Cancelled(what);
+  }
 
 protected:
-  // OCCT calls Show under its own mutex, so the callback is never entered twice at once.
-  void Show(const Message_ProgressScope&, const Standard_Boolean force) override {
+  void Show(const Message_ProgressScope&, const Standard_Boolean force) override { ask(force); }
+  // OCCT asks this between steps that need not report (one face pair's intersection, a loop of its threads):
+  // asking the callback here too hears a cancel within its 0.1 s, where Show may not come for long.
+  Standard_Boolean UserBreak() override {
+    ask(false);
+    return cancelled_;
+  }
+
+private:
+  // The callback at most every 0.1 s, never entered twice at once (OCCT's threads call UserBreak together):
+  // a thread that finds it busy goes on.
+  void ask(bool force) {
     if (!callback_ || cancelled_) return;
+    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock()) return;
     const auto now = std::chrono::steady_clock::now();
     if (!force && shown_ && now - last_ < std::chrono::milliseconds(100)) return;
     shown_ = true;
     last_ = now;
-    if (!callback_(from_ + (to_ - from_) * GetPosition())) cancelled_ = true;
+    try {
+      if (!callback_(from_ + (to_ - from_) * GetPosition())) cancelled_ = true;
+    } catch (...) {  // never through OCCT's frames
+      error_ = std::current_exception();
+      cancelled_ = true;
+    }
   }
-  Standard_Boolean UserBreak() override { return cancelled_; }
 
-private:
   ProgressCallback callback_;
   double from_, to_;
   std::atomic<bool> cancelled_{false};
+  std::mutex mutex_;
+  std::exception_ptr error_;
   bool shown_ = false;
   std::chrono::steady_clock::time_point last_;
 };

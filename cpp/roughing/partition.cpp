@@ -117,6 +117,114 @@ TopoDS_Face faceOf(const RemovalSolid& s, int index) {
 
 constexpr double kSliverMm = 0.01;
 
+namespace {
+
+int faceCount(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  return faces.Extent();
+}
+
+// "0.25": a step rounded up to two significant digits, so that the step a message offers fits.
+double roundedUp(double step) {
+  const double unit = std::pow(10.0, std::floor(std::log10(step)) - 1.0);
+  return std::ceil(step / unit - 1e-9) * unit;
+}
+
+// Estimated seconds of splitting the volume by `surfaces` of the family (SlicingFamily::crossingCost).
+double splitSeconds(double surfaces, const SlicingFamily& family, int faces) {
+  return surfaces * faces * family.crossingCost() + 0.5 * surfaces * (surfaces - 1.0) * family.pairCost();
+}
+
+// The most surfaces whose split is estimated within kMaxPartitionSeconds.
+double surfacesThatFit(const SlicingFamily& family, int faces) {
+  const double a = 0.5 * family.pairCost(), b = faces * family.crossingCost() - a;
+  if (!(a > 0.0)) return std::floor(kMaxPartitionSeconds / b);
+  return std::floor((-b + std::sqrt(b * b + 4.0 * a * kMaxPartitionSeconds)) / (2.0 * a));
+}
+
+// How many slices of `step` the extent makes, refused when there are more than kMaxSlices or when splitting
+// the volume by their surfaces is estimated beyond kMaxPartitionSeconds (its time and memory grow with the
+// surfaces, the faces each may cross, and how hard the surfaces are to intersect).
+int sliceCount(double extent, double step, const SlicingFamily& family, int faces, Strategy strategy) {
+  // A last layer thinner than kSliverMm is the depth's measuring error (offset meridians are polylines), not
+  // material: it goes with the layer above.
+  const double slices = std::max(1.0, std::ceil((extent - kSliverMm) / step));
+  if (slices > kMaxSlices)
+    throw InputError("step " + number(step) + " mm gives " + number(slices) + " slices (more than " +
+                     std::to_string(kMaxSlices) + "): use a step of at least " +
+                     number(roundedUp(extent / kMaxSlices)) + " mm");
+  const double seconds = splitSeconds(slices - 1.0, family, faces);
+  if (seconds > kMaxPartitionSeconds) {
+    const double fit = std::max(1.0, surfacesThatFit(family, faces));
+    throw InputError("step " + number(step) + " mm cuts this volume of " + std::to_string(faces) + " faces by " +
+                     number(slices - 1.0) + " " + strategyName(strategy).substr(3) + ": about " +
+                     number(std::round(seconds)) + " s of splitting on a 2-core machine, more than the " +
+                     number(kMaxPartitionSeconds) + " s a partition may take; use a step of at least " +
+                     number(roundedUp(extent / (fit + 1.0))) + " mm");
+  }
+  return static_cast<int>(slices);
+}
+
+// The solid split by the family's surfaces at every step from `low` (all at once: BRepAlgoAPI_Splitter).
+TopoDS_Shape splitBySurfaces(const TopoDS_Solid& solid, const SlicingFamily& family, double low, double step,
+                             int count, Strategy strategy, const ProgressCallback& progress,
+                             ProgressReporter& reporter) {
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(solid);
+  for (int k = 1; k < count; ++k) {
+    tools.Append(family.surfaceAt(low + k * step));
+    reporter(0.15 + 0.05 * k / count);
+  }
+  if (tools.IsEmpty()) return solid;
+  BRepAlgoAPI_Splitter splitter;
+  splitter.SetArguments(arguments);
+  splitter.SetTools(tools);
+  Handle(OcctProgress) occtProgress = new OcctProgress(progress, 0.2, 0.7);
+  splitter.Build(occtProgress->Start());
+  occtProgress->throwIfStopped("partition");
+  if (!splitter.IsDone() || splitter.HasErrors())
+    throw ComputationError("OCCT could not split the volume by the " + strategyName(strategy) + " surfaces");
+  return splitter.Shape();
+}
+
+// Each piece of the split to its slice, by the depths its boundary spans: a piece between two consecutive
+// surfaces spans at most a step, and the middle of its span lies in its slice. A piece that spans more holds a
+// surface OCCT left uncut, and is an error rather than a slice with the material of several.
+std::map<int, std::vector<TopoDS_Shape>> piecesBySlice(const TopoDS_Shape& pieces, const SlicingFamily& family,
+                                                      double low, double step, int count, Strategy strategy,
+                                                      ProgressReporter& reporter) {
+  std::vector<TopoDS_Shape> solids;
+  for (TopExp_Explorer it(pieces, TopAbs_SOLID); it.More(); it.Next()) solids.push_back(it.Current());
+  std::map<int, std::vector<TopoDS_Shape>> bySlice;
+  for (size_t i = 0; i < solids.size(); ++i) {
+    const TopoDS_Shape& piece = solids[i];
+    if (!BRepCheck_Analyzer(piece).IsValid())
+      throw ComputationError("a piece of the " + strategyName(strategy) + " split is not a valid solid: try another step");
+    const auto [from, to] = family.depthRange(piece);
+    const double slack = std::max(kSliverMm, 0.05 * step) + 2e-3 * (to - from);
+    if (to - from > step + slack)
+      throw ComputationError("OCCT's splitter left the " + strategyName(strategy) + " surfaces between depths " +
+                             number(from - low) + " and " + number(to - low) +
+                             " mm uncut (one piece spans them): try another step");
+    const int slice = std::clamp(static_cast<int>(std::floor((0.5 * (from + to) - low) / step)), 0, count - 1);
+    bySlice[slice].push_back(piece);
+    reporter(0.7 + 0.2 * (i + 1) / solids.size());
+  }
+  return bySlice;
+}
+
+TopoDS_Shape compoundOf(const std::vector<TopoDS_Shape>& shapes) {
+  if (shapes.size() == 1) return shapes.front();
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const TopoDS_Shape& s : shapes) builder.Add(compound, s);
+  return compound;
+}
+
+}  // namespace
+
 Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strategy strategy,
                     const PartitionSettings& settings) {
   if (solid.solid.IsNull()) throw InputError("the volume to remove is empty: compute it from a stock and a part first");
@@ -151,55 +259,16 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
   if (settings.step > extent)
     throw InputError("step " + number(settings.step) + " mm is larger than the volume's extent of " + number(extent) +
                      " mm along the slicing surfaces: nothing to slice; use a step up to " + number(extent) + " mm");
-  // A last layer thinner than kSliverMm is the depth's measuring error (offset meridians are polylines), not
-  // material: it goes with the layer above.
-  const double slices = std::max(1.0, std::ceil((extent - kSliverMm) / settings.step));
-  if (slices > kMaxSlices)
-    throw InputError("step " + number(settings.step) + " mm gives " + number(slices) + " slices (more than " +
-                     std::to_string(kMaxSlices) + "): use a step of at least " + number(extent / kMaxSlices) + " mm");
-  const int count = static_cast<int>(slices);
+  const int count = sliceCount(extent, settings.step, *family, faceCount(solid.solid), strategy);
+  reporter(0.15);
 
-  // All the cutting surfaces at once (BRepAlgoAPI_Splitter), each sized beyond the volume.
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(solid.solid);
-  for (int k = 1; k < count; ++k) tools.Append(family->surfaceAt(low + k * settings.step));
-  reporter(0.19);  // the surfaces are built; OCCT's splitter reports 0.2 to 0.7
-  TopoDS_Shape pieces = solid.solid;
-  if (!tools.IsEmpty()) {
-    BRepAlgoAPI_Splitter splitter;
-    splitter.SetArguments(arguments);
-    splitter.SetTools(tools);
-    Handle(OcctProgress) occtProgress = new OcctProgress(settings.progress, 0.2, 0.7);
-    splitter.Build(occtProgress->Start());
-    if (occtProgress->cancelled()) throw Cancelled("partition");
-    if (!splitter.IsDone() || splitter.HasErrors())
-      throw ComputationError("OCCT could not split the volume by the " + strategyName(strategy) + " surfaces");
-    pieces = splitter.Shape();
-  }
+  const TopoDS_Shape pieces =
+      splitBySurfaces(solid.solid, *family, low, settings.step, count, strategy, settings.progress, reporter);
   reporter(0.7);
-
-  // Each piece to the slice its inside point lies in; a slice's pieces as one compound.
-  std::map<int, std::vector<TopoDS_Shape>> bySlice;
-  for (TopExp_Explorer it(pieces, TopAbs_SOLID); it.More(); it.Next()) {
-    const double depth = family->depth(insidePoint(it.Current()));
-    const int slice = std::clamp(static_cast<int>(std::floor((depth - low) / settings.step)), 0, count - 1);
-    bySlice[slice].push_back(it.Current());
-  }
-  for (auto& [slice, shapes] : bySlice) {
+  for (auto& [slice, shapes] : piecesBySlice(pieces, *family, low, settings.step, count, strategy, reporter)) {
     SubVolume sub;
     sub.slice = slice;
-    if (shapes.size() == 1) {
-      sub.shape = shapes.front();
-    } else {
-      TopoDS_Compound compound;
-      BRep_Builder builder;
-      builder.MakeCompound(compound);
-      for (const TopoDS_Shape& s : shapes) builder.Add(compound, s);
-      sub.shape = compound;
-    }
-    for (const TopoDS_Shape& s : shapes)
-      if (!BRepCheck_Analyzer(s).IsValid())
-        throw ComputationError("slice " + std::to_string(slice) + " of " + strategyName(strategy) + " is not a valid solid");
+    sub.shape = compoundOf(shapes);
     sub.volume = volumeOf(sub.shape);
     sub.surface = family->surfaceDescription(low + slice * settings.step, result.referenceFace);
     family->axisField(sub.shape, low + slice * settings.step, sub.axisPoints, sub.axisDirections);
@@ -209,6 +278,7 @@ Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strateg
       for (Eigen::Vector3d& axis : sub.axisDirections) axis = -axis;
     result.volume += sub.volume;
     result.subVolumes.push_back(std::move(sub));
+    reporter(0.9 + 0.1 * result.subVolumes.size() / count);
   }
   if (std::abs(result.volume - solid.volume) > kVolumeTolerance * solid.volume)
     throw ComputationError("the sub-volumes of " + strategyName(strategy) + " add up to " + number(result.volume) +

@@ -79,6 +79,9 @@ struct VolumeToRemove {
 inline constexpr double kVolumeTolerance = 1e-6;
 inline constexpr double kFuzzyValue = 1e-5;     // mm, the retry's fuzzy value
 inline constexpr int kMaxSlices = 2000;
+// A partition's estimated work, in seconds of OCCT's splitter on a 2-core machine of 2026 (from the number of
+// slicing surfaces, the volume's faces and the kind of surface): beyond it the step that fits is offered.
+inline constexpr double kMaxPartitionSeconds = 60.0;
 
 // stock − part. InputError for a part or stock that is not a closed valid solid, a stock that does not contain
 // the part, nothing to remove; ComputationError when the boolean fails (also silently: volumes that do not add
@@ -142,7 +145,9 @@ struct Partition {
 
 // The solid cut into sub-volumes by the strategy's surfaces. InputError for a step ≤ 0 or larger than the
 // volume, a strategy whose reference face does not exist on this solid (S1 without a planar crossable face,
-// S2 without a cylindrical one, S5 without a facing_crossable face), too many slices (kMaxSlices).
+// S2 without a cylindrical one, S5 without a facing_crossable face), too many slices (kMaxSlices) or too much
+// work (kMaxPartitionSeconds), each naming the step that fits; ComputationError when OCCT's split is invalid or
+// leaves a surface uncut. Cancelled when the progress callback says stop.
 Partition partition(const RemovalSolid& solid, const TopoDS_Shape& part, Strategy strategy,
                     const PartitionSettings& settings = {});
 

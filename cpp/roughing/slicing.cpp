@@ -3,7 +3,6 @@
 
 #include "geometry/mesh.hpp"
 #include "roughing/meridian.hpp"
-#include "roughing/rays.hpp"
 
 #include "common/error.hpp"
 #include "common/text.hpp"
@@ -12,15 +11,12 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepGProp.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <GProp_GProps.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -37,6 +33,7 @@
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Sphere.hxx>
 
 #include <Eigen/Geometry>
 
@@ -124,6 +121,7 @@ public:
     Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(frame, r);
     return BRepBuilderAPI_MakeFace(cylinder, 0.0, 2.0 * M_PI, 0.0, 2.0 * box_.size, 1e-7).Face();
   }
+  double crossingCost() const override { return 0.03; }  // 500 coaxial cylinders of the impeller: 90 s
   SlicingSurface surfaceDescription(double d, int reference) const override {
     SlicingSurface s;
     s.kind = SurfaceKind::Cylinder;
@@ -171,6 +169,7 @@ public:
     Handle(Geom_Surface) offset = d == 0.0 ? extended_ : Handle(Geom_Surface)(new Geom_OffsetSurface(extended_, sign_ * d));
     return BRepBuilderAPI_MakeFace(offset, 1e-7).Face();
   }
+  double pairCost() const override { return 0.2; }  // offset B-splines: the slowest to intersect
   SlicingSurface surfaceDescription(double d, int reference) const override {
     SlicingSurface s;
     s.kind = SurfaceKind::Other;
@@ -250,6 +249,7 @@ public:
       throw ComputationError("the offset meridian at " + number(d) + " mm could not be revolved: use another step");
     return revolve.Shape();
   }
+  double pairCost() const override { return 0.066; }  // revolved B-splines (impeller S4 and S5)
   SlicingSurface surfaceDescription(double d, int reference) const override {
     SlicingSurface s;
     s.kind = SurfaceKind::Revolution;
@@ -274,6 +274,42 @@ public:
 private:
   Meridian meridian_;
   Eigen::Vector3d e1_;
+  Box box_;
+};
+
+// Concentric spheres: exact offsets of a sphere (the revolved fit of a meridian through both poles is slow to
+// split and can leave a surface uncut). Described as surfaces of revolution about the sphere's axis, so that the
+// sweep follows the sphere's meridian.
+class SphereFamily : public SlicingFamily {
+public:
+  SphereFamily(const gp_Sphere& sphere, const Eigen::Vector3d& inward, const Eigen::Vector3d& onFace, const Box& box)
+      : centre_(toEigen(sphere.Location().XYZ())), axis_(toEigen(sphere.Position().Direction().XYZ())),
+        radius_(sphere.Radius()), sign_(inward.dot(onFace - centre_) > 0.0 ? 1.0 : -1.0), box_(box) {}
+  double depth(const gp_Pnt& p) const override { return sign_ * ((toEigen(p.XYZ()) - centre_).norm() - radius_); }
+  TopoDS_Shape surfaceAt(double d) const override {
+    const double r = radius_ + sign_ * d;
+    if (!(r > 1e-6)) throw InputError("the concentric spheres reach the centre: use a larger step or another strategy");
+    return BRepBuilderAPI_MakeFace(gp_Sphere(gp_Ax3(toPoint(centre_), gp_Dir(axis_.x(), axis_.y(), axis_.z())), r)).Face();
+  }
+  SlicingSurface surfaceDescription(double d, int reference) const override {
+    SlicingSurface s;
+    s.kind = SurfaceKind::Revolution;
+    s.origin = centre_;
+    s.direction = axis_;
+    s.radius = radius_ + sign_ * d;
+    s.referenceFace = reference;
+    s.offset = d;
+    return s;
+  }
+  Eigen::Vector3d depthGradient(const Eigen::Vector3d& p, double) const override {
+    const Eigen::Vector3d radial = p - centre_;
+    if (!(radial.norm() > 1e-12)) return Eigen::Vector3d::Zero();
+    return sign_ * radial.normalized();
+  }
+
+private:
+  Eigen::Vector3d centre_, axis_;
+  double radius_, sign_;
   Box box_;
 };
 
@@ -351,28 +387,13 @@ std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_
   }
   if (surface.GetType() == GeomAbs_SurfaceOfRevolution)
     return std::make_unique<RevolutionFamily>(reference, surface.AxeOfRevolution(), box);
+  // A torus is a surface of revolution too: offsets of its meridian, where the general offset surface would
+  // make OCCT's splitter intersect offset B-splines (minutes, then invalid slices).
   if (surface.GetType() == GeomAbs_Cone) return std::make_unique<RevolutionFamily>(reference, surface.Cone().Axis(), box);
+  if (surface.GetType() == GeomAbs_Sphere) return std::make_unique<SphereFamily>(surface.Sphere(), inward, point, box);
+  if (surface.GetType() == GeomAbs_Torus)
+    return std::make_unique<RevolutionFamily>(reference, surface.Torus().Axis(), box);
   return std::make_unique<OffsetFamily>(reference, box);
-}
-
-gp_Pnt insidePoint(const TopoDS_Shape& solid) {
-  GProp_GProps props;
-  BRepGProp::VolumeProperties(solid, props);
-  const gp_Pnt centre = props.CentreOfMass();
-  BRepClass3d_SolidClassifier classifier(solid, centre, 1e-7);
-  if (classifier.State() == TopAbs_IN) return centre;
-  // Not convex: along lines through the centre, the middle of the first stretch inside.
-  const RayCaster rays(solid, 1e-7);
-  for (const gp_Dir& direction : {gp::DX(), gp::DY(), gp::DZ()}) {
-    std::vector<double> at;
-    for (const RayHit& hit : rays.all(gp_Lin(centre, direction), -1e12, 1e12)) at.push_back(hit.w);
-    if (at.size() < 2) continue;
-    for (size_t i = 0; i + 1 < at.size(); ++i) {
-      const gp_Pnt middle = centre.Translated(0.5 * (at[i] + at[i + 1]) * gp_Vec(direction));
-      if (BRepClass3d_SolidClassifier(solid, middle, 1e-7).State() == TopAbs_IN) return middle;
-    }
-  }
-  return centre;
 }
 
 }  // namespace hsm::roughing

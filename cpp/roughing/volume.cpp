@@ -285,7 +285,7 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
   std::string why;
   Handle(OcctProgress) cutProgress = new OcctProgress(progress, 0.1, 0.6);
   BRepAlgoAPI_Cut cut(stock, part, cutProgress->Start());
-  if (cutProgress->cancelled()) throw Cancelled("stock − part");
+  cutProgress->throwIfStopped("stock − part");
   BRepAlgoAPI_Cut fuzzy;
   BRepAlgoAPI_Cut* done = &cut;
   if (!checkedCut(cut, expected, why)) {
@@ -298,7 +298,7 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
     fuzzy.SetFuzzyValue(kFuzzyValue);
     Handle(OcctProgress) fuzzyProgress = new OcctProgress(progress, 0.6, 0.8);
     fuzzy.Build(fuzzyProgress->Start());
-    if (fuzzyProgress->cancelled()) throw Cancelled("stock − part");
+    fuzzyProgress->throwIfStopped("stock − part");
     if (!checkedCut(fuzzy, expected, why))
       throw ComputationError("stock − part failed: " + first + "; again with a fuzzy value of " + number(kFuzzyValue) +
                              " mm: " + why + ". Check both solids (Part ▸ Check geometry)");
