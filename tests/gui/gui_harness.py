@@ -103,15 +103,135 @@ class GuiRun:
                 break
             widget = QtWidgets.QApplication.activeModalWidget()
 
+    @staticmethod
+    def _ancestors(widget, kind):
+        """The widget's ancestors of a kind, nearest first."""
+        found = []
+        while widget is not None:
+            widget = widget.parentWidget()
+            if isinstance(widget, kind):
+                found.append(widget)
+        return found
+
     def check_fits_combo_view(self, name, form):
-        """The panel fits FreeCAD's default Combo View (its minimum width), and its widgets do not overflow
-        the width it is given there."""
+        """The panel as the user sees it in FreeCAD's Combo View at its default width (the dock is set to it):
+        the task view needs no horizontal scrolling, nothing sticks out of it (a button, a field), no label is
+        cut and no combo box's text is cut (a text drawn elided has its full text in the tool tip). Notes the
+        Combo View width the task view needs, and the form's own minimum width."""
         from hsmplanner.gui.task_panel import COMBO_VIEW_WIDTH
 
-        needed = form.minimumSizeHint().width()
-        self.notes.setdefault("minimum panel widths (px)", {})[name] = needed
-        self.check("%s fits the %d px Combo View" % (name, COMBO_VIEW_WIDTH), needed <= COMBO_VIEW_WIDTH,
-                   "needs %d px" % needed)
+        # the task view is the outermost scroll area in the dock (a panel's tool box scrolls its pages too)
+        docks = self._ancestors(form, QtWidgets.QDockWidget)
+        dock = docks[0] if docks else None
+        scrolls = [w for w in self._ancestors(form, QtWidgets.QScrollArea) if dock is not None and dock.isAncestorOf(w)]
+        scroll = scrolls[-1] if scrolls else None
+        if scroll is None:
+            self.check("%s is shown in the Combo View's task view" % name, False)
+            return
+        window = Gui.getMainWindow()
+        window.resizeDocks([dock], [COMBO_VIEW_WIDTH], QtCore.Qt.Horizontal)
+        # the dock takes the width over a few events; it stays wider when the panel's minimum needs more (the
+        # check below then fails, saying how much the panel needs)
+        self.process_events(0.5)
+        frame = dock.width() - scroll.viewport().width()
+        needed = scroll.widget().minimumSizeHint().width() + frame
+        widths = self.notes.setdefault("panel widths (px)", {})
+        widths[name] = {"Combo View needed": needed, "Combo View shown": dock.width(),
+                        "form minimum": form.minimumSizeHint().width()}
+        self.check("%s fits the %d px Combo View" % (name, COMBO_VIEW_WIDTH),
+                   needed <= COMBO_VIEW_WIDTH and dock.width() <= COMBO_VIEW_WIDTH
+                   and scroll.horizontalScrollBar().maximum() == 0,
+                   "needs %d px (hidden right of the view: %d px); widest: %s"
+                   % (needed, scroll.horizontalScrollBar().maximum(), self.widest(scroll.widget())))
+        cut = self.cut_texts(scroll)
+        self.check("%s: no text cut at %d px" % (name, COMBO_VIEW_WIDTH), not cut, str(cut[:6]))
+
+    @staticmethod
+    def widest(widget, count=6):
+        """The visible widgets under `widget` that need the most width (minimum size hint), to say what to narrow."""
+        hints = [(w.minimumSizeHint().width(), type(w).__name__, w.objectName(),
+                  (w.text() if hasattr(w, "text") and callable(w.text) else "")[:30])
+                 for w in widget.findChildren(QtWidgets.QWidget) if w.isVisible()]
+        return sorted(hints, key=lambda h: -h[0])[:count]
+
+    @staticmethod
+    def shown_text(combo):
+        """A combo box's current text as it is drawn (elided by ours, whole by Qt's)."""
+        return combo.shown_text() if hasattr(combo, "shown_text") else combo.currentText()
+
+    def cut_texts(self, scroll):
+        """What the visible widgets of a task view show cut: a widget past the view's right edge, a label or a
+        button narrower than its text, a combo box whose drawn text does not fit its field, or is elided with
+        no tool tip giving it whole."""
+        right = scroll.viewport().mapToGlobal(QtCore.QPoint(scroll.viewport().width(), 0)).x()
+        cut = []
+        for widget in scroll.widget().findChildren(QtWidgets.QWidget):
+            if not widget.isVisible() or widget.width() <= 0 or isinstance(widget, QtWidgets.QScrollBar):
+                continue
+            text = widget.text() if hasattr(widget, "text") and callable(widget.text) else ""
+            if widget.mapToGlobal(QtCore.QPoint(widget.width(), 0)).x() > right + 1:
+                cut.append("%s %r past the view's edge" % (type(widget).__name__, text or widget.objectName()))
+            elif isinstance(widget, QtWidgets.QLabel) and text and not widget.wordWrap():
+                if widget.contentsRect().width() + 1 < widget.sizeHint().width() - 2 * widget.margin():
+                    cut.append("label %r" % text)
+            elif isinstance(widget, (QtWidgets.QPushButton, QtWidgets.QCheckBox, QtWidgets.QRadioButton)) and text:
+                if widget.width() < self.button_text_width(widget):
+                    cut.append("button %r" % text)
+            elif isinstance(widget, QtWidgets.QComboBox):
+                cut += self._combo_cut(widget)
+        return cut
+
+    @staticmethod
+    def button_text_width(button):
+        """The width a button needs to show its text whole (a check box: with its box)."""
+        from hsmplanner.gui.task_panel import button_text_width
+
+        if not isinstance(button, (QtWidgets.QCheckBox, QtWidgets.QRadioButton)):
+            return button_text_width(button)
+        style = button.style()
+        box = style.pixelMetric(QtWidgets.QStyle.PM_IndicatorWidth) + style.pixelMetric(
+            QtWidgets.QStyle.PM_CheckBoxLabelSpacing)
+        return button.fontMetrics().horizontalAdvance(button.text().replace("&", "")) + box
+
+    def _combo_cut(self, combo):
+        shown, full = self.shown_text(combo), combo.currentText()
+        option = QtWidgets.QStyleOptionComboBox()
+        combo.initStyleOption(option)
+        field = combo.style().subControlRect(QtWidgets.QStyle.CC_ComboBox, option,
+                                             QtWidgets.QStyle.SC_ComboBoxEditField, combo)
+        if combo.fontMetrics().horizontalAdvance(shown) > field.width():
+            return ["combo box %r cut to %d px" % (full, field.width())]
+        if shown != full and full not in combo.toolTip():
+            return ["combo box %r elided without it in its tool tip" % full]
+        return []
+
+    def check_read_apart(self, name, combos):
+        """Combo boxes naming different objects read differently as drawn (not cut to one shared prefix)."""
+        shown = {self.shown_text(c): c.currentText() for c in combos}
+        fulls = {c.currentText() for c in combos}
+        self.notes.setdefault("names as drawn", {})[name] = sorted(shown)
+        self.check("%s: different names read apart as drawn" % name, len(shown) == len(fulls), str(shown))
+
+    def check_table_reads(self, name, table, key_columns):
+        """Every header of the table reads whole (with room for the sort arrow), every cell's text fits its
+        column, and the first `key_columns` columns are in view without scrolling."""
+        header, metrics = table.horizontalHeader(), table.fontMetrics()
+        style = header.style()
+        arrow = style.pixelMetric(QtWidgets.QStyle.PM_HeaderMarkSize) + 2 * style.pixelMetric(
+            QtWidgets.QStyle.PM_HeaderMargin)
+        headers = [table.horizontalHeaderItem(c).text() for c in range(table.columnCount())]
+        cut = [text for c, text in enumerate(headers)
+               if header.fontMetrics().horizontalAdvance(text) + arrow > header.sectionSize(c)]
+        cut += [table.item(r, c).text() for r in range(table.rowCount()) for c in range(table.columnCount())
+                if table.item(r, c) is not None
+                and metrics.horizontalAdvance(table.item(r, c).text()) + 6 > table.columnWidth(c)]  # cell margins
+        self.check("%s: headers and cells read whole" % name, not cut, str(cut[:6]))
+        table.horizontalScrollBar().setValue(0)
+        shown = [headers[c] for c in range(table.columnCount())
+                 if header.sectionViewportPosition(c) + header.sectionSize(c) <= table.viewport().width()]
+        self.notes.setdefault("table columns in view", {})[name] = shown
+        self.check("%s: the key columns %s in view" % (name, headers[:key_columns]), shown[:key_columns] ==
+                   headers[:key_columns], "in view: %s" % shown)
 
     def panel_plots(self, name, figure):
         """The panel's plots as the user sees them (the panel scrolls them out of the window's screenshot),
@@ -235,5 +355,13 @@ class GuiRun:
         self._watchdog_timer = watchdog
 
     def _watchdog(self):
-        self.failures.append("watchdog: the GUI run did not finish in %d s" % WATCHDOG_SECONDS)
+        """Ends a run that hangs, with what it shows (a screenshot, the active modal widget) and where the Python
+        code waits (the stacks, in the log): a modal dialog's loop or a wait that never ends."""
+        import faulthandler
+
+        modal = QtWidgets.QApplication.activeModalWidget()
+        self.failures.append("watchdog: the GUI run did not finish in %d s%s" % (
+            WATCHDOG_SECONDS, "; modal: %s %r" % (type(modal).__name__, modal.windowTitle()) if modal else ""))
+        faulthandler.dump_traceback(file=sys.__stderr__)
+        self.screenshot("watchdog")
         self.finish()

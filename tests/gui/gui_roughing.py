@@ -138,6 +138,7 @@ def panel_strategy_sub_volumes_and_cancel(run):
     run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "the Roughing volume panel open")
     p = panel()
     run.check_fits_combo_view("Roughing volume panel", p.form)
+    run.check_read_apart("Roughing volume panel's part and stock", [p.part, p.stock])
     run.check("panel shows the volume", "15360 mm³" in p.summary.text(), p.summary.text())
     run.check("legend of the classes", p.legend.labels == ["crossable", "facing crossable", "not crossable"],
               str(p.legend.labels))
@@ -338,6 +339,9 @@ def volume_roughing_operation_in_the_job(run):
     if forms:
         forms[0].volume.setCurrentText(slot.Label)
         forms[0].machine.setCurrentText(roughing_op.DEFAULT_MACHINE)
+        run.check_fits_combo_view("Volume roughing panel", forms[0])
+        run.check_read_apart("Volume roughing panel's tool, volume and machine",
+                             [forms[0].toolController, forms[0].volume, forms[0].machine])
     run.screenshot("volume_roughing_panel")
     Gui.Control.closeDialog()  # as Cancel: the operation stays, its Volume set from here
     run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
@@ -358,6 +362,71 @@ def volume_roughing_operation_in_the_job(run):
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("volume_roughing_path")
 
+
+
+def check_study_maps(study):
+    """The panel's stock maps: readable at the panel's width, each on its own scale (a strategy that leaves
+    little is not one dark colour beside one that leaves much), with a colour bar with numbers each."""
+    run.process_events(0.5)  # the canvas takes the height of the stacked maps over a few events
+    figure = study.plots.figure
+    run.panel_plots("roughing_study_maps", figure)
+    maps = [a for a in figure.axes if a.name == "3d"]
+    bars = [a for a in figure.axes if a.name != "3d"]
+    numbers = [[t.get_text() for t in bar.get_yticklabels() if t.get_text()] for bar in bars]
+    spread = [float(np.ptp(a.collections[0].get_facecolors()[:, :3], axis=0).max()) for a in maps]
+    run.notes["roughing study"]["maps"] = {"colour spread": [round(x, 2) for x in spread], "bar numbers": numbers}
+    run.check("a map per strategy, each with its colour bar", len(maps) == len(study.results) == len(bars),
+              "%d maps, %d bars" % (len(maps), len(bars)))
+    run.check("each colour bar has numbers", all(len(n) >= 2 for n in numbers), str(numbers))
+    run.check("each map's colours span its scale", all(x > 0.5 for x in spread), str(spread))
+
+
+def legend_texts(node):
+    """The strings of the SoText2 nodes under a scene node."""
+    from pivy import coin
+
+    search = coin.SoSearchAction()
+    search.setType(coin.SoText2.getClassTypeId())
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.apply(node)
+    paths = search.getPaths()
+    texts = [paths[i].getTail().string.getValues() for i in range(paths.getLength())]
+    return [t if isinstance(t, str) else t.getString() for values in texts for t in values]
+
+
+def check_stock_map_legend(legend, thickness):
+    """The 3D view's legend of the stock map: numbers in mm up to the map's scale, and, in the view as saved,
+    a colour bar in the map's colours with white numbers beside it (not an empty dark box)."""
+    from PySide2 import QtGui
+
+    from hsmplanner.gui.feedmap import LEGEND_X
+    from hsmplanner.gui.stock_map_view import LEGEND_SPAN, thickness_colors
+
+    labels = legend_texts(legend)
+    numbers = [float(t.split()[0]) for t in labels if t.endswith(" mm")]
+    top = float(np.percentile(thickness, 99))
+    run.notes["roughing study"]["3D legend"] = labels
+    run.check("the 3D legend numbers the scale up to the map's top", len(numbers) >= 3 and numbers == sorted(numbers)
+              and abs(numbers[-1] - top) <= 0.05 + 0.01 * top, "%s, top %.2f mm" % (labels, top))
+    path = os.path.join(OUT, "view3d_stock_map.png")
+    Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
+    run.screenshots.append(path)
+    image = QtGui.QImage(path).convertToFormat(QtGui.QImage.Format_RGB32)
+    pixels = np.frombuffer(image.constBits(), dtype=np.uint8, count=image.byteCount()).reshape(
+        image.height(), image.width(), 4)[:, :, [2, 1, 0]].astype(float) / 255.0
+    # the legend's place in the view's [-1, 1] square: the bar over LEGEND_X, the numbers right-aligned left of it
+    (x0, x1), (y0, y1) = LEGEND_X, LEGEND_SPAN
+    column_of, row_of = (lambda x: int(round((x + 1.0) / 2.0 * 900))), (lambda y: int(round((1.0 - y) / 2.0 * 700)))
+    column = pixels[row_of(y1) + 3:row_of(y0) - 3, column_of(0.5 * (x0 + x1))]
+    ends = thickness_colors([0.025, 0.975])
+    numbers_area = pixels[row_of(y1 + 0.03):row_of(y0 - 0.03), column_of(x0 - 0.09):column_of(x0 - 0.01)]
+    white = int(np.sum(numbers_area.min(axis=2) > 0.85))
+    run.notes["roughing study"]["3D legend pixels"] = {"bar ends": [column[-1].round(2).tolist(),
+                                                                    column[0].round(2).tolist()], "white": white}
+    run.check("the 3D legend draws its colour bar, dark at the bottom, light at the top",
+              np.abs(column[-1] - ends[0]).max() < 0.15 and np.abs(column[0] - ends[1]).max() < 0.15,
+              str(run.notes["roughing study"]["3D legend pixels"]))
+    run.check("the 3D legend draws its numbers", white > 30, "%d white pixels" % white)
 
 
 @run.step
@@ -401,6 +470,9 @@ def roughing_study_panel_runs_and_applies(run):
                   all(abs(shown[n][1] - measured[n][0]) < 1e-9 and abs(shown[n][2] - measured[n][1]) < 1e-9
                       for n in measured), "%s against %s" % (shown, measured))
     run.check("the stock maps are drawn", study.plots.window_button.isEnabled())
+    run.check_fits_combo_view("Roughing study panel", study.form)
+    run.check_table_reads("Roughing study table", table, roughing_study_panel.KEY_COLUMNS)
+    check_study_maps(study)
     run.screenshot("roughing_study_panel")
     table.selectRow(shown_rows()["S3"][0])
     run.check("the row labelled S3 is the one selected", study.selected() == "S3", str(study.selected()))
@@ -411,6 +483,8 @@ def roughing_study_panel_runs_and_applies(run):
     run.check("the selected strategy's stock map is drawn on the part", count > 100, "%d points" % count)
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("roughing_study_stock_map")
+    if node is not None:
+        check_stock_map_legend(node.getChild(node.getNumChildren() - 1), study.result_of("S3").stock_map[2])
     op = study.apply()
     status = study.form.status.text()
     run.notes["roughing study"]["applied"] = status

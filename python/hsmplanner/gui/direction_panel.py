@@ -7,7 +7,7 @@ from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM
 from hsmplanner.plots.direction import PREDICTED_TIME_NOTE, draw_direction_report
 
-from .task_panel import AnalysisPanel, PanelPlots, narrow_combo, selected_faces
+from .task_panel import AnalysisPanel, PanelPlots, narrow_combo, narrow_form_layout, selected_faces
 
 # (property, label, minimum, maximum, decimals, suffix): the numbers of the form, as the object holds them
 # (property, label, decimals, suffix); the ranges are the object's (direction_object.LIMITS).
@@ -90,11 +90,10 @@ class DirectionPanel(AnalysisPanel):
         self.plots = PanelPlots(layout, 760, self.draw_plots, "Machining direction: %s" % self.obj.Label,
                                 tooltip=PREDICTED_TIME_NOTE)
         self.figure = self.plots.figure
-        apply_row = QtWidgets.QHBoxLayout()
-        self.operations = narrow_combo()
+        apply_row = narrow_form_layout()  # the operation under the button when the panel is narrow
+        self.operations = narrow_combo(names=True)
         self.apply_button = QtWidgets.QPushButton("Set the angle of")
-        apply_row.addWidget(self.apply_button)
-        apply_row.addWidget(self.operations, 1)
+        apply_row.addRow(self.apply_button, self.operations)
         layout.addLayout(apply_row)
         self.message = QtWidgets.QLabel()
         self.message.setWordWrap(True)

@@ -73,11 +73,15 @@ def map_node(blocks, color_by):
     return root
 
 
-def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=feed_colors):
-    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates;
-    `colors(shares)` gives the RGB rows of shares of the scale in [0, 1]."""
+LEGEND_X = (0.86, 0.92)  # at the right edge of the view; the labels to the left of the bar
+LEGEND_SPAN = (-0.8, 0.4)  # below the navigation cube
+
+
+def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=feed_colors, span=LEGEND_SPAN):
+    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates, from
+    span[0] to span[1] in y; `colors(shares)` gives the RGB rows of shares of the scale in [0, 1]."""
     root = screen_root()
-    x0, x1, y0, y1 = 0.86, 0.92, -0.8, 0.4  # at the right edge, below the navigation cube; labels to the left
+    (x0, x1), (y0, y1) = LEGEND_X, span
     corners, corners_colors = [], []
     for k in range(LEGEND_STEPS):
         a, b = y0 + (y1 - y0) * k / LEGEND_STEPS, y0 + (y1 - y0) * (k + 1) / LEGEND_STEPS

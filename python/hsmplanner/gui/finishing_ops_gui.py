@@ -12,6 +12,7 @@ from hsmplanner.app import finishing, finishing_ops, roughing_commands, roughing
 from hsmplanner.app.compat import cam_module
 from hsmplanner.resources import icon
 
+from .task_panel import compact_buttons, narrow_combo, narrow_form_layout
 from .tip_path import TipPathView
 
 PathOpGui = cam_module("op_gui")
@@ -150,23 +151,30 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
 
     def getForm(self):
         form = QtWidgets.QWidget()
-        layout = QtWidgets.QFormLayout(form)
-        form.toolController = QtWidgets.QComboBox()
-        form.coolantController = QtWidgets.QComboBox()
-        form.volume = QtWidgets.QComboBox()
-        form.machine = QtWidgets.QComboBox()
+        layout = narrow_form_layout()
+        form.setLayout(layout)
+        form.toolController, form.volume, form.machine = (narrow_combo(names=True) for _ in range(3))
+        form.coolantController = narrow_combo()
+        form.toolController.setToolTip("the tool controller: a torus (bullnose), flat or ball end mill with a feed")
+        form.volume.setToolTip("the Roughing volume whose sub-volumes the passes cut (its strategy, S1-S5)")
         form.machine.setToolTip("the machine whose rotary axes the moves' A/B/C are: post with --machine=this")
         form.engagement = _spin(70.0, roughing_op.LIMITS["RadialEngagement"], decimals=0, suffix=" %")
+        form.engagement.setToolTip("radial engagement: the step between passes, % of the tool diameter")
         form.allowance = _spin(0.5, roughing_op.LIMITS["Allowance"], decimals=2)
+        form.allowance.setToolTip("stock left on the part for finishing")
         form.ramp = _spin(3.0, roughing_op.LIMITS["RampAngle"], decimals=1, suffix=" °")
+        form.ramp.setToolTip("entries into material ramp at most this steep")
+        for label, widget in (("Tool", form.toolController), ("Coolant", form.coolantController),
+                              ("Volume", form.volume), ("Machine", form.machine), ("Engagement", form.engagement),
+                              ("Allowance", form.allowance), ("Ramp angle", form.ramp)):
+            layout.addRow(label, widget)
         form.result = QtWidgets.QLabel()
         form.result.setWordWrap(True)
-        for label, widget in (("Tool controller", form.toolController), ("Coolant", form.coolantController),
-                              ("Roughing volume", form.volume), ("Machine", form.machine),
-                              ("Radial engagement", form.engagement), ("Allowance", form.allowance),
-                              ("Ramp angle", form.ramp), ("", form.result)):
-            layout.addRow(label, widget)
+        layout.addRow(form.result)  # the whole row: a label column would leave it half the width
         return form
+
+    def modifyStandardButtons(self, buttonBox):
+        compact_buttons(buttonBox)
 
     def volumes(self):
         return [o for o in FreeCAD.ActiveDocument.Objects
@@ -197,7 +205,7 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         self.form.engagement.setValue(obj.RadialEngagement)
         self.form.allowance.setValue(obj.Allowance.Value)
         self.form.ramp.setValue(obj.RampAngle.Value)
-        self.form.result.setText("%d passes, %.0f mm cutting; closest to the part %.3f mm" % (
+        self.form.result.setText("%d passes, %.0f mm of cut; closest to the part %.3f mm" % (
             obj.Passes, obj.CuttingLength.Value, obj.ClosestApproach.Value) if obj.Passes else "")
 
     def getSignalsForUpdate(self, obj):
@@ -319,6 +327,16 @@ class CommandFinishing:
         document.commitTransaction()
         obj.ViewObject.Document.setEdit(obj.ViewObject, 0)
         return obj
+
+
+def add_volume_roughing(job):
+    """A new Volume roughing operation in `job` with the view provider the command gives it (tip path, ticks),
+    for code that adds one without the command's panel."""
+    resources = COMMANDS["HSM_VolumeRoughing"]
+    op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
+    op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
+    op.ViewObject.Proxy.OpIcon = resources.icon
+    return op
 
 
 COMMANDS = {

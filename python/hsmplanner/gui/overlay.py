@@ -20,7 +20,8 @@ def unpickable():
 
 
 def screen_root(name=None):
-    """A separator with its own camera over x, y in [-1, 1] and flat colours: what a legend is drawn in."""
+    """A separator with its own camera over x, y in [-1, 1], flat colours and no depth test: what a legend is
+    drawn in, over everything else."""
     root = coin.SoSeparator()
     if name:
         root.setName(name)
@@ -31,8 +32,12 @@ def screen_root(name=None):
     camera.height = 2.0
     light = coin.SoLightModel()
     light.model = coin.SoLightModel.BASE_COLOR
-    root.addChild(camera)
-    root.addChild(light)
+    # No depth test: the colour bar and the text lie in the plane of the backing drawn before them, and would
+    # fail the depth test against it (and against the model behind) unless an overlay above turned it off.
+    on_top = coin.SoDepthBuffer()
+    on_top.test = False
+    for node in (camera, light, on_top):
+        root.addChild(node)
     return root
 
 

@@ -9,22 +9,26 @@ import hsmplanner
 from hsmplanner.app import roughing_object, roughing_study
 from hsmplanner.app.progress import freecad_progress
 
-from .task_panel import PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout
+from .task_panel import (PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout,
+                         with_controller_selected)
 
 STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
 PAPER_TORUS = "the paper's Ø8 r1 torus"  # the study's tool when the Job has none roughing can use
-# The table's columns: (heading, row key, tool tip).
-TABLE = [("strategy", "strategy", "the strategy whose figures the row holds (Apply makes it)"),
+# The table's columns: (heading, row key, tool tip). The figures a choice rests on come first: the Combo View
+# shows about three columns, the others scroll into view.
+TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply makes it)"),
          ("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
-         ("no allow. %", "vr_beyond_allowance", "V_r without the allowance layer left on the part on purpose"),
+         ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
          ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
+         ("no allow. %", "vr_beyond_allowance", "V_r without the allowance layer left on the part on purpose"),
          ("in mat. %", "in_material", "share of the feed path that cuts a chip"),
          ("stick-out", "stick_out_mm", "least stick-out, mm, for the holder to clear part and stock"),
-         ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
          ("stock mean", "stock_mean_mm", "stock left on the part, area-weighted mean, mm"),
          ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
          ("held by", "held_by", "what held the speed, share of the time"),
          ("rapids fed", "rapids_fed", "approaches that would have cut stock left as rapids: they feed into it")]
+KEY_COLUMNS = 3  # strategy, V_r, time: in view without scrolling
+MAP_HEIGHT_PX = 190  # of one stock map stacked in the panel
 
 
 def roughing_volumes(document):
@@ -50,7 +54,8 @@ class RoughingStudyPanel(TaskPanel):
         layout.addLayout(settings)
         document = FreeCAD.ActiveDocument
         self.volumes = roughing_volumes(document)
-        form.volume = narrow_combo([v.Label for v in self.volumes], volume.Label if volume is not None else None)
+        form.volume = narrow_combo([v.Label for v in self.volumes], volume.Label if volume is not None else None,
+                                   names=True)
         form.volume.setToolTip("the Roughing volume whose part and stock the strategies run on")
         settings.addRow("Roughing volume", form.volume)
         boxes = QtWidgets.QGridLayout()  # three a row: the Combo View is narrow
@@ -95,8 +100,8 @@ class RoughingStudyPanel(TaskPanel):
         form.table.itemSelectionChanged.connect(self.selection_changed)
         layout.addWidget(form.apply)
         self.form = form
-        self.plots = PanelPlots(layout, 260, self.draw, "Stock left by each strategy",
-                                "the stock each strategy leaves on the part, mm (one colour scale)")
+        self.plots = PanelPlots(layout, MAP_HEIGHT_PX, self.draw, "Stock left by each strategy",
+                                "the stock each strategy leaves on the part, mm (each map on its own scale)")
         return form
 
     def selection_changed(self):
@@ -206,20 +211,22 @@ class RoughingStudyPanel(TaskPanel):
                 if column == 0:
                     item.setData(QtCore.Qt.UserRole, values["strategy"])
                 table.setItem(row, column, item)
+        table.setSortingEnabled(True)  # before sizing: the headers then leave room for the sort arrow
         table.resizeColumnsToContents()
-        table.setSortingEnabled(True)
 
     def draw(self, figure, wide):
         from hsmplanner.plots.roughing_study import draw_stock_maps
 
         maps = [r.stock_map for r in self.results if r.stock_map is not None]
-        return draw_stock_maps(figure, maps, columns=3 if wide else 2, bar=wide)
+        if not wide:  # stacked, one a row: side by side, their titles ran into each other
+            self.plots.canvas.setMinimumHeight(MAP_HEIGHT_PX * max(1, len(maps)))
+        return draw_stock_maps(figure, maps, columns=3 if wide else 1, own_scales=True, coordinates=wide)
 
     def apply(self):
         """The selected strategy on the Roughing volume, all its regions as the study joined them, and a Volume
         roughing operation in the Job that makes them; the status says what it made against the row."""
         from hsmplanner.app import roughing_op
-        from hsmplanner.gui.finishing_ops_gui import COMMANDS
+        from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
 
         name, volume = self.selected(), self.volume()
         if name is None or volume is None:
@@ -234,10 +241,7 @@ class RoughingStudyPanel(TaskPanel):
             controller = roughing_op.roughing_controller(job)  # the Job's, or the paper's torus added
             volume.Strategy = roughing_object.strategy_label(name)
             volume.Region = 0  # every region, as the row measured them
-            resources = COMMANDS["HSM_VolumeRoughing"]
-            op = roughing_op.CreateVolumeRoughing("VolumeRoughing", parentJob=job)
-            op.ViewObject.Proxy = resources.view_provider(op.ViewObject, resources.res)
-            op.ViewObject.Proxy.OpIcon = resources.icon
+            op = with_controller_selected(controller, lambda: add_volume_roughing(job))
             op.ToolController = controller
             op.Volume = volume
             document.recompute()

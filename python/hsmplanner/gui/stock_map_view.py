@@ -14,6 +14,11 @@ def thickness_colors(shares):
     return cm.get_cmap("viridis")(np.clip(np.asarray(shares, dtype=float), 0.0, 1.0))[:, :3]
 
 
+# The legend's span in the view's y (-1 at the bottom, 1 at the top): below a Roughing volume's legend, which
+# the study's volume shows at the same right edge (roughing_view.legend_node).
+LEGEND_SPAN = (-0.85, -0.25)
+
+
 def stock_map_node(points, thickness, top_mm=None, title="stock left on the part"):
     """Points (N, 3) coloured by thickness (N,) over a scale from 0 to top_mm (default: the 99th percentile)."""
     points, thickness = np.asarray(points, dtype=float).reshape(-1, 3), np.asarray(thickness, dtype=float)
@@ -32,5 +37,5 @@ def stock_map_node(points, thickness, top_mm=None, title="stock left on the part
     cloud.vertexProperty = vertices
     for node in (light, style, cloud):
         root.addChild(node)
-    root.addChild(legend_node(0.0, top, "mm", title, digits=1, colors=thickness_colors))
+    root.addChild(legend_node(0.0, top, "mm", title, digits=1, colors=thickness_colors, span=LEGEND_SPAN))
     return root

@@ -3,7 +3,7 @@ closing that ends the edit, and the frame of an analysis panel."""
 import FreeCADGui
 from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
 from matplotlib.figure import Figure
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
 
 def selected_faces():
@@ -16,6 +16,18 @@ def freecad_message(error):
     """The text of an error to say in a panel: FreeCAD's own exceptions carry a dict whose sErrMsg is it."""
     detail = error.args[0] if error.args else error
     return detail.get("sErrMsg", str(detail)) if isinstance(detail, dict) else str(error)
+
+
+def with_controller_selected(controller, create):
+    """create()'s result, made while `controller` is the only selection: a new operation in a Job that has several
+    tool controllers and no operation makes FreeCAD ask which one in a modal dialog, and it takes a selected
+    controller instead (PathUtilsGui.selectedToolController)."""
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(controller)
+    try:
+        return create()
+    finally:
+        FreeCADGui.Selection.clearSelection()
 
 
 class TaskPanel:
@@ -65,8 +77,9 @@ class AnalysisPanel(TaskPanel):
         return form, layout, settings
 
 
-# FreeCAD's Combo View is about 275 px wide by default: every panel must fit it, as FreeCAD's own do.
-COMBO_VIEW_WIDTH = 275
+# FreeCAD's Combo View is 264 px wide in the default layout: every panel must fit it, as FreeCAD's own do. The
+# task box's frame, margins and scroll bar take about 36 px of it (the GUI tests measure the panel in it).
+COMBO_VIEW_WIDTH = 264
 
 
 def narrow_form_layout():
@@ -77,9 +90,68 @@ def narrow_form_layout():
     return layout
 
 
-def narrow_combo(items=(), current=None):
-    """A combo box that does not widen the panel to its longest item (the full text is in the list)."""
-    combo = QtWidgets.QComboBox()
+def button_text_width(button):
+    """The width a push button needs to show its icon and text whole: Qt's common style adds the button margin
+    and the frame on both sides to them (the 80 px a style may ask beyond that only pads)."""
+    style = button.style()
+    icon = button.iconSize().width() + 4 if not button.icon().isNull() else 0
+    frame = 2 * style.pixelMetric(QtWidgets.QStyle.PM_DefaultFrameWidth, None, button)
+    margin = style.pixelMetric(QtWidgets.QStyle.PM_ButtonMargin, None, button)
+    return button.fontMetrics().horizontalAdvance(button.text().replace("&", "")) + icon + margin + frame
+
+
+def compact_buttons(button_box):
+    """Lets the buttons of a dialog's button box narrow to their icon and text: the style gives a text button 80 px
+    at least, and FreeCAD's OK, Apply and Cancel side by side then need more than the Combo View has."""
+    for button in button_box.buttons():
+        button.setMinimumWidth(button_text_width(button))
+
+
+class ElidingComboBox(QtWidgets.QComboBox):
+    """A combo box that draws a current text too long for it with an ellipsis (Qt would cut it at the edge);
+    the full text is the first line of its tool tip, and setToolTip sets the lines after it. Names of objects
+    are elided in the middle, so that names sharing a prefix ("SlantedSlotBlock", "SlantedSlotBlock stock")
+    still read apart; other choices at the end, where their words stay whole."""
+
+    def __init__(self, parent=None, elide=QtCore.Qt.ElideRight):
+        super().__init__(parent)
+        self.elide = elide
+        self.description = ""
+        self.currentTextChanged.connect(self._update_tooltip)
+
+    def setToolTip(self, text):
+        self.description = text
+        self._update_tooltip()
+
+    def _update_tooltip(self, *args):
+        lines = [line for line in (self.currentText(), self.description) if line]
+        super().setToolTip("\n".join(lines))
+
+    def _field_width(self):
+        option = QtWidgets.QStyleOptionComboBox()
+        self.initStyleOption(option)
+        field = self.style().subControlRect(QtWidgets.QStyle.CC_ComboBox, option,
+                                            QtWidgets.QStyle.SC_ComboBoxEditField, self)
+        return field.width() - 2  # the style draws the text 1 px in from each side of the field
+
+    def shown_text(self):
+        """The current text as drawn: whole, or elided to the width of the box's text field."""
+        return self.fontMetrics().elidedText(self.currentText(), self.elide, self._field_width())
+
+    def paintEvent(self, event):
+        self._update_tooltip()  # a panel that fills the box with its signals blocked changed the text unseen
+        painter = QtWidgets.QStylePainter(self)
+        option = QtWidgets.QStyleOptionComboBox()
+        self.initStyleOption(option)
+        option.currentText = self.shown_text()
+        painter.drawComplexControl(QtWidgets.QStyle.CC_ComboBox, option)
+        painter.drawControl(QtWidgets.QStyle.CE_ComboBoxLabel, option)
+
+
+def narrow_combo(items=(), current=None, names=False):
+    """A combo box that does not widen the panel to its longest item (the full text is in the list and the
+    tool tip; a text too long is drawn elided, in the middle for `names` of objects)."""
+    combo = ElidingComboBox(elide=QtCore.Qt.ElideMiddle if names else QtCore.Qt.ElideRight)
     combo.addItems(list(items))
     combo.setSizeAdjustPolicy(QtWidgets.QComboBox.AdjustToMinimumContentsLengthWithIcon)
     combo.setMinimumContentsLength(8)

@@ -7,10 +7,37 @@ import numpy as np
 from .common import new_figure
 
 
-def draw_stock_maps(figure, maps, view=(28, -60), top_mm=None, columns=3, bar=True):
+def _scale_top(thickness):
+    """The top of a colour scale for a map's thicknesses: the 99th percentile (a few deep spots would turn the
+    rest dark), 0 for no points."""
+    return float(np.percentile(thickness, 99)) if len(thickness) else 0.0
+
+
+def _map_title(label, thickness, weight):
+    mean = float(np.average(thickness, weights=weight)) if len(thickness) else 0.0
+    return "%s: mean %.2f, max %.2f mm" % (label, mean, float(thickness.max()) if len(thickness) else 0.0)
+
+
+def _colour_bar(figure, norm, colours, **where):
+    """A colour bar of `norm` with a few numbers (mm); where: colorbar's placing (cax= or ax=)."""
+    import matplotlib.cm as cm
+    from matplotlib.ticker import MaxNLocator
+
+    colour_bar = figure.colorbar(cm.ScalarMappable(norm=norm, cmap=colours), **where)
+    colour_bar.ax.yaxis.set_major_locator(MaxNLocator(4))
+    colour_bar.ax.tick_params(labelsize=6)
+    return colour_bar
+
+
+def draw_stock_maps(figure, maps, view=(28, -60), top_mm=None, columns=3, bar=True, own_scales=False,
+                    coordinates=True):
     """One 3D panel per strategy on `figure`: [(label, points (N, 3), thickness (N,), weight (N,)), …], the
-    points of the part's surface coloured by the stock left on them (one scale for all panels, mm), with a
-    shared colour bar; the titles give the area-weighted mean (the weights: each point's share of the surface)."""
+    points of the part's surface coloured by the stock left on them, mm; the titles give the area-weighted mean
+    (the weights: each point's share of the surface).
+
+    One scale for all panels with a shared colour bar (`bar`), or with `own_scales` a scale and a colour bar per
+    panel: on one scale a strategy that leaves little reads as one colour beside one that leaves much.
+    coordinates=False leaves out the axes' numbers (a small panel: only the colours are read there)."""
     import matplotlib.cm as cm
     from matplotlib.colors import Normalize
 
@@ -19,24 +46,26 @@ def draw_stock_maps(figure, maps, view=(28, -60), top_mm=None, columns=3, bar=Tr
         return False
     columns = min(columns, len(maps))
     rows = (len(maps) + columns - 1) // columns
-    top = top_mm or max(float(np.percentile(t, 99)) if len(t) else 0.0 for _, _, t, _ in maps) or 1.0
-    norm, colours = Normalize(0.0, top), cm.get_cmap("viridis")
+    shared = top_mm or max(_scale_top(np.asarray(t)) for _, _, t, _ in maps) or 1.0
+    colours = cm.get_cmap("viridis")
     for k, (label, points, thickness, weight) in enumerate(maps):
         axes = figure.add_subplot(rows, columns, k + 1, projection="3d")
         points, thickness = np.asarray(points).reshape(-1, 3), np.asarray(thickness)
+        norm = Normalize(0.0, (top_mm or _scale_top(thickness) or 1.0) if own_scales else shared)
         step = max(1, len(points) // 20000)  # a readable cloud: at most 20,000 points a panel
         axes.scatter(*points[::step].T, c=colours(norm(thickness[::step])), s=2.0, linewidths=0)
         axes.view_init(*view)
-        mean = float(np.average(thickness, weights=weight)) if len(thickness) else 0.0
-        axes.set_title("%s: mean %.2f, max %.2f mm" % (label, mean, float(thickness.max()) if len(thickness) else 0.0),
-                       fontsize=8)
+        axes.set_title(_map_title(label, thickness, weight), fontsize=8)
         axes.tick_params(labelsize=6)
-    if bar:
+        if not coordinates:
+            for axis in (axes.xaxis, axes.yaxis, axes.zaxis):
+                axis.set_ticklabels([])
+        if own_scales:
+            _colour_bar(figure, norm, colours, ax=axes, shrink=0.7, pad=0.0, fraction=0.07)  # mm: in the title
+    if bar and not own_scales:
         figure.subplots_adjust(left=0.0, right=0.9, top=0.9, bottom=0.03, wspace=0.02, hspace=0.1)
-        colour_bar = figure.colorbar(cm.ScalarMappable(norm=norm, cmap=colours),
-                                     cax=figure.add_axes([0.92, 0.2, 0.015, 0.6]))
-        colour_bar.set_label("stock left on the part, mm (%g and more at the top of the scale)" % round(top, 2),
-                             fontsize=8)
+        _colour_bar(figure, Normalize(0.0, shared), colours, cax=figure.add_axes([0.92, 0.2, 0.015, 0.6])).set_label(
+            "stock left on the part, mm (%g and more at the top of the scale)" % round(shared, 2), fontsize=8)
     return True
 
 
