@@ -46,6 +46,7 @@ _MODULES = {
     "job_gui": ("Path.Main.Gui.Job", "PathScripts.PathJobGui"),
     "tool_controller": ("Path.Tool.Controller", "PathScripts.PathToolController"),
     "tool_bit": ("Path.Tool.Bit", "PathScripts.PathToolBit"),
+    "icon_view_provider": ("Path.Base.Gui.IconViewProvider", "PathScripts.PathIconViewProvider"),
     "utils": ("Path.Base.Util", "PathScripts.PathUtil"),
     "post_processor": ("Path.Post.Processor", "PathScripts.PostUtils"),
     "custom_op": ("Path.Op.Custom", "PathScripts.PathCustom"),
@@ -75,6 +76,18 @@ def post_module(name):
         except ImportError:
             continue
     raise ImportError("FreeCAD has no post-processor named %r: check the name (e.g. 'linuxcnc', 'grbl')" % name)
+
+
+def create_tool_bit(name, shape_file):
+    """A ToolBit of `shape_file` in the active document, made inside the caller's transaction. Once CAM's GUI is
+    loaded, the module's Factory is its GUI factory, which opens and commits a transaction of its own ("Create
+    ToolBit"): that ends the caller's, and what the caller adds after it lands in no undo step. The App factory
+    makes the ToolBit here; in the GUI it gets the view provider the GUI factory would attach."""
+    module = cam_module("tool_bit")
+    bit = module.ToolBitFactory().Create(name, shape_file)
+    if FreeCAD.GuiUp and getattr(bit, "ViewObject", None) is not None:
+        cam_module("icon_view_provider").Attach(bit.ViewObject, name)
+    return bit
 
 
 def create_job(models, name="Job"):

@@ -11,11 +11,11 @@ import FreeCAD
 
 from hsmplanner import feedsim, roughing
 
-from .compat import cam_module
+from .compat import cam_module, create_tool_bit
 from .job_controllers import usable_or_added
 from .op_comments import mend_leading_comments
 from .property_limits import PropertyLimits
-from .roughing_commands import sweep_commands
+from .roughing_commands import program_clearance, sweep_commands
 
 PathOp = cam_module("op")
 
@@ -55,7 +55,7 @@ def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, s
     shape = tool_bit.findToolShape("bullnose.fcstd")
     if not shape:
         raise RuntimeError("FreeCAD's bullnose.fcstd tool shape is missing from this installation")
-    bit = tool_bit.Factory.Create("Torus%g" % diameter, shape)
+    bit = create_tool_bit("Torus%g" % diameter, shape)
     bit.Diameter = diameter
     bit.FlatRadius = 0.5 * diameter - corner_radius
     bit.Label = "Torus Ø%g r%g" % (diameter, corner_radius)
@@ -181,17 +181,26 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
                                                        tool=cutter, resolution=MEND_RESOLUTION)
         if fed:
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, roughing.rapid_note(fed)))
-        report = roughing.check_clearance(moves, part_brep, cutter, obj.Allowance.Value - 0.01)
+        commands = sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed)
+        report = self.clearance(commands, moves, machine, part_brep, cutter, obj.Allowance.Value - 0.01)
         if report.too_close:
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
         mend_leading_comments(self.commandlist, obj)
-        self.commandlist.extend(sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed))
+        self.commandlist.extend(commands)
         obj.Passes = passes
         obj.CuttingLength = length
         obj.ClosestApproach = max(0.0, report.minimum)
         obj.RegionsSwept = len(partitions)
         obj.RapidsFed = len(fed)
+
+    @staticmethod
+    def clearance(commands, moves, machine, part_brep, cutter, limit):
+        """The program checked as the machine's controller runs it (its rotary axes interpolated linearly
+        between blocks); on 3 axes (a 3+2 program is written in its work plane) the sweep's own moves."""
+        if machine.rotary_axes:
+            return program_clearance(commands, machine, part_brep, cutter, limit)[0]
+        return roughing.check_clearance(moves, part_brep, cutter, limit)
 
 
 def SetupProperties():

@@ -17,7 +17,8 @@ from hsmplanner.app import roughing_object, strategy_study
 from hsmplanner.app.feedrate_object import COLOR_MODES
 from hsmplanner.app.progress import freecad_progress
 
-from .task_panel import PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout
+from .task_panel import (PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout,
+                         with_controller_selected)
 
 # The table's columns: (heading, row key, (scale to the shown unit, decimals) or None for text, tool tip). The
 # two figures the ranking plots come first after the variant: the Combo View shows three columns at a time.
@@ -476,12 +477,8 @@ class StrategyStudyPanel(TaskPanel):
             return None
         document.openTransaction("Apply strategy %s" % row["name"])
         try:
-            # a Job without operations and with several controllers makes FreeCAD ask which one, in a modal
-            # dialog; it takes a selected controller instead (PathUtilsGui.selectedToolController)
-            FreeCADGui.Selection.clearSelection()
-            FreeCADGui.Selection.addSelection(controller)
-            op, net = strategy_study.create_operation(row, inputs, job, controller, settings)
-            FreeCADGui.Selection.clearSelection()
+            op, net = with_controller_selected(
+                controller, lambda: strategy_study.create_operation(row, inputs, job, controller, settings))
             self.attach_view_providers(op, net)
             document.recompute()
         except Exception as error:  # noqa: BLE001

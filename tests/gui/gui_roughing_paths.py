@@ -1,0 +1,258 @@
+"""GUI test: the Roughing study's Apply on a Job with no roughing tool is one undo step (the operation, the tool
+controller and its ToolBit go with one undo), and FreeCAD draws the Volume roughing path of every strategy where
+the part is, on the slanted slot and on one impeller channel: what the 3D view draws of the path (the coin nodes
+of the view provider's display mode) lies on the stock, and the tool-axis ticks sit on it. A strategy the volume
+cannot take says so and leaves the volume shown."""
+import os
+import sys
+
+import FreeCAD
+import FreeCADGui as Gui
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_harness import GuiRun  # noqa: E402
+
+run = GuiRun()
+state = {}
+STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
+REFUSED = {"slot": {"S2": "S2 needs a cylindrical"}}  # the slot has no outlet cylinder for S2's coaxial slices
+RETRACT_ROOM = 1.0  # of the stock's height, above it, for retracts and links along a tilted tool axis
+TICK_ON_PATH_MM = 0.01  # a tick starts on the drawn tip path: both come from the same tips, interpolated alike
+
+
+def names(document):
+    return sorted(o.Name for o in document.Objects)
+
+
+def new_part_with_volume_and_job(make, region):
+    """A test part and its stock (hsmplanner.app.roughing_parts), its Roughing volume made by the command from
+    both selected (`region`: 0 for all), and a Job on the part with FreeCAD's default tool controller only (feeds
+    of 0: no roughing tool)."""
+    from hsmplanner.app import roughing_parts
+    from hsmplanner.app.compat import create_job
+
+    document = FreeCAD.ActiveDocument
+    part, stock = getattr(roughing_parts, make)(document)
+    known = set(names(document))
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(part)
+    Gui.Selection.addSelection(stock)
+    Gui.runCommand("HSM_RoughingVolume")
+    volume = next(document.getObject(n) for n in names(document) if n not in known and n.startswith("RoughingVolume"))
+    volume.Region = region
+    job = create_job([part])
+    document.recompute()
+    run.wait_until(lambda: run.valid(volume) and volume.Volume > 0 and job.Stock is not None, 60.0,
+                   "%s, its Roughing volume and a Job" % part.Label)
+    for obj in (stock, job):
+        obj.ViewObject.Visibility = False
+    return part, stock, volume, job
+
+
+@run.step
+def slot_with_a_job_without_a_roughing_tool(run):
+    from hsmplanner.app.roughing_op import is_roughing_controller
+
+    Gui.activateWorkbench("HSMPlannerWorkbench")
+    FreeCAD.newDocument("RoughingPaths")
+    state["slot"] = new_part_with_volume_and_job("create_slanted_slot_block", 0)
+    job = state["slot"][3]
+    run.check("the Job has no tool roughing can use", not any(is_roughing_controller(c) for c in job.Tools.Group),
+              str([c.Label for c in job.Tools.Group]))
+
+
+@run.step
+def study_apply_is_undone_in_one_step(run):
+    """Apply adds the operation, the paper's torus controller and its ToolBit (with the ToolBit's body, copied
+    from its shape file); one undo of FreeCAD takes all of them away."""
+    from hsmplanner.gui import roughing_study_panel
+
+    document = FreeCAD.ActiveDocument
+    part, stock, volume, job = state["slot"]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(volume)
+    Gui.runCommand("HSM_RoughingStudy")
+    run.wait_until(lambda: roughing_study_panel.RoughingStudyPanel.active is not None, 20.0, "the Roughing study panel")
+    study = roughing_study_panel.RoughingStudyPanel.active
+    for name, box in study.form.strategies.items():
+        box.setChecked(name == "S1")
+    study.form.resolution.setValue(2.0)  # coarse: only Apply is tested here
+    study.run()
+    study.form.table.selectRow(0)
+    before, tools_before = names(document), [c.Name for c in job.Tools.Group]
+    op = study.apply()
+    run.check("Apply made an operation", op is not None, study.form.status.text())
+    if op is None:
+        return
+    run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the applied operation computed")
+    added = sorted(set(names(document)) - set(before))
+    kinds = {document.getObject(n).TypeId for n in added}
+    run.notes["apply added"] = added
+    run.check("Apply added the operation, a tool controller and its ToolBit", op.Name in added and
+              op.ToolController.Name in added and op.ToolController.Tool.Name in added, str(added))
+    run.notes["undo names"] = list(document.UndoNames[:3])
+    run.check("Apply is the last undo step", document.UndoNames[:1] == ["Apply roughing strategy S1"],
+              str(document.UndoNames[:3]))
+    Gui.runCommand("Std_Undo")
+    left = sorted(set(names(document)) - set(before))
+    gone = sorted(set(before) - set(names(document)))
+    run.check("one undo leaves the document as before Apply", names(document) == before,
+              "left: %s, gone: %s (added: %s, %s)" % (left, gone, added, sorted(kinds)))
+    run.check("the Job's tools as before", [c.Name for c in job.Tools.Group] == tools_before,
+              str([c.Label for c in job.Tools.Group]))
+    run.check("the Job's operations as before", not job.Operations.Group, str([o.Label for o in job.Operations.Group]))
+    run.screenshot("roughing_paths_apply_undone")
+    state["slot_op"] = study.apply()  # again: the operation the next step draws
+    run.wait_until(lambda: run.valid(state["slot_op"]) and state["slot_op"].Passes > 0, 60.0,
+                   "the operation applied again")
+    study.reject()
+    run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the study panel closed")
+
+
+def mode_node(vobj):
+    """The scene of the display mode the 3D view shows for a view object (FreeCAD's mode switch, under the root
+    node: the child it has switched on)."""
+    from pivy import coin
+
+    root = vobj.RootNode
+    for index in range(root.getNumChildren()):
+        child = root.getChild(index)
+        if child.isOfType(coin.SoSwitch.getClassTypeId()):
+            switch = coin.cast(child, "SoSwitch")
+            shown = switch.whichChild.getValue()
+            return switch.getChild(shown) if 0 <= shown < switch.getNumChildren() else None
+    return None
+
+
+def drawn_polylines(node):
+    """The points of each SoCoordinate3 under a scene node, as drawn (in the order of the moves)."""
+    from pivy import coin
+
+    search = coin.SoSearchAction()
+    search.setType(coin.SoCoordinate3.getClassTypeId())
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.apply(node)
+    paths = search.getPaths()
+    lines = []
+    for i in range(paths.getLength()):
+        points = coin.cast(paths[i].getTail(), "SoCoordinate3").point.getValues()
+        lines.append(np.array([p.getValue() for p in points], dtype=float).reshape(-1, 3))
+    return [line for line in lines if len(line)]
+
+
+def distances_to_polylines(points, polylines):
+    """Each point's distance to the nearest segment of the polylines."""
+    segments = np.concatenate([np.stack([line[:-1], line[1:]], axis=1) for line in polylines if len(line) > 1])
+    a, b = segments[:, 0], segments[:, 1]
+    ab = b - a
+    length2 = np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-24)
+    nearest = np.full(len(points), np.inf)
+    for start in range(0, len(points), 256):  # 256 points at a time against every segment
+        chunk = points[start:start + 256, None, :]
+        share = np.clip(np.einsum("pij,ij->pi", chunk - a, ab) / length2, 0.0, 1.0)
+        closest = a + share[:, :, None] * ab
+        nearest[start:start + 256] = np.linalg.norm(chunk - closest, axis=2).min(axis=1)
+    return nearest
+
+
+def tick_tips(op):
+    """The tip end of each tool-axis tick the view provider draws (segments from the tip along the axis)."""
+    ticks = getattr(op.ViewObject.Proxy, "ticks", None)
+    if ticks is None:
+        return np.zeros((0, 3))
+    lines = ticks.getChild(ticks.getNumChildren() - 1)
+    vertices = lines.vertexProperty.getValue().vertex.getValues()
+    return np.array([v.getValue() for v in vertices], dtype=float).reshape(-1, 2, 3)[:, 0]
+
+
+def check_drawn_on_the_part(key, strategy, op, stock):
+    """What the 3D view draws of the operation's path lies on the stock (its box, grown by the tool's radius
+    around and by RETRACT_ROOM above), reaches into it, and carries the tool-axis ticks."""
+    what = "%s %s" % (key, strategy)
+    drawn = drawn_polylines(mode_node(op.ViewObject)) if mode_node(op.ViewObject) is not None else []
+    if not drawn:
+        run.check("%s: a path is drawn" % what, False, op.ViewObject.DisplayMode)
+        return
+    points = np.vstack(drawn)
+    low, high = points.min(axis=0), points.max(axis=0)
+    box = stock.Shape.BoundBox
+    margin = 0.5 * op.ToolController.Tool.Diameter.Value + 1.0
+    top = box.ZMax + RETRACT_ROOM * box.ZLength  # the retracts and links run above the stock
+    inside = bool(np.all(low >= [box.XMin - margin, box.YMin - margin, box.ZMin - margin])
+                  and np.all(high <= [box.XMax + margin, box.YMax + margin, top]))
+    into = bool(np.all(low < [box.XMax, box.YMax, box.ZMax]) and np.all(high > [box.XMin, box.YMin, box.ZMin]))
+    tips = tick_tips(op)
+    off = float(distances_to_polylines(tips, drawn).max()) if len(tips) else np.inf
+    run.notes.setdefault("drawn paths", {})[what] = {
+        "mode": op.ViewObject.DisplayMode, "drawn box": [low.round(1).tolist(), high.round(1).tolist()],
+        "stock box": [[box.XMin, box.YMin, box.ZMin], [box.XMax, box.YMax, box.ZMax]], "ticks": len(tips),
+        "tick farthest off the path mm": round(off, 6), "passes": op.Passes}
+    run.check("%s: the drawn path lies on the stock and cuts into it" % what, inside and into,
+              str(run.notes["drawn paths"][what]))
+    run.check("%s: the tool-axis ticks sit on the drawn path" % what, len(tips) > 0 and off <= TICK_ON_PATH_MM,
+              "%d ticks, the farthest %.4f mm off" % (len(tips), off))
+
+
+def check_refused(key, strategy, volume):
+    """A strategy the volume cannot take: the volume says why and stays in the view as the volume to remove."""
+    from hsmplanner.gui.roughing_panel import message_text
+
+    def drawn():
+        node = getattr(volume.ViewObject.Proxy, "root", None)
+        return node.getNumChildren() if node is not None else 0
+
+    message = message_text(volume)
+    run.notes.setdefault("refused", {})["%s %s" % (key, strategy)] = message
+    run.check("%s %s refused with its message" % (key, strategy), REFUSED[key][strategy] in message, message)
+    run.wait_until(lambda: volume.ViewObject.Visibility and drawn() > 0 and len(volume.Shape.Solids) >= 1, 10.0,
+                   "%s %s: the volume to remove still shown" % (key, strategy))
+
+
+def every_strategy(key, op, volume, stock, timeout):
+    from hsmplanner.app import roughing_object
+
+    document = FreeCAD.ActiveDocument
+    for strategy in STRATEGIES:
+        volume.Strategy = roughing_object.strategy_label(strategy)
+        document.recompute()
+        if strategy in REFUSED.get(key, {}):
+            run.wait_until(lambda: volume.Proxy.error is not None, timeout, "%s %s refused" % (key, strategy))
+            check_refused(key, strategy, volume)
+            continue
+        run.wait_until(lambda: run.valid(volume) and volume.SubVolumeCount > 0 and run.valid(op) and op.Passes > 0,
+                       timeout, "%s %s partitioned and swept" % (key, strategy))
+        check_drawn_on_the_part(key, strategy, op, stock)
+        if strategy in ("S1", "S5"):
+            show_only(op, volume.Part, volume)
+            Gui.activeDocument().activeView().viewIsometric()
+            Gui.SendMsgToActiveView("ViewFit")
+            run.screenshot("roughing_paths_%s_%s" % (key, strategy))
+
+
+def show_only(*objects):
+    for obj in FreeCAD.ActiveDocument.Objects:
+        if obj.ViewObject is not None:
+            obj.ViewObject.Visibility = obj in objects
+
+
+@run.step
+def every_strategy_drawn_on_the_slot(run):
+    part, stock, volume, job = state["slot"]
+    every_strategy("slot", state["slot_op"], volume, stock, 60.0)
+
+
+@run.step
+def every_strategy_drawn_on_an_impeller_channel(run):
+    """One channel of the seven (region 1, the largest) at the volume's default step: seconds a strategy."""
+    from hsmplanner.app import roughing_op
+    from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
+
+    part, stock, volume, job = new_part_with_volume_and_job("create_impeller", 1)
+    op = add_volume_roughing(job)
+    op.ToolController = roughing_op.roughing_controller(job)
+    op.Volume = volume
+    every_strategy("impeller", op, volume, stock, 90.0)
+
+
+run.start()
