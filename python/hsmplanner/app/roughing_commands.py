@@ -111,6 +111,93 @@ def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
     return np.asarray(segments).reshape(-1, 2, 3)
 
 
+MAX_CHECKED_POSITIONS = 1_000_000
+
+
+def _axes_of(machine, angles):
+    """The tool axis in the workpiece frame at each row of `angles` (the machine's rotary axes, degrees)."""
+    import numpy as np
+
+    from hsmplanner import _core
+
+    if angles.shape[1] == 0:
+        return np.tile(np.asarray(machine.tool_axis, dtype=float), (len(angles), 1))
+    padded = np.zeros((len(angles), 2))
+    padded[:, :angles.shape[1]] = angles
+    return np.asarray([_core.forward_kinematics(machine, [0.0, 0.0, 0.0], list(row))[1] for row in padded])
+
+
+def interpolated_program(commands, machine, orientation="angles", max_turn_deg=0.05):
+    """The tool tips and axes of Path commands as the controller moves the tool between their blocks: the tip
+    straight (TCP: X Y Z are the tip), and the axis by the machine's own A/B/C interpolated linearly
+    (`orientation="angles"`: LinuxCNC, the 840D's ORIAXES), blocks cut so that no axis turns more than
+    `max_turn_deg` in one; or on the great circle between the blocks' axes ("vectors": the 840D's ORIVECT).
+    A dict of (N, 3) `tip` and `axis` arrays and `move`, the index in `commands` of the block each comes from."""
+    index, tips, turns, _ = program_moves(commands, [axis.name for axis in machine.rotary_axes])
+    return _interpolated(index, tips, turns, machine, orientation, max_turn_deg)
+
+
+def posted_program(program, machine, orientation="angles", max_turn_deg=0.05):
+    """interpolated_program of a posted program (G-code text or file) as the controller reads it: its blocks
+    interpreted by the feed-rate simulator on `machine` (TRAORI, modal words, the post's own syntax), `move`
+    being each block's line number. ValueError for an arc (roughing programs are straight moves)."""
+    import numpy as np
+
+    from hsmplanner import feedsim
+
+    blocks = feedsim.simulate(program, machine, blocks=True, refuse_unknown_words=True).blocks
+    motion = np.asarray(blocks["motion"])
+    if np.any(motion >= 2):
+        line = int(np.asarray(blocks["line"])[np.argmax(motion >= 2)])
+        raise ValueError("line %d is an arc: the clearance of a posted program is checked on straight moves" % line)
+    if len(motion) == 0:
+        return _interpolated(np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 0)), machine,
+                             orientation, max_turn_deg)
+    # From the first block's end: where the machine stands before the program is not the program's.
+    count = len(machine.rotary_axes)
+    return _interpolated(np.asarray(blocks["line"], dtype=np.int64), np.asarray(blocks["end"]),
+                         np.asarray(blocks["rotary_end"])[:, :count], machine, orientation, max_turn_deg)
+
+
+def _interpolated(index, tips, turns, machine, orientation, max_turn_deg):
+    import numpy as np
+
+    if orientation not in ("angles", "vectors"):
+        raise ValueError("orientation %r must be 'angles' (A/B/C interpolated linearly) or 'vectors' (great circle)"
+                         % (orientation,))
+    if not 1e-4 <= max_turn_deg <= 10.0:
+        raise ValueError("max_turn_deg %g must be within [0.0001, 10] degrees" % max_turn_deg)
+    pieces = np.ones(len(tips), dtype=np.int64)
+    if orientation == "angles" and turns.shape[1] and len(tips) > 1:
+        largest = np.max(np.abs(np.diff(turns, axis=0)), axis=1)
+        pieces[1:] = np.maximum(1, np.ceil(largest / max_turn_deg - 1e-9)).astype(np.int64)
+    if int(pieces.sum()) > MAX_CHECKED_POSITIONS:
+        raise ValueError("the program turns its rotary axes through %d steps of %g deg, more than %d: use a larger "
+                         "max_turn_deg" % (int(pieces.sum()), max_turn_deg, MAX_CHECKED_POSITIONS))
+    # Block i from i - 1: `pieces[i]` points at shares k / pieces[i], k = 1 … pieces[i] (the first block whole).
+    block = np.repeat(np.arange(len(tips)), pieces)
+    start = np.repeat(np.cumsum(pieces) - pieces, pieces)
+    share = (np.arange(len(block)) - start + 1) / pieces[block]
+    before = np.maximum(block - 1, 0)
+    tip = tips[before] + share[:, None] * (tips[block] - tips[before])
+    angles = turns[before] + share[:, None] * (turns[block] - turns[before])
+    return {"tip": tip, "axis": _axes_of(machine, angles), "move": index[block]}
+
+
+def program_clearance(program, machine, part, tool=None, limit=None, orientation="angles", spacing=1.0,
+                      max_turn_deg=0.05):
+    """How close the tool comes to the part along a program (Path commands, or a posted program's G-code text
+    or file) as `machine`'s controller runs it (interpolated_program, posted_program), checked independently
+    on the part's triangles: (the ClearanceReport, the closest block: its index in the commands, or its line
+    in the posted text; -1 when nothing was checked)."""
+    if isinstance(program, (str, bytes)) or hasattr(program, "__fspath__"):
+        moves = posted_program(program, machine, orientation, max_turn_deg)
+    else:
+        moves = interpolated_program(program, machine, orientation, max_turn_deg)
+    report = roughing.check_clearance(moves, part, tool, limit, spacing)
+    return report, int(moves["move"][report.worst_move]) if report.worst_move >= 0 else -1
+
+
 class ProgramSource:
     """What our posts read of an operation: a Label and a Path (for scripts that post a sweep directly)."""
 
