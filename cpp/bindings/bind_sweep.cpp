@@ -183,6 +183,8 @@ void bindSweep(py::module_& m) {
       .def_readonly("feed_length", &RemovalResult::feedLength)
       .def_readonly("in_material_length", &RemovalResult::inMaterialLength)
       .def_readonly("in_material_share", &RemovalResult::inMaterialShare, "% of the feed length")
+      .def_readonly("in_material_path_share", &RemovalResult::inMaterialPathShare,
+                    "% of the whole path length (rapids and links too)")
       .def_readonly("stick_out", &RemovalResult::stickOut, "least stick-out for the holder to clear everything")
       .def_readonly("stick_out_move", &RemovalResult::stickOutMove)
       .def_readonly("gouge_volume", &RemovalResult::gougeVolume)

@@ -332,6 +332,7 @@ public:
     r.remainingVolume = material_.volume();
     r.remainingShare = r.volumeToRemove > 0.0 ? 100.0 * r.remainingVolume / r.volumeToRemove : 0.0;
     r.inMaterialShare = r.feedLength > 0.0 ? 100.0 * r.inMaterialLength / r.feedLength : 0.0;
+    r.inMaterialPathShare = r.pathLength > 0.0 ? 100.0 * r.inMaterialLength / r.pathLength : 0.0;
     thicknessOf(samples, r);
     double layer = 0.0;
     for (size_t i = 0; i < r.thickness.size(); ++i) layer += r.weight[i] * std::min(r.thickness[i], settings_.allowance);

@@ -76,6 +76,7 @@ struct RemovalResult {
   double beyondAllowanceVolume = 0.0, beyondAllowanceShare = 100.0;
   double pathLength = 0.0, feedLength = 0.0, inMaterialLength = 0.0;  // mm
   double inMaterialShare = 0.0;                      // % of the feed length
+  double inMaterialPathShare = 0.0;                  // % of the whole path: rapids and links count too
   double stickOut = 0.0;                             // mm: least stick-out so that the holder clears everything
   int stickOutMove = -1;                             // the move that needs it
   double gougeVolume = 0.0;                          // mm³ of the part cut

@@ -127,6 +127,7 @@ class RoughingStudyExample(unittest.TestCase):
             self.assertTrue(0.0 < float(row["vr_beyond_allowance"]) < float(row["vr"]) < 100.0, row)
             self.assertGreater(float(row["stick_out_mm"]), 0.0, row)
             self.assertTrue(0.0 < float(row["in_material"]) <= 100.0, row)
+            self.assertTrue(0.0 < float(row["in_material_path"]) < float(row["in_material"]), row)
             self.assertGreater(float(row["time_s"]), float(row["length_over_feed_s"]) * 0.99, row)
             self.assertGreaterEqual(float(row["stock_mean_mm"]), 0.45, row)
             # No rapid of the joined program takes material out of the stock left (the approaches that would

@@ -262,6 +262,11 @@ class Sweep(unittest.TestCase):
         self.assertEqual(result.gouge_move, -1)
         self.assertLess(result.gouge_volume, 1e-9)
         self.assertGreater(result.in_material_share, 20.0)
+        # Of the whole path (rapids and links too) a smaller share cuts.
+        self.assertAlmostEqual(result.in_material_path_share, 100.0 * result.in_material_length / result.path_length,
+                               places=9)
+        self.assertLess(result.in_material_path_share, result.in_material_share)
+        self.assertGreater(result.path_length, result.feed_length)
         self.assertGreater(result.stick_out, 5.0)
         self.assertLess(result.stick_out, 40.0)
         self.assertGreaterEqual(result.thickness_mean, 0.4)

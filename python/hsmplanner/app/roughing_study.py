@@ -17,7 +17,7 @@ from .roughing_commands import ProgramSource, sweep_commands
 PAPER = {"S1": (43.1, 3332, 44.1, 57), "S2": (14.1, 2987, 54.4, 49), "S3": (16.0, 3863, 45.6, 47),
          "S4": (19.4, 2758, 56.2, 39), "S5": (9.3, 3343, 66.5, 44)}
 COLUMNS = ["strategy", "paper_vr", "vr", "vr_beyond_allowance", "paper_path_mm", "path_mm", "feed_mm",
-           "paper_in_material", "in_material", "paper_stick_out_mm", "stick_out_mm", "gouge_mm3", "time_s",
+           "paper_in_material", "in_material", "in_material_path", "paper_stick_out_mm", "stick_out_mm", "gouge_mm3", "time_s",
            "length_over_feed_s", "held_by", "stock_mean_mm", "stock_max_mm", "stock_std_mm", "rapids_fed",
            "rapid_faults", "regions", "step_mm", "resolution_mm", "seconds", "note"]
 DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
@@ -85,7 +85,8 @@ def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.
     shares = feedsim.speed_limit_shares(simulated.summary)
     row.update(vr=round(removal.remaining_share, 1), vr_beyond_allowance=round(removal.beyond_allowance_share, 1),
                path_mm=round(removal.path_length), feed_mm=round(removal.feed_length),
-               in_material=round(removal.in_material_share, 1), stick_out_mm=round(removal.stick_out, 1),
+               in_material=round(removal.in_material_share, 1),
+               in_material_path=round(removal.in_material_path_share, 1), stick_out_mm=round(removal.stick_out, 1),
                gouge_mm3=round(removal.gouge_volume, 2), time_s=round(simulated.summary.total_time, 1),
                length_over_feed_s=round(simulated.summary.naive_time, 1),
                held_by=", ".join("%s %.0f %%" % (k, 100 * v) for k, v in list(shares.items())[:3]),

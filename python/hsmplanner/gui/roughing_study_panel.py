@@ -22,6 +22,7 @@ TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply
          ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
          ("no allow. %", "vr_beyond_allowance", "V_r without the allowance layer left on the part on purpose"),
          ("in mat. %", "in_material", "share of the feed path that cuts a chip"),
+         ("in path %", "in_material_path", "share of the whole path (rapids and links too) that cuts a chip"),
          ("stick-out", "stick_out_mm", "least stick-out, mm, for the holder to clear part and stock"),
          ("stock mean", "stock_mean_mm", "stock left on the part, area-weighted mean, mm"),
          ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
