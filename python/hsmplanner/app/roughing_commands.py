@@ -84,8 +84,6 @@ def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
     to show a 4- or 5-axis path turn the tool. Bounded: at most 20,000 ticks (wider apart on long paths)."""
     import numpy as np
 
-    from hsmplanner import _core
-
     if not (every_mm > 0 and length_mm > 0):
         raise ValueError("tick spacing %g mm and length %g mm must be positive" % (every_mm, length_mm))
     names = [a.name for a in machine.rotary_axes]
@@ -102,11 +100,7 @@ def tool_axis_ticks(commands, machine, every_mm=5.0, length_mm=4.0):
         index = max(1, min(int(np.searchsorted(travelled, mark)), len(tips) - 1))
         share = (mark - travelled[index - 1]) / max(lengths[index - 1], 1e-12)
         tip = tips[index - 1] + share * (tips[index] - tips[index - 1])
-        if names:
-            angles_here = turns[index - 1] + share * (turns[index] - turns[index - 1])
-            axis = np.asarray(_core.forward_kinematics(machine, [0.0, 0.0, 0.0], list(angles_here))[1])
-        else:
-            axis = np.asarray(machine.tool_axis, dtype=float)
+        axis = _axes_of(machine, (turns[index - 1] + share * (turns[index] - turns[index - 1]))[None, :])[0]
         segments.append([tip, tip + length_mm * axis / np.linalg.norm(axis)])
     return np.asarray(segments).reshape(-1, 2, 3)
 
@@ -129,7 +123,8 @@ def _axes_of(machine, angles):
         return np.tile(np.asarray(machine.tool_axis, dtype=float), (len(angles), 1))
     padded = np.zeros((len(angles), 2))
     padded[:, :angles.shape[1]] = angles
-    return np.asarray([_core.forward_kinematics(machine, [0.0, 0.0, 0.0], list(row))[1] for row in padded])
+    axes = [_core.forward_kinematics(machine, [0.0, 0.0, 0.0], list(row))[1] for row in padded]
+    return np.asarray(axes, dtype=float).reshape(-1, 3)
 
 
 def interpolated_program(commands, machine, orientation="angles", max_turn_deg=MAX_TURN_DEG):
@@ -138,6 +133,10 @@ def interpolated_program(commands, machine, orientation="angles", max_turn_deg=M
     (`orientation="angles"`: LinuxCNC, the 840D's ORIAXES), blocks cut so that no axis turns more than
     `max_turn_deg` in one; or on the great circle between the blocks' axes ("vectors": the 840D's ORIVECT).
     A dict of (N, 3) `tip` and `axis` arrays and `move`, the index in `commands` of the block each comes from."""
+    _check_interpolation(orientation, max_turn_deg)
+    if isinstance(commands, (str, bytes)) or not hasattr(commands, "__iter__"):
+        raise TypeError("commands must be FreeCAD Path commands (a posted program's text goes to posted_program), "
+                        "got %s" % type(commands).__name__)
     index, tips, turns, _ = program_moves(commands, [axis.name for axis in machine.rotary_axes])
     return _interpolated(index, tips, turns, machine, orientation, max_turn_deg)
 
@@ -150,28 +149,33 @@ def posted_program(program, machine, orientation="angles", max_turn_deg=MAX_TURN
 
     from hsmplanner import feedsim
 
+    _check_interpolation(orientation, max_turn_deg)
     blocks = feedsim.simulate(program, machine, blocks=True, refuse_unknown_words=True).blocks
     motion = np.asarray(blocks["motion"])
     if np.any(motion >= 2):
         line = int(np.asarray(blocks["line"])[np.argmax(motion >= 2)])
         raise ValueError("line %d is an arc: the clearance of a posted program is checked on straight moves" % line)
-    if len(motion) == 0:
-        return _interpolated(np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 0)), machine,
-                             orientation, max_turn_deg)
     # From the first block's end: where the machine stands before the program is not the program's.
     count = len(machine.rotary_axes)
     return _interpolated(np.asarray(blocks["line"], dtype=np.int64), np.asarray(blocks["end"]),
                          np.asarray(blocks["rotary_end"])[:, :count], machine, orientation, max_turn_deg)
 
 
-def _interpolated(index, tips, turns, machine, orientation, max_turn_deg):
-    import numpy as np
-
+def _check_interpolation(orientation, max_turn_deg):
     if orientation not in ("angles", "vectors"):
         raise ValueError("orientation %r must be 'angles' (A/B/C interpolated linearly) or 'vectors' (great circle)"
                          % (orientation,))
     if not 1e-4 <= max_turn_deg <= 10.0:
         raise ValueError("max_turn_deg %g must be within [0.0001, 10] degrees" % max_turn_deg)
+
+
+def _interpolated(index, tips, turns, machine, orientation, max_turn_deg):
+    import numpy as np
+
+    bad = ~(np.isfinite(tips).all(axis=1) & np.isfinite(turns).all(axis=1))
+    if bad.any():
+        raise ValueError("block %d has a position or angle that is not a finite number: fix the program"
+                         % int(index[np.argmax(bad)]))
     pieces = np.ones(len(tips), dtype=np.int64)
     if orientation == "angles" and turns.shape[1] and len(tips) > 1:
         largest = np.max(np.abs(np.diff(turns, axis=0)), axis=1)
