@@ -282,9 +282,10 @@ private:
 // sweep follows the sphere's meridian.
 class SphereFamily : public SlicingFamily {
 public:
-  SphereFamily(const gp_Sphere& sphere, const Eigen::Vector3d& inward, const Eigen::Vector3d& onFace, const Box& box)
+  // A whole sphere crosses any volume it reaches: no size to take from the volume.
+  SphereFamily(const gp_Sphere& sphere, const Eigen::Vector3d& inward, const Eigen::Vector3d& onFace)
       : centre_(toEigen(sphere.Location().XYZ())), axis_(toEigen(sphere.Position().Direction().XYZ())),
-        radius_(sphere.Radius()), sign_(inward.dot(onFace - centre_) > 0.0 ? 1.0 : -1.0), box_(box) {}
+        radius_(sphere.Radius()), sign_(inward.dot(onFace - centre_) > 0.0 ? 1.0 : -1.0) {}
   double depth(const gp_Pnt& p) const override { return sign_ * ((toEigen(p.XYZ()) - centre_).norm() - radius_); }
   TopoDS_Shape surfaceAt(double d) const override {
     const double r = radius_ + sign_ * d;
@@ -310,7 +311,6 @@ public:
 private:
   Eigen::Vector3d centre_, axis_;
   double radius_, sign_;
-  Box box_;
 };
 
 }  // namespace
@@ -390,7 +390,7 @@ std::unique_ptr<SlicingFamily> familyOf(const TopoDS_Shape& solid, const TopoDS_
   // A torus is a surface of revolution too: offsets of its meridian, where the general offset surface would
   // make OCCT's splitter intersect offset B-splines (minutes, then invalid slices).
   if (surface.GetType() == GeomAbs_Cone) return std::make_unique<RevolutionFamily>(reference, surface.Cone().Axis(), box);
-  if (surface.GetType() == GeomAbs_Sphere) return std::make_unique<SphereFamily>(surface.Sphere(), inward, point, box);
+  if (surface.GetType() == GeomAbs_Sphere) return std::make_unique<SphereFamily>(surface.Sphere(), inward, point);
   if (surface.GetType() == GeomAbs_Torus)
     return std::make_unique<RevolutionFamily>(reference, surface.Torus().Axis(), box);
   return std::make_unique<OffsetFamily>(reference, box);
