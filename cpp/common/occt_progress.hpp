@@ -12,14 +12,14 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
-#include <mutex>
+#include <thread>
 
 namespace hsm {
 
 class OcctProgress : public Message_ProgressIndicator {
 public:
   OcctProgress(ProgressCallback callback, double from, double to)
-      : callback_(std::move(callback)), from_(from), to_(to) {}
+      : callback_(std::move(callback)), from_(from), to_(to), caller_(std::this_thread::get_id()) {}
 
   // After OCCT returns: throws what the callback threw (a Python error), or Cancelled when it said stop.
   void throwIfStopped(const std::string& what) const {
@@ -29,20 +29,18 @@ public:
 
 protected:
   void Show(const Message_ProgressScope&, const Standard_Boolean force) override { ask(force); }
-  // OCCT asks this between steps that need not report (one face pair's intersection, a loop of its threads):
-  // asking the callback here too hears a cancel within its 0.1 s, where Show may not come for long.
+  // OCCT asks this between steps that need not report (one face pair's intersection, the next pair): asking
+  // the callback here too hears a cancel within its 0.1 s, where Show may not come for long.
   Standard_Boolean UserBreak() override {
     ask(false);
     return cancelled_;
   }
 
 private:
-  // The callback at most every 0.1 s, never entered twice at once (OCCT's threads call UserBreak together):
-  // a thread that finds it busy goes on.
+  // The callback at most every 0.1 s, and only from the thread that started the operation: a GUI's callback
+  // (Qt, Python) belongs to it; OCCT's workers, were it run in parallel, only read cancelled_.
   void ask(bool force) {
-    if (!callback_ || cancelled_) return;
-    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
-    if (!lock.owns_lock()) return;
+    if (!callback_ || cancelled_ || std::this_thread::get_id() != caller_) return;
     const auto now = std::chrono::steady_clock::now();
     if (!force && shown_ && now - last_ < std::chrono::milliseconds(100)) return;
     shown_ = true;
@@ -58,7 +56,7 @@ private:
   ProgressCallback callback_;
   double from_, to_;
   std::atomic<bool> cancelled_{false};
-  std::mutex mutex_;
+  std::thread::id caller_;
   std::exception_ptr error_;
   bool shown_ = false;
   std::chrono::steady_clock::time_point last_;
