@@ -7,7 +7,7 @@ import numpy as np
 import FreeCADGui as Gui
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import OUT, GuiRun  # noqa: E402
+from gui_harness import OUT, GuiRun, scene_nodes  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -21,14 +21,7 @@ def panel():
 
 def scene_texts(node):
     """Every string of the SoText2 labels under a Coin node (the map's legend)."""
-    from pivy import coin
-
-    search = coin.SoSearchAction()
-    search.setType(coin.SoText2.getClassTypeId())
-    search.setInterest(coin.SoSearchAction.ALL)
-    search.apply(node)
-    paths = search.getPaths()
-    return [paths[i].getTail().string.getValues()[0] for i in range(paths.getLength())]
+    return [text.string.getValues()[0] for text in scene_nodes(node, "SoText2")]
 
 
 def analysis_open(source=None, name="FeedRateAnalysis"):

@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui as Gui
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import OUT, GuiRun  # noqa: E402
+from gui_harness import OUT, GuiRun, show_only  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -27,11 +27,6 @@ def accepted(op):
     """The operation's panel is closed and the operation recomputed with a path."""
     return not run.task_dialog_open() and run.valid(op) and len(op.Path.Commands) > 0
 
-
-def show_only(*objects):
-    for o in FreeCAD.ActiveDocument.Objects:
-        if o.ViewObject is not None:
-            o.ViewObject.Visibility = o in objects
 
 
 @run.step

@@ -13,7 +13,7 @@ import numpy as np
 from pivy import coin
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import GuiRun  # noqa: E402
+from gui_harness import GuiRun, show_only  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -74,11 +74,6 @@ def box_text(box):
 def within(inner, outer, slack):
     return bool(np.all(inner[0] >= outer[0] - slack) and np.all(inner[1] <= outer[1] + slack))
 
-
-def show_only(*objects):
-    for obj in FreeCAD.ActiveDocument.Objects:
-        if obj.ViewObject is not None:
-            obj.ViewObject.Visibility = obj in objects
 
 
 def view_the_path(op):

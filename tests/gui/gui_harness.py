@@ -19,6 +19,27 @@ import FreeCADGui as Gui
 from PySide2 import QtCore, QtWidgets
 
 OUT = os.environ.get("HSM_GUI_TEST_OUT", os.path.join(os.getcwd(), "gui-test"))
+
+
+def show_only(*objects):
+    """Only `objects` visible in the active document's 3D view."""
+    import FreeCAD
+
+    for obj in FreeCAD.ActiveDocument.Objects:
+        if obj.ViewObject is not None:
+            obj.ViewObject.Visibility = obj in objects
+
+
+def scene_nodes(node, type_name):
+    """Every Coin node of a type (e.g. "SoText2") under a scene node, in drawing order, cast to that type."""
+    from pivy import coin
+
+    search = coin.SoSearchAction()
+    search.setType(getattr(coin, type_name).getClassTypeId())
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.apply(node)
+    paths = search.getPaths()
+    return [coin.cast(paths[i].getTail(), type_name) for i in range(paths.getLength())]
 WATCHDOG_SECONDS = 300
 
 

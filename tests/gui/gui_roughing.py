@@ -13,7 +13,7 @@ import numpy as np
 from PySide2 import QtCore
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import OUT, GuiRun  # noqa: E402
+from gui_harness import OUT, GuiRun, scene_nodes, show_only  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -68,11 +68,6 @@ def hue_counts(name, bands):
     run.notes.setdefault("hue pixel counts (sampled)", {})[name] = counts
     return counts
 
-
-def show_only(*objects):
-    for obj in FreeCAD.ActiveDocument.Objects:
-        if obj.ViewObject is not None:
-            obj.ViewObject.Visibility = obj in objects
 
 
 @run.step
@@ -383,14 +378,7 @@ def check_study_maps(study):
 
 def legend_texts(node):
     """The strings of the SoText2 nodes under a scene node."""
-    from pivy import coin
-
-    search = coin.SoSearchAction()
-    search.setType(coin.SoText2.getClassTypeId())
-    search.setInterest(coin.SoSearchAction.ALL)
-    search.apply(node)
-    paths = search.getPaths()
-    texts = [paths[i].getTail().string.getValues() for i in range(paths.getLength())]
+    texts = [text.string.getValues() for text in scene_nodes(node, "SoText2")]
     return [t if isinstance(t, str) else t.getString() for values in texts for t in values]
 
 

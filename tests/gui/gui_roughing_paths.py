@@ -11,7 +11,7 @@ import FreeCADGui as Gui
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import GuiRun  # noqa: E402
+from gui_harness import GuiRun, scene_nodes, show_only  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -127,17 +127,8 @@ def mode_node(vobj):
 
 def drawn_polylines(node):
     """The points of each SoCoordinate3 under a scene node, as drawn (in the order of the moves)."""
-    from pivy import coin
-
-    search = coin.SoSearchAction()
-    search.setType(coin.SoCoordinate3.getClassTypeId())
-    search.setInterest(coin.SoSearchAction.ALL)
-    search.apply(node)
-    paths = search.getPaths()
-    lines = []
-    for i in range(paths.getLength()):
-        points = coin.cast(paths[i].getTail(), "SoCoordinate3").point.getValues()
-        lines.append(np.array([p.getValue() for p in points], dtype=float).reshape(-1, 3))
+    lines = [np.array([p.getValue() for p in coordinates.point.getValues()], dtype=float).reshape(-1, 3)
+             for coordinates in scene_nodes(node, "SoCoordinate3")]
     return [line for line in lines if len(line)]
 
 
@@ -229,11 +220,6 @@ def every_strategy(key, op, volume, stock, timeout):
             Gui.SendMsgToActiveView("ViewFit")
             run.screenshot("roughing_paths_%s_%s" % (key, strategy))
 
-
-def show_only(*objects):
-    for obj in FreeCAD.ActiveDocument.Objects:
-        if obj.ViewObject is not None:
-            obj.ViewObject.Visibility = obj in objects
 
 
 @run.step
