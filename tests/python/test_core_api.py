@@ -29,6 +29,15 @@ class ImportWithoutFreeCAD(unittest.TestCase):
         self.assertIn(os.path.join(mod_link, "python"), [os.path.normpath(p) for p in sys.path])
 
 
+class OneVersion(unittest.TestCase):
+    def test_package_xml_cmake_and_the_python_package_give_one_version(self):
+        # package.xml is the source: CMake reads it into the core, whose __version__ hsmplanner re-exports
+        metadata = FreeCAD.Metadata(os.path.join(REPO, "package.xml"))
+        self.assertRegex(metadata.Version, r"^\d+\.\d+\.\d+$")
+        self.assertEqual(hsmplanner.__version__, metadata.Version)
+        self.assertEqual(hsmplanner._core.__version__, metadata.Version)
+
+
 class ShapeSummaryOfPartShapes(unittest.TestCase):
     def test_summary_agrees_with_freecad_measures(self):
         part = Part.makeBox(30, 20, 10).cut(Part.makeCylinder(4, 10, FreeCAD.Vector(15, 10, 0)))
