@@ -604,10 +604,7 @@ def write_json(rows, path):
 __all__ = ["parse_range", "variants", "paper_grid", "variant_name", "short_name", "variant_moves", "simulate_variant", "run_variant", "score", "worst_slowdowns", "local_cluster", "study", "refine_k", "rank", "pareto_front", "write_csv", "write_json", "_core"]
 
 
-if __name__ == "__main__":  # python -m hsmplanner.study …: the command line (study_cli)
-    from hsmplanner.geometry import FREECAD_LIB
+if __name__ == "__main__":  # python3 -m hsmplanner.study …: the command line (study_cli), as hsm-study
+    from hsmplanner.study_cli import console_main
 
-    sys.path.append(FREECAD_LIB)  # FreeCAD's modules for /usr/bin/python3 (Debian's place)
-    from hsmplanner.study_cli import main
-
-    sys.exit(main())
+    sys.exit(console_main("python3 -m hsmplanner.study"))

@@ -1,6 +1,7 @@
-"""Command line of the strategy study, for batch use (python -m hsmplanner.study --help).
+"""Command line of the strategy study, for batch use (`hsm-study --help` where the package is installed,
+python3 -m hsmplanner.study --help from a clone).
 
-    python3 -m hsmplanner.study part.step --face Face4 --b1 Edge12 --b2 Edge20 --planes 0:180:15 \\
+    hsm-study part.step --face Face4 --b1 Edge12 --b2 Edge20 --planes 0:180:15 \\
         --k 0.25,0.5,0.75 --p 5,10,20 --four-step --feeds 4000 --workers 2 --csv study.csv
 
 Runs with FreeCAD's Python modules (freecadcmd, or /usr/bin/python3 that finds FreeCAD's library): the part is
@@ -20,8 +21,8 @@ def _numbers(text, what):
         raise argparse.ArgumentTypeError(str(error)) from None
 
 
-def parser():
-    p = argparse.ArgumentParser(prog="python -m hsmplanner.study", description="Rank finishing strategies of a face "
+def parser(prog="python3 -m hsmplanner.study"):
+    p = argparse.ArgumentParser(prog=prog, description="Rank finishing strategies of a face "
                                 "between two boundaries by simulated machining time and slowdowns.")
     p.add_argument("part", help="the part, a BREP or STEP file")
     p.add_argument("--face", required=True, help="the bottom face, e.g. Face4")
@@ -72,12 +73,22 @@ def element(shape, name, kind):
                          % (kind, name, kind.capitalize(), kind.capitalize())) from None
 
 
-def main(argv=None):
+def console_main(prog):
+    """The command line run by /usr/bin/python3 (hsm-study, python3 -m hsmplanner.study): FreeCAD's modules are
+    found in Debian's place first."""
+    from hsmplanner.geometry import FREECAD_LIB
+
+    if FREECAD_LIB not in sys.path:
+        sys.path.append(FREECAD_LIB)
+    return main(prog=prog)
+
+
+def main(argv=None, prog="python3 -m hsmplanner.study"):
     import FreeCAD  # noqa: F401 (before Part and the core, as freecadcmd loads them)
 
     from hsmplanner import feedsim, study
 
-    args = parser().parse_args(argv)
+    args = parser(prog).parse_args(argv)
     try:
         median = {"with": (True,), "without": (False,), "both": (False, True)}[args.median]
         grid = study.variants(planes_deg=args.planes, k=args.k, p=args.p, median=median, four_step=args.four_step,
@@ -87,7 +98,7 @@ def main(argv=None):
         element(shape, args.face, "face")
         b1, b2 = element(shape, args.b1, "edge"), element(shape, args.b2, "edge")
     except ValueError as error:
-        print("hsmplanner.study: %s" % error, file=sys.stderr)
+        print("%s: %s" % (prog, error), file=sys.stderr)
         return 2
 
     def progress(done, row):
@@ -100,7 +111,7 @@ def main(argv=None):
         rows = study.study(shape, args.face, b1, b2, grid, workers=args.workers, cache_dir=args.cache,
                            progress=progress, scheduler=args.scheduler, scheduler_timeout_s=args.scheduler_timeout)
     except (ValueError, ImportError) as error:  # the scheduler (no answer, no workers) or Dask missing
-        print("\nhsmplanner.study: %s" % error, file=sys.stderr)
+        print("\n%s: %s" % (prog, error), file=sys.stderr)
         return 2
     sys.stderr.write("\n")
     for row in study.rank(rows, args.rank):

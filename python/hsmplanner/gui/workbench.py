@@ -1,12 +1,16 @@
 """The HSM Planner workbench. InitGui.py registers it; everything else is imported on activation."""
+import os
+
 import FreeCADGui
 
-from hsmplanner.resources import icon
+from hsmplanner.resources import RESOURCES_DIR, icon
 
 
 class HSMPlannerWorkbench(FreeCADGui.Workbench):
     MenuText = "HSM Planner"
-    ToolTip = "Plan and evaluate high-speed milling strategies: guide-curve finishing, feed-rate simulation"
+    # Which copy FreeCAD loaded (a clone in the user's Mod folder or the package's): Init.py loads one.
+    ToolTip = ("Plan and evaluate high-speed milling strategies: guide-curve finishing, feed-rate simulation "
+               "(from %s)" % os.path.dirname(RESOURCES_DIR))
     Icon = icon("HSMPlanner")
 
     def Initialize(self):
