@@ -19,8 +19,10 @@ CTEST := /usr/bin/ctest
 
 ASAN_DIR ?= build-asan
 FUZZ_SECONDS ?= 60
+# `make deb`: a build of its own (installed layout, Debian's hardening flags), the package written here
+PACKAGE_DIR ?= $(BUILD_DIR)/package
 
-.PHONY: all deps asan-deps configure build link test test-cpp test-python test-gui test-asan test-oracle fuzz demo bench clean
+.PHONY: all deps asan-deps package-deps configure build link test test-cpp test-python test-gui test-asan test-oracle fuzz demo bench deb test-package clean
 
 all: build
 
@@ -99,7 +101,28 @@ bench: build
 	scripts/run-freecadcmd.sh tests/bench/bench_partition.py
 	scripts/run-freecadcmd.sh tests/bench/bench_study.py
 
+# The Debian package (docs/packaging.md): freecad-hsmplanner_<version>_<arch>.deb in this folder, for
+# `apt install ./freecad-hsmplanner_*.deb`, checked by lintian (an error fails the target).
+package-deps: deps
+	@scripts/install-deps.sh scripts/debian-packages-deb.txt
+
+$(PACKAGE_DIR)/CMakeCache.txt: | package-deps
+	export DEB_BUILD_MAINT_OPTIONS=hardening=+all; \
+	CXXFLAGS="$$(dpkg-buildflags --get CXXFLAGS) $$(dpkg-buildflags --get CPPFLAGS)" \
+	  LDFLAGS="$$(dpkg-buildflags --get LDFLAGS)" \
+	  $(CMAKE) -S . -B $(PACKAGE_DIR) -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DHSM_PACKAGE=ON \
+	  -DHSM_BUILD_TESTS=OFF -DPython3_EXECUTABLE=$(PYTHON)
+
+deb: package-deps $(PACKAGE_DIR)/CMakeCache.txt
+	$(CMAKE) --build $(PACKAGE_DIR) -j $(JOBS)
+	rm -rf $(PACKAGE_DIR)/package
+	cd $(PACKAGE_DIR) && cpack -G DEB > cpack.log 2>&1 || { cat cpack.log; exit 1; }
+	rm -f freecad-hsmplanner_*.deb
+	cp $(PACKAGE_DIR)/package/freecad-hsmplanner_*.deb .
+	lintian --display-info freecad-hsmplanner_*.deb
+	@ls -l freecad-hsmplanner_*.deb
+
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so freecad-hsmplanner_*.deb
 
 endif

@@ -1,4 +1,5 @@
-# The Debian package's files (HSM_PACKAGE; the folders from packaging/layout.cmake).
+# The Debian package's files (HSM_PACKAGE, `make deb`; the folders from packaging/layout.cmake) and CPack's DEB
+# generator, which writes freecad-hsmplanner_<version>_<arch>.deb with dependencies found by dpkg-shlibdeps.
 
 # Everything a control field or the changelog says about the project is read from package.xml.
 function(hsm_package_xml variable pattern)
@@ -92,3 +93,36 @@ install(FILES ${CMAKE_BINARY_DIR}/hsm-feedsim.1.gz ${CMAKE_BINARY_DIR}/hsm-study
 install(FILES README.md packaging/copyright ${CMAKE_BINARY_DIR}/changelog.gz DESTINATION ${HSM_INSTALL_DOC_DIR})
 install(DIRECTORY docs/ DESTINATION ${HSM_INSTALL_DOC_DIR}/docs)
 install(DIRECTORY examples/ DESTINATION ${HSM_INSTALL_DOC_DIR}/examples)
+
+# Byte-compiled on installation (a user's FreeCAD cannot write the caches there), removed before removal.
+configure_file(packaging/postinst.in postinst @ONLY)
+configure_file(packaging/prerm.in prerm @ONLY)
+
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME freecad-hsmplanner)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
+set(CPACK_PACKAGE_DIRECTORY ${CMAKE_BINARY_DIR}/package)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${HSM_MAINTAINER}")
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "${hsm_homepage}")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "FreeCAD workbench for high-speed milling strategies (HSM Planner)")
+hsm_wrap(CPACK_PACKAGE_DESCRIPTION "${hsm_description}
+
+The HSM Planner workbench in FreeCAD's module folder, the hsm-feedsim and hsm-study commands, the machine \
+presets and the examples.")
+# The core's libraries by dpkg-shlibdeps; what the Python layer imports, by hand; the core is built for one
+# Python version.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+math(EXPR hsm_next_minor "${Python3_VERSION_MINOR} + 1")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "freecad (>= 1.0), \
+python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}~), python3 (<< ${Python3_VERSION_MAJOR}.${hsm_next_minor}), \
+python3-numpy, python3-matplotlib, python3-pivy, \
+python3-pyside2.qtcore, python3-pyside2.qtgui, python3-pyside2.qtwidgets")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-distributed")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${CMAKE_BINARY_DIR}/postinst ${CMAKE_BINARY_DIR}/prerm)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)
+set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
+include(CPack)
