@@ -122,6 +122,12 @@ deb: package-deps $(PACKAGE_DIR)/CMakeCache.txt
 	lintian --display-info freecad-hsmplanner_*.deb
 	@ls -l freecad-hsmplanner_*.deb
 
+# The package installed into a clean Debian 13 root (debootstrap into $(BUILD_DIR)/package-test, FreeCAD from
+# Debian's archive) and used there outside the source tree, then removed: nothing may be left (docs/packaging.md).
+# Not part of `make test`: the first run makes the root (minutes of downloads), later runs reuse it.
+test-package: deb
+	tests/package/run.sh $$(ls freecad-hsmplanner_*.deb) $(BUILD_DIR)/package-test
+
 clean:
 	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so freecad-hsmplanner_*.deb
 

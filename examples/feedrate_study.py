@@ -10,6 +10,7 @@ _histograms.png/_map.png, and feedrate_comparison.csv/.md (simulated time agains
 import csv
 import json
 import os
+import shutil
 import subprocess
 
 import FreeCAD
@@ -21,7 +22,10 @@ from hsmplanner.scripting import output_dir, run_script
 
 FEED_MM_MIN = 4000.0
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+# the clone's build, or the command on the PATH (the Debian package's, with this example in /usr/share/doc)
 FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
+if not os.path.exists(FEEDSIM):
+    FEEDSIM = shutil.which("hsm-feedsim") or FEEDSIM
 
 
 def main(argv):
