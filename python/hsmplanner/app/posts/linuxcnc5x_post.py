@@ -6,7 +6,8 @@ The machine (--machine; default the operations' Machine, else linuxcnc-2.9-xyzac
 Machine the operations were computed for (their A B C are its angles: another machine is refused, naming both): the program may turn only its rotary axes,
 within their travel. G64 P blends within the tolerance; feeds in mm/min.
 
-    freecad: Job > Output > Processor 'hsm_linuxcnc5x' (the workbench links this file into the Macro folder)
+    freecad: Job > Output > Processor 'hsm_linuxcnc5x' (a clone's `make build` links this file into the Macro
+             folder, the Debian package into CAM's folder of posts)
     python:  linuxcnc5x_post.export([job] + job.Operations.Group, "part.ngc", "--machine=linuxcnc-2.9-xyzac-trt")
 """
 import argparse

@@ -10,7 +10,8 @@ examples; TRAFOOF before the next); the orientation as those angles (--orientati
 the tool-axis vector A3= B3= C3= they give on --machine (--orientation=vectors, with ORIWKS ORIVECT: the
 controller interpolates the tool axis on the great circle in the workpiece frame and uses its own kinematics).
 
-    freecad: Job > Output > Processor 'hsm_siemens840d' (the workbench links this file into the Macro folder)
+    freecad: Job > Output > Processor 'hsm_siemens840d' (a clone's `make build` links this file into the Macro
+             folder, the Debian package into CAM's folder of posts)
     python:  siemens840d_post.export([job] + job.Operations.Group, "part.mpf", "--tolerance=0.01")
 """
 import argparse
