@@ -23,7 +23,7 @@ make_base() {
     apt-get update && apt-get install -y --no-install-recommends freecad xvfb xauth && apt-get clean &&
     { id hsm || useradd --create-home --shell /bin/bash hsm; }' > "$base.log" 2>&1 ||
     { tail -30 "$base.log" >&2; exit 1; }
-  touch "$base/.hsm-test-root"
+  as_root touch "$base/.hsm-test-root"
 }
 
 # In a mount namespace of its own: the overlay, the package and the test files in it, then inside.sh in it.
