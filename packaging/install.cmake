@@ -92,7 +92,8 @@ install(FILES ${CMAKE_BINARY_DIR}/hsm-feedsim.1.gz ${CMAKE_BINARY_DIR}/hsm-study
 # The documentation: the README and docs/ (their links kept), the examples, copyright and changelog.
 install(FILES README.md packaging/copyright ${CMAKE_BINARY_DIR}/changelog.gz DESTINATION ${HSM_INSTALL_DOC_DIR})
 install(DIRECTORY docs/ DESTINATION ${HSM_INSTALL_DOC_DIR}/docs)
-install(DIRECTORY examples/ DESTINATION ${HSM_INSTALL_DOC_DIR}/examples)
+install(DIRECTORY examples/ DESTINATION ${HSM_INSTALL_DOC_DIR}/examples
+  FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 
 # Byte-compiled on installation (a user's FreeCAD cannot write the caches there), removed before removal.
 configure_file(packaging/postinst.in postinst @ONLY)
