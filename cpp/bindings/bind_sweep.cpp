@@ -91,7 +91,9 @@ void bindSweep(py::module_& m) {
       .def_readwrite("tolerance", &SweepSettings::tolerance)
       .def_readwrite("ramp_angle_deg", &SweepSettings::rampAngleDeg)
       .def_readwrite("clearance", &SweepSettings::clearance)
-      .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection);
+      .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection)
+      .def_readwrite("step_up_minimum", &SweepSettings::stepUpMinimum, "mm between intermediate levels; 0: none")
+      .def_readwrite("step_up_scallop", &SweepSettings::stepUpScallop, "mm of staircase left across a wall");
   std::vector<std::string> kinds;
   for (MoveKind k : {MoveKind::Rapid, MoveKind::Plunge, MoveKind::Ramp, MoveKind::Cut, MoveKind::Link})
     kinds.push_back(moveKindName(k));
@@ -99,6 +101,9 @@ void bindSweep(py::module_& m) {
   py::class_<Pass>(m, "Pass")
       .def_readonly("sub_volume", &Pass::subVolume)
       .def_readonly("ring", &Pass::ring, "0 for the domain's boundary, k for its k-th offset")
+      .def_readonly("closed", &Pass::closed, "a loop, or an open path")
+      .def_readonly("intermediate", &Pass::intermediate, "on a level between a slice's far and near sides")
+      .def_readonly("depth", &Pass::depth, "the ring's offset inward from the level's domain, mm laid flat")
       .def_readonly("points", &Pass::points);
   py::class_<SweepResult>(m, "SweepResult", "Lengths in mm")
       .def_property_readonly("moves", [](const SweepResult& r) { return moveArrays(r.moves); })

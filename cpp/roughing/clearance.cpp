@@ -216,27 +216,32 @@ ClearanceReport ClearanceChecker::check(const std::vector<ToolMove>& moves, cons
   }
   const geometry::TriangleMesh& mesh = impl_->mesh;
   const double deflection = impl_->deflection;
-  const double r = cutter.radius(), length = cutter.stickOut;
+  // The cutter is its core — a cylinder of radius R − r standing r above the tip, up to the stick-out — grown
+  // by a ball of its corner radius r (a torus end mill; a ball for r = R, a flat end for r = 0): the distance
+  // to it is the distance to the core less r, exactly.
+  const double corner = cutter.corner(), r = cutter.radius() - corner, length = cutter.stickOut - corner;
   const double reach = std::max(limit, 0.0) + 2.0;  // triangles farther than this from the tool do not matter
   std::vector<int> seen(mesh.triangles.size(), -1);
   int stamp = 0;
   ClearanceReport report;
   report.minimum = std::numeric_limits<double>::infinity();
+  report.moveMinimum.assign(moves.size(), reach);
   std::vector<Eigen::Vector3d> local(3);
   auto checkAt = [&](const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, int move) {
     const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
     double least = reach;
-    impl_->grid.near(tip - axis * reach, tip + axis * length, r + reach, seen, stamp++, [&](int t) {
+    impl_->grid.near(tip - axis * reach, tip + axis * cutter.stickOut, cutter.radius() + reach, seen, stamp++, [&](int t) {
       for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3d d = mesh.vertices[mesh.triangles[t][k]] - tip;
-        local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d));
+        local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d) - corner);  // from the core's bottom
       }
       // Quick rejections: wholly above the stick-out, or farther across than the reach.
       if (std::min({local[0].z(), local[1].z(), local[2].z()}) > length) return;
-      if (std::max({local[0].z(), local[1].z(), local[2].z()}) < -least) return;
-      least = std::min(least, toolDistance(local, r, length));
+      if (std::max({local[0].z(), local[1].z(), local[2].z()}) < -least - corner) return;
+      least = std::min(least, toolDistance(local, r, length) - corner);
     });
     least -= deflection;
+    report.moveMinimum[move] = std::min(report.moveMinimum[move], least);
     ++report.positions;
     if (least < limit) ++report.tooClose;
     if (least < report.minimum) {

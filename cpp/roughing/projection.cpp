@@ -79,7 +79,14 @@ constexpr double kBendSpan = 2.0 * M_PI / 180.0;
 class CylinderProjection : public Projection {
 public:
   explicit CylinderProjection(const Angles& angles) : angles_(angles) {}
-  void setLevel(double tipHeight, const geometry::TriangleMesh&) override { r_ = tipHeight; }
+  void setLevel(double tipHeight, const geometry::TriangleMesh& slice) override {
+    r_ = tipHeight;
+    largest_ = smallest_ = 1.0;
+    for (const Eigen::Vector3d& p : slice.vertices) {
+      const double scale = height(p) / r_;
+      largest_ = std::max(largest_, scale), smallest_ = std::min(smallest_, scale);
+    }
+  }
   double height(const Eigen::Vector3d& p) const override { return angles_.radial(p).norm(); }
   cl::IntPoint plane(const Eigen::Vector3d& p) const override { return toInt(r_ * angles_.angle(p), angles_.along(p)); }
   Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
@@ -96,10 +103,14 @@ public:
     return std::abs(angles_.angle(a) - angles_.angle(b)) > kBendSpan;
   }
   bool skip(const Eigen::Vector3d (&p)[3]) const override { return angles_.span(p) >= M_PI; }
+  // Round the axis a flat millimetre at the level's radius is ρ/r true millimetres at radius ρ.
+  Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override { return {height(p) / r_, 1.0}; }
+  double largestScale() const override { return largest_; }
+  double smallestScale() const override { return smallest_; }
 
 private:
   Angles angles_;
-  double r_ = 1.0;
+  double r_ = 1.0, largest_ = 1.0, smallest_ = 1.0;
 };
 
 class RevolutionProjection : public Projection {

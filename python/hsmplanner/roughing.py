@@ -124,14 +124,17 @@ def cutter(kind="torus", diameter=None, corner_radius=None, flute_length=None, s
 
 
 def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=None, allowance=None, tolerance=None,
-          ramp_angle_deg=None, clearance=None, progress=None):
+          ramp_angle_deg=None, clearance=None, step_up_minimum=None, step_up_scallop=None, progress=None):
     """The sub-volumes of a Partition swept by contour-parallel passes (S1–S5; S4 and S5 on offsets of planes,
     cylinders and surfaces of revolution, not of free-form faces): a
     SweepResult whose `moves` are arrays (tip, axis, kind, sub_volume), with its passes and lengths. `volume`
-    is the RemovalSolid the partition came from; `part` and `stock` the shapes. ValueError for bad settings."""
+    is the RemovalSolid the partition came from; `part` and `stock` the shapes. Intermediate levels inside each
+    slice where the part leans (step-up): no nearer than `step_up_minimum` mm to each other (0: none, one level
+    per slice as the paper), added while the staircase left across a wall exceeds `step_up_scallop` mm.
+    ValueError for bad settings."""
     settings = core_settings(_core.roughing.SweepSettings, cutter=tool, radial_engagement=radial_engagement,
                              allowance=allowance, tolerance=tolerance, ramp_angle_deg=ramp_angle_deg,
-                             clearance=clearance)
+                             clearance=clearance, step_up_minimum=step_up_minimum, step_up_scallop=step_up_scallop)
     return _core.roughing.sweep(partition_result, _solid(volume), as_brep(part), as_brep(stock), settings, progress)
 
 

@@ -61,15 +61,17 @@ double distanceToLoop(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3
   return best;
 }
 
-// Independent of the generator: OCCT's exact distance from the part to a cylinder of the tool's radius from
-// its tip up the axis over the stick-out (it holds the torus tool: a check on it is on the safe side).
+// Independent of the generator: OCCT's exact distance from the part to the torus tool, as the distance to its
+// core (a cylinder of radius R − r standing r above the tip, over the stick-out) less its corner radius r.
 double clearance(const TopoDS_Shape& part, const ToolMove& move, const Cutter& cutter) {
-  const gp_Ax2 axis(gp_Pnt(move.tip.x(), move.tip.y(), move.tip.z()), gp_Dir(move.axis.x(), move.axis.y(), move.axis.z()));
-  const TopoDS_Shape tool = BRepPrimAPI_MakeCylinder(axis, cutter.radius(), cutter.stickOut).Shape();
-  BRepExtrema_DistShapeShape distance(tool, part);
+  const Eigen::Vector3d base = move.tip + cutter.corner() * move.axis.normalized();
+  const gp_Ax2 axis(gp_Pnt(base.x(), base.y(), base.z()), gp_Dir(move.axis.x(), move.axis.y(), move.axis.z()));
+  const TopoDS_Shape core =
+      BRepPrimAPI_MakeCylinder(axis, cutter.radius() - cutter.corner(), cutter.stickOut - cutter.corner()).Shape();
+  BRepExtrema_DistShapeShape distance(core, part);
   EXPECT_TRUE(distance.IsDone());
   BRepClass3d_SolidClassifier inside(part, axis.Location(), 1e-7);
-  return inside.State() == TopAbs_IN ? -1.0 : distance.Value();
+  return inside.State() == TopAbs_IN ? -1.0 : distance.Value() - cutter.corner();
 }
 }  // namespace
 
@@ -82,19 +84,22 @@ TEST(Sweep, SlotPlanesKeepOneAxisTheEngagementAndTheAllowance) {
   // S1: every tool axis is the same, normal to the slicing planes, out through the top face.
   for (const ToolMove& m : r.moves) EXPECT_GT(m.axis.dot(r.moves.front().axis), 1.0 - 1e-12);
   EXPECT_GT(r.moves.front().axis.dot(-partition.subVolumes.front().surface.direction), 1.0 - 1e-12);
-  // Neighbouring passes of a level are the radial engagement apart (0.7 × 8 = 5.6 mm), everywhere on them.
+  // Neighbouring passes of a slice's main level are as far apart as their rings' offsets say: the radial
+  // engagement (0.7 × 8 = 5.6 mm), less for a ring between that keeps an island from being left.
   const double step = settings.radialEngagement * settings.cutter.diameter;
   int pairs = 0;
   for (const Pass& inner : r.passes) {
-    if (inner.ring == 0) continue;
+    if (inner.ring == 0 || inner.intermediate) continue;
     std::vector<const Pass*> outer;
     for (const Pass& p : r.passes)
-      if (p.subVolume == inner.subVolume && p.ring == inner.ring - 1) outer.push_back(&p);
+      if (p.subVolume == inner.subVolume && p.ring == inner.ring - 1 && !p.intermediate) outer.push_back(&p);
     ASSERT_FALSE(outer.empty());
+    const double apart = inner.depth - outer.front()->depth;
+    EXPECT_LE(apart, step + 1e-9);
     for (const Eigen::Vector3d& q : inner.points) {
       double d = std::numeric_limits<double>::infinity();
       for (const Pass* p : outer) d = std::min(d, distanceToLoop(q, p->points));
-      EXPECT_NEAR(d, step, 0.05) << "sub-volume " << inner.subVolume << " ring " << inner.ring;
+      EXPECT_NEAR(d, apart, 0.05) << "sub-volume " << inner.subVolume << " ring " << inner.ring;
     }
     ++pairs;
   }
@@ -132,8 +137,11 @@ TEST(Sweep, EntriesRampIntoMaterialAndLinksRetractAlongTheAxis) {
     if (m.kind == MoveKind::Ramp) {
       EXPECT_LE(-along, slope * across * 1.001 + 1e-6) << "move " << i;
     }
-    if (m.kind == MoveKind::Cut || m.kind == MoveKind::Link) {
+    if (m.kind == MoveKind::Cut) {
       EXPECT_NEAR(along, 0.0, 1e-9) << "move " << i;
+    }
+    if (m.kind == MoveKind::Link) {  // at a level, or from one level of a slice to another
+      EXPECT_LE(std::abs(along), 8.0 + 1e-9) << "move " << i;
     }
   }
   // Every retract ends at one height above the stock, along the axis.
