@@ -44,6 +44,21 @@ py::dict moveArrays(const std::vector<ToolMove>& moves) {
   return d;
 }
 
+py::array_t<double> pointArray(const std::vector<Eigen::Vector3d>& points) {
+  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t(3)});
+  for (size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) out.mutable_at(static_cast<py::ssize_t>(i), k) = points[i][k];
+  return out;
+}
+
+RestStock restFrom(const py::array_t<double>& points, double spacing) {
+  if (points.ndim() != 2 || points.shape(1) != 3) throw InputError("rest stock points must be an (N, 3) array");
+  RestStock rest;
+  rest.spacing = spacing;
+  for (py::ssize_t i = 0; i < points.shape(0); ++i) rest.points.emplace_back(points.at(i, 0), points.at(i, 1), points.at(i, 2));
+  return rest;
+}
+
 std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array_t<double>& axes,
                                 const std::optional<py::array_t<long>>& kinds = std::nullopt) {
   if (tips.ndim() != 2 || tips.shape(1) != 3 || axes.ndim() != 2 || axes.shape(1) != 3 || axes.shape(0) != tips.shape(0))
@@ -67,6 +82,19 @@ std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array
   }
   return moves;
 }
+
+// Operations as (moves dict, Cutter) pairs: the runs of a program of several tools.
+std::vector<ToolRun> runsFrom(const std::vector<py::tuple>& runs) {
+  std::vector<ToolRun> out;
+  for (const py::tuple& run : runs) {
+    if (run.size() != 2) throw InputError("each run is (moves, cutter): moves a dict of tip, axis and kind arrays");
+    const py::dict d = run[0].cast<py::dict>();
+    out.push_back({movesFrom(d["tip"].cast<py::array_t<double>>(), d["axis"].cast<py::array_t<double>>(),
+                             d["kind"].cast<py::array_t<long>>()),
+                   run[1].cast<Cutter>()});
+  }
+  return out;
+}
 }  // namespace
 
 void bindSweep(py::module_& m) {
@@ -83,6 +111,14 @@ void bindSweep(py::module_& m) {
       .def_readwrite("holder_diameter", &Cutter::holderDiameter)
       .def_readwrite("holder_length", &Cutter::holderLength)
       .def("profile_radius", &Cutter::profileRadius, py::arg("height"), "radius at a height above the tip");
+  py::class_<RestStock>(m, "RestStock", "Stock a previous operation left: points `spacing` mm apart, beyond the allowance")
+      .def(py::init<>())
+      .def(py::init(&restFrom), py::arg("points"), py::arg("spacing"))
+      .def_property_readonly("points", [](const RestStock& r) { return pointArray(r.points); }, "(N, 3), mm")
+      .def_readonly("spacing", &RestStock::spacing, "mm; each point stands for a cube of that side")
+      .def_property_readonly("volume", [](const RestStock& r) { return double(r.points.size()) * std::pow(r.spacing, 3); },
+                             "mm³, as the points stand for it")
+      .def("__len__", [](const RestStock& r) { return r.points.size(); });
   py::class_<SweepSettings>(m, "SweepSettings", "Sweeping of the sub-volumes (mm, degrees)")
       .def(py::init<>())
       .def_readwrite("cutter", &SweepSettings::cutter)
@@ -93,7 +129,8 @@ void bindSweep(py::module_& m) {
       .def_readwrite("clearance", &SweepSettings::clearance)
       .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection)
       .def_readwrite("step_up_minimum", &SweepSettings::stepUpMinimum, "mm between intermediate levels; 0: none")
-      .def_readwrite("step_up_scallop", &SweepSettings::stepUpScallop, "mm of staircase left across a wall");
+      .def_readwrite("step_up_scallop", &SweepSettings::stepUpScallop, "mm of staircase left across a wall")
+      .def_readwrite("rest", &SweepSettings::rest, "rest roughing: cut only where the tool reaches this stock");
   std::vector<std::string> kinds;
   for (MoveKind k : {MoveKind::Rapid, MoveKind::Plunge, MoveKind::Ramp, MoveKind::Cut, MoveKind::Link})
     kinds.push_back(moveKindName(k));
@@ -166,7 +203,9 @@ void bindSweep(py::module_& m) {
       .def_readwrite("threads", &RemovalSettings::threads, "0: all cores")
       .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part")
       .def_readwrite("stock_mesh_stride", &RemovalSettings::stockMeshStride,
-                     "> 0: the stock left as blocks of stride x stride rays (0: none)");
+                     "> 0: the stock left as blocks of stride x stride rays (0: none)")
+      .def_readwrite("rest_spacing", &RemovalSettings::restSpacing,
+                     "> 0: the stock left beyond the allowance as points this far apart (rest roughing), mm");
   py::class_<RapidFault>(m, "RapidFault", "A rapid that cuts the stock left")
       .def_readonly("move", &RapidFault::move, "index of the rapid in the moves")
       .def_readonly("at", &RapidFault::at, "the tip where it first cuts, mm")
@@ -197,12 +236,8 @@ void bindSweep(py::module_& m) {
       .def_readonly("gouge_at", &RemovalResult::gougeAt)
       .def_readonly("rapid_faults", &RemovalResult::rapidFaults, "rapids that cut the stock left (faults)")
       .def_readonly("rapid_volume", &RemovalResult::rapidVolume, "mm³ the rapids take out")
-      .def_property_readonly("surface_points", [](const RemovalResult& r) {
-        py::array_t<double> out({static_cast<py::ssize_t>(r.surfacePoints.size()), py::ssize_t(3)});
-        for (size_t i = 0; i < r.surfacePoints.size(); ++i)
-          for (int k = 0; k < 3; ++k) out.mutable_at(static_cast<py::ssize_t>(i), k) = r.surfacePoints[i][k];
-        return out;
-      })
+      .def_property_readonly("surface_points", [](const RemovalResult& r) { return pointArray(r.surfacePoints); })
+      .def_readonly("rest", &RemovalResult::rest, "the stock left beyond the allowance (with rest_spacing)")
       .def_property_readonly("thickness", [](const RemovalResult& r) { return py::array_t<double>(r.thickness.size(), r.thickness.data()); })
       .def_property_readonly("weight", [](const RemovalResult& r) { return py::array_t<double>(r.weight.size(), r.weight.data()); })
       .def_readonly("thickness_mean", &RemovalResult::thicknessMean)
@@ -234,22 +269,35 @@ void bindSweep(py::module_& m) {
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
       py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
   m.def(
+      "simulate_removal_runs",
+      [](const std::vector<py::tuple>& runs, const std::string& stockBrep, const std::string& partBrep,
+         RemovalSettings settings, const py::object& progress) {
+        const std::vector<ToolRun> toolRuns = runsFrom(runs);
+        const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
+        settings.progress = progressCallback(progress);
+        py::gil_scoped_release release;
+        return guarded("material removal", [&] { return simulateRemoval(toolRuns, stock, part, settings); });
+      },
+      py::arg("runs"), py::arg("stock_brep"), py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
+  m.def(
       "keep_rapids_out_of_stock",
       [](const py::array_t<double>& tips, const py::array_t<double>& axes, const py::array_t<long>& kinds,
          const Cutter& cutter, const std::string& stockBrep, const std::string& partBrep, RemovalSettings settings,
-         double margin, const py::object& progress) {
+         double margin, const py::object& progress, const std::vector<py::tuple>& before) {
         const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const std::vector<ToolRun> earlier = runsFrom(before);
         const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
         settings.progress = progressCallback(progress);
         py::gil_scoped_release release;
         RapidsMended mended = guarded("rapids in stock", [&] {
-          return keepRapidsOutOfStock(moves, cutter, stock, part, settings, margin);
+          return keepRapidsOutOfStock(moves, cutter, stock, part, settings, margin, earlier);
         });
         py::gil_scoped_acquire acquire;
         return py::make_tuple(moveArrays(mended.moves), mended.mended);
       },
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
-      py::arg("part_brep"), py::arg("settings"), py::arg("margin") = 1.0, py::arg("progress") = py::none());
+      py::arg("part_brep"), py::arg("settings"), py::arg("margin") = 1.0, py::arg("progress") = py::none(),
+      py::arg("before") = std::vector<py::tuple>{});
 }
 
 }  // namespace hsm::bindings

@@ -103,8 +103,13 @@ public:
     return std::abs(angles_.angle(a) - angles_.angle(b)) > kBendSpan;
   }
   bool skip(const Eigen::Vector3d (&p)[3]) const override { return angles_.span(p) >= M_PI; }
-  // Round the axis a flat millimetre at the level's radius is ρ/r true millimetres at radius ρ.
-  Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override { return {height(p) / r_, 1.0}; }
+  // Round the axis a flat millimetre at the level's radius is ρ/r true millimetres at radius ρ along the arc;
+  // across to a radial tool axis Δθ away the distance is ρ·sin Δθ, shorter: out to the reach, the scale
+  // that holds at its end (x / asin x of the reach over ρ).
+  Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
+    const double rho = height(p), x = std::min(0.99, reach_ / std::max(rho, 1e-6));
+    return {rho / r_ * (x > 1e-9 ? x / std::asin(x) : 1.0), 1.0};
+  }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
 

@@ -30,38 +30,28 @@ cl::IntPoint pointAlong(const cl::Path& p, const std::vector<double>& s, double 
           static_cast<cl::cInt>(std::llround(double(a.Y) + f * double(b.Y - a.Y)))};
 }
 
-// Whether b lies on the straight line from a to c (within 0.1 µm): a point the loop was read at, not a corner.
-bool between(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
-  const double ux = double(c.X - a.X), uy = double(c.Y - a.Y), vx = double(b.X - a.X), vy = double(b.Y - a.Y);
-  const double length = std::hypot(ux, uy);
-  return length > 0.0 && std::abs(ux * vy - uy * vx) / length <= 1.0 && ux * vx + uy * vy > 0.0 &&
-         ux * vx + uy * vy < length * length;
-}
-
-// The loop's points from `span.from` to `span.to` mm along it, ends included, without the points it was read
-// at along straight edges.
-cl::Path piece(const cl::Path& p, const std::vector<double>& s, const Span& span) {
+// The loop's own points (`own`: not one it was only read at) from `span.from` to `span.to` mm along it, and
+// its ends. (A loop's points are where its moves must turn, or where a surface laid flat needs them.)
+cl::Path piece(const cl::Path& p, const std::vector<char>& own, const std::vector<double>& s, const Span& span) {
   cl::Path out{pointAlong(p, s, span.from)};
   const double total = s.back();
   for (int wrap = -1; wrap <= 1; ++wrap)
     for (size_t i = 0; i < p.size(); ++i) {
       const double t = s[i] + wrap * total;
-      if (t > span.from && t < span.to) out.push_back(p[i]);
+      if (own[i] && t > span.from && t < span.to) out.push_back(p[i]);
     }
   out.push_back(pointAlong(p, s, span.to));
-  cl::Path kept{out.front()};
-  for (size_t i = 1; i + 1 < out.size(); ++i)
-    if (!between(kept.back(), out[i], out[i + 1])) kept.push_back(out[i]);
-  kept.push_back(out.back());
-  return kept;
+  return out;
 }
 
 // The open pieces of loop p (a point of which is not fresh) where its points are fresh, lengthened by
 // `lead` at both ends and joined where they meet; or the whole loop, closed, when they cover it.
-void piecesOf(cl::Path p, std::vector<char> fresh, double lead, int ring, std::vector<FlatPass>& out) {
+void piecesOf(cl::Path p, std::vector<char> own, std::vector<char> fresh, double lead, int ring,
+              std::vector<FlatPass>& out) {
   const size_t n = p.size();
   const size_t first = static_cast<size_t>(std::find(fresh.begin(), fresh.end(), 0) - fresh.begin());
   std::rotate(p.begin(), p.begin() + first, p.end());  // start on a point that is not fresh
+  std::rotate(own.begin(), own.begin() + first, own.end());
   std::rotate(fresh.begin(), fresh.begin() + first, fresh.end());
   std::vector<double> s(n + 1, 0.0);
   for (size_t i = 1; i <= n; ++i) s[i] = s[i - 1] + pathLength({p[i - 1], p[i % n]});
@@ -86,7 +76,7 @@ void piecesOf(cl::Path p, std::vector<char> fresh, double lead, int ring, std::v
       return;
     }
   }
-  for (const Span& span : spans) out.push_back({piece(p, s, span), false, ring});
+  for (const Span& span : spans) out.push_back({piece(p, own, s, span), false, ring});
 }
 
 }  // namespace
@@ -112,7 +102,7 @@ std::vector<double> stepUpHeights(double low, double high, const DomainAt& domai
 }
 
 std::vector<FlatPass> passesBeyond(const Rings& rings, const cl::Paths& cleared, double width, double lead,
-                                   double spacing, double tolerance) {
+                                   double spacing, double tolerance, const cl::Paths* within) {
   std::vector<FlatPass> out;
   const double beyond = std::max(width, clearedMargin(tolerance));
   const cl::Paths done = cleared.empty() ? cl::Paths{} : offset(cleared, beyond, tolerance);
@@ -120,16 +110,23 @@ std::vector<FlatPass> passesBeyond(const Rings& rings, const cl::Paths& cleared,
     for (const cl::Path& loop : rings.loops[k]) {
       if (loop.size() < 3) continue;
       const size_t first = out.size();
-      if (done.empty()) {
+      if (done.empty() && !within) {
         out.push_back({loop, true, static_cast<int>(k)});
       } else {
-        cl::Paths dense{loop};
-        densify(dense, spacing);
-        std::vector<char> fresh(dense[0].size());
+        // The loop read at points `spacing` apart, its own points marked.
+        cl::Path dense;
+        std::vector<char> own;
+        for (size_t i = 0; i < loop.size(); ++i) {
+          cl::Paths edge{{loop[i], loop[(i + 1) % loop.size()]}};
+          densify(edge, spacing, false);
+          for (size_t j = 0; j + 1 < edge[0].size(); ++j) dense.push_back(edge[0][j]), own.push_back(j == 0);
+        }
+        std::vector<char> fresh(dense.size());
         size_t count = 0;
-        for (size_t i = 0; i < dense[0].size(); ++i) count += (fresh[i] = !insidePaths(dense[0][i], done));
+        for (size_t i = 0; i < dense.size(); ++i)
+          count += (fresh[i] = !insidePaths(dense[i], done) && (!within || insidePaths(dense[i], *within)));
         if (count == fresh.size()) out.push_back({loop, true, static_cast<int>(k)});
-        else if (count > 0) piecesOf(dense[0], fresh, lead, static_cast<int>(k), out);
+        else if (count > 0) piecesOf(dense, own, fresh, lead, static_cast<int>(k), out);
       }
       for (size_t i = first; i < out.size(); ++i) out[i].depth = rings.depths[k];
     }

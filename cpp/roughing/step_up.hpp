@@ -38,11 +38,12 @@ struct Rings {
 };
 
 // The loops of a level (`rings`) kept where they run more than `width` mm beyond `cleared` (the
-// domain of a level below, already cut: the material above it is gone): the pieces of each loop out there,
-// each lengthened by `lead` mm at both ends along the loop into the cleared side (the tool enters and leaves
-// there, out of the material), pieces nearer than that joined, a loop wholly out there kept closed. Loops
-// are read at points `spacing` mm apart.
+// domain of a level below, already cut: the material above it is gone) and inside `within` (where the tool
+// finds stock a previous operation left; null: everywhere): the pieces of each loop there, each lengthened by
+// `lead` mm at both ends along the loop into the cleared side (the tool enters and leaves there, out of the
+// material), pieces nearer than that joined, a loop wholly there kept closed. Loops are read at points
+// `spacing` mm apart.
 std::vector<FlatPass> passesBeyond(const Rings& rings, const cl::Paths& cleared, double width, double lead,
-                                   double spacing, double tolerance);
+                                   double spacing, double tolerance, const cl::Paths* within = nullptr);
 
 }  // namespace hsm::roughing

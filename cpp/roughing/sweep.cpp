@@ -27,12 +27,21 @@ constexpr int kHeightBands = 8;  // layers of the part under the corner radius, 
 
 // A slice as its levels see it: its main level (the tip on its far side), its near side, its region laid
 // flat and where the tool's centre may go in it before the part is kept out.
+// A point of the stock a previous operation left, as a slice sees it: its height, where it lies flat, and
+// the plane's scales there.
+struct RestPoint {
+  double height;
+  cl::IntPoint flat;
+  Eigen::Vector2d scales;
+};
+
 struct Slice {
   int subVolume = 0;
   double tip = 0.0, top = 0.0;  // heights along the axis: the main level's tip and the slice's near side
   double lift = 0.0;            // how much nearer the surface the tool's rim is than its centre (sweep.hpp)
   cl::Paths region, inner;
   Window window;
+  std::vector<RestPoint> rest;  // rest roughing: the stock left within the slice's heights
 };
 
 struct Level {
@@ -54,6 +63,8 @@ public:
     double high = -std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, projection_->height(p));
     safeHeight_ = high + settings.clearance;
+    projection_->setReach(settings.cutter.radius() + settings.allowance + settings.meshDeflection + settings.tolerance);
+    for (const Eigen::Vector3d& p : settings.rest.points) restHeights_.push_back(projection_->height(p));
   }
 
   SweepResult run() {
@@ -81,15 +92,19 @@ private:
       return found->second;
     };
     const cl::Paths& main = domainAt(slice.tip);
-    Level level = levelOf(slice, slice.tip, main, main);
-    level.passes = passesBeyond(ringsOf(main, slice.tip), {}, 0.0, 0.0, 1.0, settings_.tolerance);
     const std::vector<double> heights =
         stepUpHeights(slice.tip, slice.top, domainAt, settings_.stepUpMinimum, settings_.stepUpScallop, settings_.tolerance);
-    if (level.passes.empty() && heights.empty()) {
+    if (main.empty() && heights.empty()) {
       result_.warnings.push_back("slice " + std::to_string(partition_.subVolumes[slice.subVolume].slice) +
                                  ": the tool fits nowhere in it (narrower than the tool, or under the part)");
       return;
     }
+    // Rest roughing cuts only where the tool reaches the stock left, entering and leaving outside it.
+    const bool rest = !settings_.rest.points.empty();
+    const double lead = 0.5 * settings_.cutter.radius();
+    Level level = levelOf(slice, slice.tip, main, main);
+    const cl::Paths wanted = rest ? restWithin(slice, slice.tip, slice.top) : cl::Paths{};
+    level.passes = passesBeyond(ringsOf(main, slice.tip), {}, 0.0, lead, 0.5, settings_.tolerance, rest ? &wanted : nullptr);
     bool down = false;  // the tool is at a cut inside the slice, not retracted
     if (!level.passes.empty()) sweepLevel(level, down);
     double above = slice.top;
@@ -100,11 +115,53 @@ private:
       up.intermediate = true;
       // Only where the band beyond the main domain is wider than the staircase allowed: a narrower one leaves
       // no thicker step across the wall.
-      up.passes = passesBeyond(ringsOf(up.domain, h), main, settings_.stepUpScallop, 0.5 * settings_.cutter.radius(),
-                               0.5, settings_.tolerance);
+      const cl::Paths wantedHere = rest ? restWithin(slice, h, up.top) : cl::Paths{};
+      up.passes = passesBeyond(ringsOf(up.domain, h), main, settings_.stepUpScallop, lead, 0.5, settings_.tolerance,
+                               rest ? &wantedHere : nullptr);
       if (!up.passes.empty()) sweepLevel(up, down);
     }
     if (down) retract();
+  }
+
+  // Where the tool's centre at a level reaches the rest stock that lies between heights `from` and `to`: each
+  // point's cube grown by the tool's radius, laid flat (a square over the plane's scales there), united.
+  cl::Paths restWithin(const Slice& slice, double from, double to) const {
+    const double s = settings_.rest.spacing, reach = settings_.cutter.radius() + 0.5 * s;
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    for (const RestPoint& p : slice.rest)
+      if (p.height >= from - 0.5 * s && p.height <= to + 0.5 * s) {
+        x0 = std::min(x0, double(p.flat.X)), x1 = std::max(x1, double(p.flat.X));
+        y0 = std::min(y0, double(p.flat.Y)), y1 = std::max(y1, double(p.flat.Y));
+      }
+    if (!(x1 >= x0)) return {};
+    // Cells of the spacing where the plane is most stretched; the points' squares marked on them.
+    const double cell = s / projection_->largestScale() * kScale;
+    const double margin = reach / std::max(projection_->smallestScale(), 0.05) * kScale + cell;
+    x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
+    const long nx = static_cast<long>((x1 - x0) / cell) + 1, ny = static_cast<long>((y1 - y0) / cell) + 1;
+    if (nx * ny > 50'000'000)
+      throw InputError("rest roughing: the stock left spans " + std::to_string(nx * ny) + " cells of " +
+                       number(s) + " mm laid flat: use a larger rest spacing");
+    std::vector<char> marked(static_cast<size_t>(nx * ny), 0);
+    for (const RestPoint& p : slice.rest) {
+      if (!(p.height >= from - 0.5 * s && p.height <= to + 0.5 * s)) continue;
+      const double hx = reach / std::max(p.scales.x(), 0.05) * kScale, hy = reach / std::max(p.scales.y(), 0.05) * kScale;
+      const long i0 = std::max(0L, long((double(p.flat.X) - hx - x0) / cell)), i1 = std::min(nx - 1, long((double(p.flat.X) + hx - x0) / cell));
+      const long j0 = std::max(0L, long((double(p.flat.Y) - hy - y0) / cell)), j1 = std::min(ny - 1, long((double(p.flat.Y) + hy - y0) / cell));
+      for (long j = j0; j <= j1; ++j) std::fill(marked.begin() + j * nx + i0, marked.begin() + j * nx + i1 + 1, 1);
+    }
+    cl::Paths rectangles;  // each row's runs of marked cells
+    for (long j = 0; j < ny; ++j)
+      for (long i = 0; i < nx; ++i) {
+        if (!marked[static_cast<size_t>(j * nx + i)]) continue;
+        long k = i;
+        while (k + 1 < nx && marked[static_cast<size_t>(j * nx + k + 1)]) ++k;
+        const cl::cInt a = cl::cInt(x0 + i * cell), b = cl::cInt(x0 + (k + 1) * cell);
+        const cl::cInt c = cl::cInt(y0 + j * cell), d = cl::cInt(y0 + (j + 1) * cell);
+        rectangles.push_back({{a, c}, {b, c}, {b, d}, {a, d}});
+        i = k;
+      }
+    return united(rectangles);
   }
 
   Level levelOf(const Slice& slice, double tip, const cl::Paths& domain, const cl::Paths& cleared) const {
@@ -161,6 +218,13 @@ private:
     slice.window = windowAround(slice.region, 1.5 * margin);
     slice.inner = offset(slice.region, -(radius - kOverhang * settings_.cutter.diameter) / projection_->largestScale(),
                          settings_.tolerance);
+    const double spacing = settings_.rest.spacing;
+    for (size_t k = 0; k < restHeights_.size(); ++k) {
+      const double h = restHeights_[k];
+      if (!(h >= slice.tip - radius - spacing && h <= slice.top + spacing)) continue;
+      const Eigen::Vector3d& p = settings_.rest.points[k];
+      slice.rest.push_back({h, projection_->plane(p), projection_->scalesAt(p)});
+    }
     return slice;
   }
 
@@ -417,6 +481,7 @@ private:
   const SweepSettings& settings_;
   std::unique_ptr<Projection> projection_;
   geometry::TriangleMesh partMesh_;
+  std::vector<double> restHeights_;  // of the rest stock's points (NaN where the projection has none)
   double safeHeight_ = 0.0;
   SweepResult result_;
 };
@@ -438,6 +503,11 @@ void checkSettings(const SweepSettings& s) {
   check(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "mm (default 0.02)");
   if (s.stepUpMinimum != 0.0) check(s.stepUpMinimum, 0.1, 100.0, "step-up minimum", "mm between levels, or 0 for none (default 1)");
   check(s.stepUpScallop, 0.01, 10.0, "step-up scallop", "mm of the staircase left across a wall (default 0.25)");
+  if (!s.rest.points.empty()) {
+    check(s.rest.spacing, 0.01, 20.0, "rest stock spacing", "mm between its points (the removal simulation's)");
+    for (const Eigen::Vector3d& p : s.rest.points)
+      if (!p.allFinite()) throw InputError("rest stock: a point is not finite (NaN or infinite coordinates)");
+  }
 }
 
 // Each slice's intermediate levels are bounded by the minimum step between them.

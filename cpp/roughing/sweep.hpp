@@ -81,6 +81,9 @@ struct SweepSettings {
   // (mm; 0: none, each slice cut at its far side only, as the paper does).
   double stepUpMinimum = 1.0;
   double stepUpScallop = 0.25;
+  // Rest roughing: each level cuts only where its tool reaches this stock (the removal simulation of the
+  // operations before); empty: everything.
+  RestStock rest;
   ProgressCallback progress;
 };
 

@@ -3,7 +3,7 @@
 // the allowance layer, feed path, in-material share).
 // Run: build/bin/bench_roughing_quality [resolution mm] [strategies, e.g. 135] [key=value …]
 //   keys: step_up_min, step_up_scallop (mm; step_up_min=0: no intermediate levels), threads, split (the grid of
-//   the split of what is left, mm; 0: none).
+//   the split of what is left, mm; 0: none), diameter and corner (the torus, mm), step (the partition's, mm).
 #include "roughing/clearance.hpp"
 #include "roughing/parts.hpp"
 #include "roughing/reach.hpp"
@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   SweepSettings settings;
   if (options.count("step_up_min")) settings.stepUpMinimum = options["step_up_min"];
   if (options.count("step_up_scallop")) settings.stepUpScallop = options["step_up_scallop"];
+  if (options.count("diameter")) settings.cutter.diameter = options["diameter"];
+  if (options.count("corner")) settings.cutter.cornerRadius = options["corner"];
+  PartitionSettings partitionSettings;
+  if (options.count("step")) partitionSettings.step = options["step"];
   RemovalSettings removalSettings;
   removalSettings.resolution = resolution;
   if (options.count("threads")) removalSettings.threads = static_cast<int>(options["threads"]);
@@ -47,7 +51,7 @@ int main(int argc, char** argv) {
     const Strategy strategy = static_cast<Strategy>(c - '0');
     auto start = std::chrono::steady_clock::now();
     std::vector<Partition> partitions;
-    for (const RemovalSolid& solid : volume.solids) partitions.push_back(partition(solid, wheel.part, strategy));
+    for (const RemovalSolid& solid : volume.solids) partitions.push_back(partition(solid, wheel.part, strategy, partitionSettings));
     const double partitioned = seconds(start);
     start = std::chrono::steady_clock::now();
     std::vector<std::vector<ToolMove>> regions;
