@@ -37,6 +37,38 @@ const char* speedLimitName(SpeedLimit limit) {
   return names[static_cast<int>(limit)];
 }
 
+void FiveAxisCutter::programPiece(const Block& block,
+                                  const std::function<void(const Block&, const JointMotion&)>& piece) {
+  const MachineModel& m = machine_;
+  const RotaryAngles startAngles = previous_;
+  JointMotion joint;
+  joint.active = true;
+  joint.start = jointsAt(block, 0.0);
+  previous_ = startAngles;
+  joint.end = jointsAt(block, 1.0);
+  // X Y Z and the angles as the program gives them (tip, A B C), each linear along the block
+  JointVector from, to;
+  from << block.start, fromAngles_[0], fromAngles_[1];
+  to << block.end, toAngles_[0], toAngles_[1];
+  joint.tipLength = (block.end - block.start).norm();
+  joint.rotaryOnly = joint.tipLength < 1e-6;
+  joint.pathLength = joint.rotaryOnly ? (to.tail<2>() - from.tail<2>()).norm() : joint.tipLength;
+  if (joint.pathLength > 0.0) {
+    joint.rate = (to - from) / joint.pathLength;
+    Block b = block;
+    if (!(block.toolTip || m.toolTipProgrammed)) {  // the program gives the machine's axes: report the tip
+      b.start = forwardKinematics(m, {joint.start.head<3>(), {joint.start[3], joint.start[4]}}).tip;
+      b.end = forwardKinematics(m, {joint.end.head<3>(), {joint.end[3], joint.end[4]}}).tip;
+    }
+    if (block.inverseTime) b.feed = joint.pathLength * block.feed;
+    b.rateLength = joint.pathLength;
+    piece(b, joint);
+  }
+  previous_ = toAngles_;
+  programmed_ = block.rotaryEnd;
+  orientation_ = toolAxisAt(m, previous_);
+}
+
 JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda) {
   const MachineModel& m = machine_;
   const Eigen::Vector3d point = b.isArc() ? b.pointAt(lambda * b.length()) : b.start + lambda * (b.end - b.start);
@@ -117,6 +149,8 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
       }
     }
     turn = std::max(std::abs(toAngles_[0] - fromAngles_[0]), std::abs(toAngles_[1] - fromAngles_[1]));
+    if (m.rotaryPlanner == RotaryPlanner::LinuxCnc && !block.orientationVectors && !block.isArc())
+      return programPiece(block, piece);
   }
   int pieces = static_cast<int>(std::ceil(turn / kDegreesPerPiece));
   if (block.isArc()) pieces = std::max(pieces, static_cast<int>(std::ceil(std::abs(block.sweep) * 180.0 / M_PI / kArcDegreesPerPiece)));

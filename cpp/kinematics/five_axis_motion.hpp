@@ -54,9 +54,15 @@ public:
   // InputError (with the block's line) when the machine cannot take the orientation or a rotary axis the
   // program moves.
   void cut(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece);
+  // Whether the block turns a rotary axis (or gives an orientation) where the program left them.
+  bool turns(const Block& block) const {
+    return block.orientationVectors || block.rotaryEnd != programmed_;
+  }
 
 private:
   JointVector jointsAt(const Block& block, double lambda);
+  // LinuxCNC's planner: the block as one piece in the program's coordinates (see RotaryPlanner::LinuxCnc).
+  void programPiece(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece);
   // The machine axes at `pieces` + 1 points, refined near singularities (pieces may grow).
   void sample(const Block& block, const RotaryAngles& startAngles, int& pieces, std::vector<JointVector>& q);
   const MachineModel& machine_;

@@ -111,9 +111,15 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   double velocity, rapidVelocity, curvatureLimit = kInfinity;
   if (joint) {
     s.joint = std::make_shared<const JointMotion>(*joint);
-    // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
-    const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
-    if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+    if (m.rotaryPlanner == RotaryPlanner::LinuxCnc) {
+      // LinuxCNC's directions are the program's X Y Z; a turn of the rotary axes alone has none.
+      const Eigen::Vector3d along = joint->rotaryOnly ? Eigen::Vector3d::Zero() : Eigen::Vector3d(joint->rate.head<3>());
+      s.startTangent = s.endTangent = along.norm() > 1e-12 ? along.normalized() : along;
+    } else {
+      // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
+      const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
+      if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+    }
     jointLimits(s, *joint, velocity, rapidVelocity, curvatureLimit);
   } else if (block.isArc()) {
     // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
@@ -169,7 +175,15 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 }
 
 Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
-  return before.joint || after.joint ? jointJunction(before, after) : tipJunction(before, after);
+  if (!before.joint && !after.joint) return tipJunction(before, after);
+  if (machine_.rotaryPlanner == RotaryPlanner::LinuxCnc && before.source != after.source) {
+    // LinuxCNC makes neither a tangent junction nor a blend arc where a block turns a rotary axis, and its
+    // look-ahead stops there (tp.c: tcRotaryMotionCheck in tpSetupTangent and tpCheckBlendArcType).
+    Junction j;
+    j.rotaryStop = true;
+    return j;
+  }
+  return jointJunction(before, after);
 }
 
 // Between pieces of one block the axes' rates change smoothly (their curvature bounds the cruise); between
@@ -312,6 +326,8 @@ double Planner::linuxCncKink(const Segment& before, const Segment& after, double
 // LinuxCNC's exact stop at a corner (G61): it rates the corner as a kink and takes a tenth of the
 // acceleration of both blocks for it (once per block), then stops there for one servo cycle.
 void Planner::linuxCncExactStop(Segment& before, Segment& after) const {
+  // Where a rotary axis turns no kink is rated, and the next block starts in the cycle this one stops in.
+  if (machine_.rotaryPlanner == RotaryPlanner::LinuxCnc && (before.joint || after.joint)) return;
   const double cosine = before.endTangent.dot(after.startTangent);
   if (cosine >= kTangentCosine) return;
   if (linuxCncKink(before, after, std::min(before.cruise, after.cruise)) < kLinuxCncKinkRatio) return;
@@ -331,6 +347,12 @@ void Planner::add(const Block& block, long source, const JointMotion* joint) {
     if (machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode == PathMode::ExactStop)
       linuxCncExactStop(pending_, segment);
     const Junction j = junction(pending_, segment);
+    if (j.rotaryStop && pending_.block.pathMode != PathMode::ExactStop) {
+      // The block before ends in a parabolic blend: half its acceleration (tc.c tcGetOverallMaxAccel).
+      if (!pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
+      pending_.parabolic = true;
+      segment.parabolicFromPrevious = true;
+    }
     pending_.dynamics.acceleration *= 1.0 - j.kinkShare;
     segment.dynamics.acceleration *= 1.0 - j.kinkShare;
     if (j.parabolic)
@@ -349,15 +371,11 @@ void Planner::add(const Block& block, long source, const JointMotion* joint) {
       pending_.length -= j.trim;
       segment.length -= j.trim;
       Segment arc = blendArc(pending_, segment, j);
-      if (pending_.length > 1e-9) {
-        if (count_ == ring_.size()) commitOldest();
-        push(std::move(pending_));
-      }
+      if (pending_.length > 1e-9) pushPending();
       if (count_ == ring_.size()) commitOldest();
       push(std::move(arc));
     } else {
-      if (count_ == ring_.size()) commitOldest();
-      push(std::move(pending_));
+      pushPending();
     }
   }
   pending_ = std::move(segment);
@@ -379,6 +397,35 @@ Segment Planner::blendArc(const Segment& before, const Segment& after, const Jun
   arc.junction = std::min(j.speed, arc.cruise);
   arc.restAfter = 0.0;
   return arc;
+}
+
+// The pending block's dynamics are final once its successor is known: its parabolic blend with the block
+// before (the newest in the ring, not committed yet) can be timed, then it joins the ring.
+void Planner::pushPending() {
+  if (pending_.parabolicFromPrevious && count_ > 0) overlapParabolic(at(count_ - 1), pending_);
+  if (count_ == ring_.size()) commitOldest();
+  push(std::move(pending_));
+}
+
+// LinuxCNC's parabolic blend between two blocks planned from rest to rest (tp.c tpComputeBlendVelocity, as the
+// oracle measured it): the next block starts once this one brakes below its blend speed, the speed either
+// would reach in the longer of their times to full speed, within the time to run half of the shorter, and,
+// under G64 P, the speed at which braking covers the tolerance across the corner. Both move together from
+// then on, so the next block starts blend / a before this one ends.
+void Planner::overlapParabolic(Segment& before, const Segment& after) const {
+  const double a1 = before.dynamics.acceleration, a2 = after.dynamics.acceleration;
+  const double v1 = std::min(std::sqrt(a1 * before.length), before.cruise);
+  const double v2 = std::min(std::sqrt(a2 * after.length), after.cruise);
+  if (!(v1 > 0.0 && v2 > 0.0)) return;
+  const double time = std::min({before.length / v1, after.length / v2, std::max(v1 / a1, v2 / a2)});
+  double blend = std::min(v1, time * a1);
+  if (before.block.pathMode == PathMode::Rounding && before.block.tolerance > 0.0) {
+    // cos of half the angle between the directions, taken as LinuxCNC's findIntersectionAngle takes it
+    const double dot = std::clamp(before.endTangent.dot(after.startTangent), -1.0, 1.0);
+    const double cosHalf = std::sqrt(0.5 * (1.0 - dot));
+    if (cosHalf > std::sin(1e-3)) blend = std::min(blend, 2.0 * std::sqrt(a1 * before.block.tolerance / cosHalf));
+  }
+  before.restAfter = -blend / a1;
 }
 
 Dynamics weakest(const Dynamics& a, const Dynamics& b) {
@@ -451,8 +498,7 @@ void Planner::finish() {
     const bool parabolicEnd =
         machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode != PathMode::ExactStop;
     if (parabolicEnd && !pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
-    if (count_ == ring_.size()) commitOldest();
-    push(std::move(pending_));
+    pushPending();
     havePending_ = false;
   }
   while (count_ > 0) commitOldest();

@@ -34,7 +34,10 @@ struct Segment {
   double entry = 0.0;       // entry speed, final once the block before it is committed
   bool kinkScaled = false;  // LinuxCNC G61: the acceleration already lost its kink share
   bool parabolic = false;   // LinuxCNC: a parabolic blend at one of its ends halved its acceleration
-  double restAfter = 0.0;   // s at rest after the block (LinuxCNC: a servo cycle at each exact stop)
+  // s after the block before the next starts: at rest (LinuxCNC: a servo cycle at each exact stop), or, when
+  // negative, the time the next block starts before this one ends (LinuxCNC's parabolic blend)
+  double restAfter = 0.0;
+  bool parabolicFromPrevious = false;  // LinuxCNC: overlapped with the block before it by a parabolic blend
   Eigen::Vector3d startTangent, endTangent;
   // 4- and 5-axis blocks: how the machine's axes move along it; none for a 3-axis block (shared, not held by
   // value: the segment is copied along the planner, and a 3-axis program must not pay for the 5-axis data).
@@ -75,6 +78,9 @@ private:
     double trim = 0.0, arcLength = 0.0, arcAcceleration = 0.0;
     double kinkShare = 0.0;  // LinuxCNC tangent kink: the share of acceleration both blocks give up for it
     bool parabolic = false;  // LinuxCNC: no arc could be made; a parabolic blend halves both accelerations
+    // LinuxCNC: a block turning a rotary axis meets the other: both run from rest to rest, the block before
+    // at half its acceleration, the next one starting as it brakes (G64; G61 stops at full acceleration)
+    bool rotaryStop = false;
   };
   Segment prepare(const Block& block, long source, const JointMotion* joint) const;
   // Limits of a piece of a 4- or 5-axis block from each axis's rate along the path (five_axis_motion.hpp).
@@ -89,6 +95,8 @@ private:
   double linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
                         double limit, Junction& j) const;
   void push(Segment segment);
+  void overlapParabolic(Segment& before, const Segment& after) const;
+  void pushPending();
   Segment blendArc(const Segment& before, const Segment& after, const Junction& j) const;
   void commitOldest();
   double plannedEntry(size_t i);
