@@ -16,8 +16,10 @@ constexpr double kTangentCosine = 1.0 - 1e-12;  // junctions straighter than thi
 // LinuxCNC 2.9 splits the acceleration on arcs and blends: 0.866·a normal, 0.5·a tangential (0.866² + 0.5² = 1).
 constexpr double kLinuxCncNormalShare = 0.866;
 constexpr double kLinuxCncTangentShare = 0.5;
-constexpr double kLinuxCncKinkRatio = 0.1;
-const double kLinuxCncReversal = std::cos(178.0 * M_PI / 180.0);  // ARC_BLEND_KINK_RATIO: a kink's share of the axis acceleration
+constexpr double kLinuxCncKinkRatio = 0.1;  // ARC_BLEND_KINK_RATIO: a kink's share of the axis acceleration
+constexpr double kLinuxCncGapCycles = 4.0;  // ARC_BLEND_GAP_CYCLES: a blend arc takes a shorter rest of the block before
+constexpr double kLinuxCncSegmentCycles = 1.02;  // TP_MIN_SEGMENT_CYCLES: blend pieces last this many cycles
+const double kLinuxCncReversal = std::cos(178.0 * M_PI / 180.0);  // reversals within 2° stop
 
 // Radius of the arc that rounds a corner within `tolerance` of the corner point, using at most half of each
 // block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
@@ -299,8 +301,7 @@ double Planner::linuxCncCorner(const Segment& before, const Segment& after, cons
   const double kink = limit * kLinuxCncKinkRatio / k;
   // No arc where the kink is faster, nor between blocks too short to last a servo cycle at the programmed
   // feed: the oracle shows LinuxCNC passing chains of such chords (G64 P… Q0) at the kink's speed.
-  const double cycleFeed = std::min(before.programmed, after.programmed) * m.interpolationCycle;
-  if (kink >= plan || std::min(before.block.length(), after.block.length()) < cycleFeed) {
+  if (kink >= plan) {
     j.parabolic = true;  // the blend stays parabolic: both blocks plan with half their acceleration
     return kink;
   }
@@ -366,15 +367,29 @@ void Planner::add(const Block& block, long source, const JointMotion* joint) {
     pending_.junction = std::min(pending_.junction, pending_.cruise);
     segment.junction = std::min({j.speed, segment.cruise, pending_.cruise});
     if (j.trim > 0.0) {
-      // The arc takes the corner: both blocks end or start where it is tangent to them, and a block the
-      // arcs take whole is gone (LinuxCNC consumes it).
+      // The arc takes the corner: both blocks end or start where it is tangent to them. What is left of the
+      // block before lasts a servo cycle at least, or, shorter than the arc runs in ARC_BLEND_GAP_CYCLES,
+      // the arc takes it too (blendmath.c blendCheckConsume); the block after is timed once its end is known.
       pending_.length -= j.trim;
       segment.length -= j.trim;
+      segment.trimmed = true;
       Segment arc = blendArc(pending_, segment, j);
-      if (pending_.length > 1e-9) pushPending();
+      const double cycle = machine_.interpolationCycle;
+      if (pending_.length < kLinuxCncGapCycles * cycle * j.speed && !pending_.parabolic) {
+        arc.length += pending_.length;
+        arc.block.start = pending_.block.end - (pending_.length + j.trim) * pending_.endTangent;
+        arc.cruise = std::min(j.speed, arc.length / (kLinuxCncSegmentCycles * cycle));
+        arc.junction = std::min(pending_.junction, arc.cruise);
+      } else {
+        lastsACycle(pending_);
+        arc.junction = std::min(arc.junction, pending_.cruise);
+        pushPending();
+      }
       if (count_ == ring_.size()) commitOldest();
       push(std::move(arc));
     } else {
+      if (pending_.trimmed) lastsACycle(pending_);
+      segment.junction = std::min(segment.junction, pending_.cruise);
       pushPending();
     }
   }
@@ -393,10 +408,17 @@ Segment Planner::blendArc(const Segment& before, const Segment& after, const Jun
   arc.startTangent = before.endTangent;
   arc.endTangent = after.startTangent;
   arc.dynamics = {j.arcAcceleration, kInfinity, false};
-  arc.cruise = std::min(j.speed, j.arcLength / machine_.interpolationCycle);
+  arc.cruise = std::min(j.speed, j.arcLength / (kLinuxCncSegmentCycles * machine_.interpolationCycle));
   arc.junction = std::min(j.speed, arc.cruise);
   arc.restAfter = 0.0;
   return arc;
+}
+
+// What blend arcs left of a block still lasts a servo cycle at least (tc.c tcClampVelocityByLength).
+void Planner::lastsACycle(Segment& s) const {
+  if (machine_.interpolationCycle > 0.0)
+    s.cruise = std::min(s.cruise, s.length / (kLinuxCncSegmentCycles * machine_.interpolationCycle));
+  s.junction = std::min(s.junction, s.cruise);
 }
 
 // The pending block's dynamics are final once its successor is known: its parabolic blend with the block
@@ -438,36 +460,36 @@ void Planner::push(Segment segment) {
   if (count_ == 0 && segment.position == 0.0) segment.entry = 0.0;  // the program starts from rest
   const size_t index = count_;
   at(count_++) = std::move(segment);
-  // Backward pass. A junction binds when its own limit is below what the machine could reach backwards
-  // from the next binding junction downstream (or from the end of the newest block, where it must be
-  // able to stop). A new block only moves the end further, so junctions stop binding from the back: each
-  // is dropped once, and a pass costs O(1) on average instead of a walk over the whole look-ahead.
+  // Backward pass. The junctions that may bind are kept in order, each one below what the machine could
+  // reach backwards from the next: a new junction drops those it dominates (it is slower than the machine can
+  // brake to from them), so a pass costs O(1) on average instead of a walk over the whole look-ahead. The stop
+  // at the end of the newest block is applied apart (plannedEntry): a junction it dominates now, behind a
+  // block too short to stop in, may bind once more blocks are known.
   const Segment& newest = at(index);
-  const double end = nextPosition_;
-  const bool newestBinds =
-      index > 0 && withinReach(newest.junction, 0.0, end - newest.position, newest.dynamics);
+  if (index == 0) return;
   while (!binding_.empty()) {
     const Segment& b = at(binding_.back() - committed_);
-    const double downstreamSpeed = newestBinds ? newest.junction : 0.0;
-    const double downstreamPosition = newestBinds ? newest.position : end;
-    if (withinReach(b.junction, downstreamSpeed, downstreamPosition - b.position, weakest(b.dynamics, newest.dynamics)))
+    if (withinReach(b.junction, newest.junction, newest.position - b.position, weakest(b.dynamics, newest.dynamics)))
       break;
     binding_.pop_back();
   }
-  if (newestBinds) binding_.push_back(committed_ + index);
+  binding_.push_back(committed_ + index);
 }
 
-// The planned entry of the block at ring index i (> 0): its junction's own limit if it binds, else what
-// the machine can reach backwards from the next binding junction (or the stop at the end).
+// The planned entry of the block at ring index i (> 0): its junction's own limit, or less where the machine
+// must brake for the next junction that binds downstream, or to stop at the end of the newest block.
 double Planner::plannedEntry(size_t i) {
   const long number = committed_ + static_cast<long>(i);
   while (!binding_.empty() && binding_.front() < number) binding_.pop_front();
   const Segment& s = at(i);
-  if (!binding_.empty() && binding_.front() == number) return s.junction;
-  const Segment& downstream = binding_.empty() ? at(count_ - 1) : at(binding_.front() - committed_);
-  const double speed = binding_.empty() ? 0.0 : downstream.junction;
-  const double position = binding_.empty() ? nextPosition_ : downstream.position;
-  return cappedReach(s.junction, speed, position - s.position, weakest(s.dynamics, downstream.dynamics));
+  const Segment& newest = at(count_ - 1);
+  double entry = s.junction;
+  if (!binding_.empty() && binding_.front() != number) {
+    const Segment& downstream = at(binding_.front() - committed_);
+    entry = cappedReach(entry, downstream.junction, downstream.position - s.position,
+                        weakest(s.dynamics, downstream.dynamics));
+  }
+  return cappedReach(entry, 0.0, nextPosition_ - s.position, weakest(s.dynamics, newest.dynamics));
 }
 
 void Planner::commitOldest() {
@@ -478,7 +500,10 @@ void Planner::commitOldest() {
   const double planned = hasNext ? plannedEntry(1) : 0.0;  // the machine stops at the end of the program
   const double cap = hasNext ? at(1).junction : 0.0;
   const double exit = cappedReach(planned, forwardSpeed_, end - forwardPosition_, forwardDynamics_);
-  const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12);
+  // LinuxCNC's trapezoids brake block by block where the braking binds: a run that crossed blocks of
+  // different accelerations (blend arcs brake at half) would brake at the weakest of them all the way.
+  const bool braking = machine_.controller == ControllerKind::LinuxCNC && exit >= planned * (1.0 - 1e-12);
+  const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12) || braking;
   if (pinned) {
     forwardSpeed_ = exit;
     forwardPosition_ = end;
@@ -498,6 +523,7 @@ void Planner::finish() {
     const bool parabolicEnd =
         machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode != PathMode::ExactStop;
     if (parabolicEnd && !pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
+    if (pending_.trimmed) lastsACycle(pending_);
     pushPending();
     havePending_ = false;
   }

@@ -38,6 +38,7 @@ struct Segment {
   // negative, the time the next block starts before this one ends (LinuxCNC's parabolic blend)
   double restAfter = 0.0;
   bool parabolicFromPrevious = false;  // LinuxCNC: overlapped with the block before it by a parabolic blend
+  bool trimmed = false;     // LinuxCNC: a blend arc took the start of the block
   Eigen::Vector3d startTangent, endTangent;
   // 4- and 5-axis blocks: how the machine's axes move along it; none for a 3-axis block (shared, not held by
   // value: the segment is copied along the planner, and a 3-axis program must not pay for the 5-axis data).
@@ -97,6 +98,7 @@ private:
   void push(Segment segment);
   void overlapParabolic(Segment& before, const Segment& after) const;
   void pushPending();
+  void lastsACycle(Segment& s) const;
   Segment blendArc(const Segment& before, const Segment& after, const Junction& j) const;
   void commitOldest();
   double plannedEntry(size_t i);

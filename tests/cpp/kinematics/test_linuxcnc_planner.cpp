@@ -1,6 +1,7 @@
-// LinuxCNC 2.9's own planning of blocks that turn rotary axes (RotaryPlanner::LinuxCnc), in closed form: the
-// program's coordinates with the axis limits, no blend and no look-ahead where a rotary axis turns, blocks from
-// rest to rest overlapped by parabolic blends (G64) or stopping (G61).
+// LinuxCNC 2.9's planner in closed form. Blocks that turn rotary axes (RotaryPlanner::LinuxCnc): the program's
+// coordinates with the axis limits, no blend and no look-ahead where a rotary axis turns, blocks from rest to
+// rest overlapped by parabolic blends (G64) or stopping (G61). Chords shorter than a servo cycle at F: blend
+// arcs that take them whole, each lasting a servo cycle; braking in time for a short block.
 #include "common/error.hpp"
 #include "kinematics/five_axis.hpp"
 #include "kinematics/simulation.hpp"
@@ -111,4 +112,46 @@ TEST(LinuxCncRotary, BlocksThatTurnNoAxisArePlannedAsThreeAxisBlocks) {
   const BlockResult& side = tilted.blocks[3];
   EXPECT_NEAR(side.rotaryEnd[0], 20.0, 1e-12);
   EXPECT_LT((side.machineEnd - linearAxesFor(m, side.end, {20.0, 0.0})).norm(), 1e-9);
+}
+
+TEST(LinuxCncChords, ChordsShorterThanAServoCycleAtFBecomeBlendArcs) {
+  // A circle of R 5 as 0.05 mm chords at F6000 under G64 P0.01 Q0: each chord would need 0.5 ms at F, and each
+  // junction turns 0.01 rad, a kink above a tenth of the axis limits in a cycle. LinuxCNC rounds every junction
+  // with a blend arc as long as half of each chord, so the arcs take the chords whole, and each arc lasts 1.02
+  // servo cycles (TP_MIN_SEGMENT_CYCLES): 0.05 mm / 1.02 ms, about 2941 mm/min, all the way round.
+  const MachineModel m = preset("linuxcnc-2.9");
+  const int chords = 628;
+  const double radius = 5.0, step = 2.0 * M_PI / chords;
+  std::ostringstream program;
+  program << std::fixed;
+  program.precision(6);
+  program << "G64 P0.01 Q0\nG1 X" << radius << " Y0 F6000\n";
+  for (int i = 1; i <= chords; ++i)
+    program << "G1 X" << radius * std::cos(i * step) << " Y" << radius * std::sin(i * step) << "\n";
+  const SimulationResult r = run(program.str(), m);
+  const double chord = 2.0 * radius * std::sin(0.5 * step);
+  const double expected = chord / (1.02 * m.interpolationCycle) * 60.0;
+  int checked = 0;
+  for (size_t k = chords / 4; k < 3 * chords / 4; ++k) {
+    EXPECT_NEAR(r.blocks[k].meanFeed * 60.0, expected, 0.01 * expected) << "chord " << k;
+    ++checked;
+  }
+  EXPECT_EQ(checked, chords / 2);
+}
+
+TEST(LinuxCncChords, BrakesInTimeForAShortBlockBehindALongOne) {
+  // 10 mm, then 0.01 mm (one servo cycle at most 10 mm/s), then 10 mm along X at F6000: the machine brakes
+  // from 100 to 10 mm/s at X's 2500 mm/s² before the short block, and the last block (parabolic end) runs at
+  // half of it. The short block was too short to stop in when it arrived: its junction must still bind.
+  const MachineModel m = preset("linuxcnc-2.9");
+  const SimulationResult r = run("G64\nF6000\nG1 X10\nG1 X10.01\nG1 X20.01\n", m);
+  ASSERT_EQ(r.blocks.size(), 3u);
+  const double a = m.maxAcceleration.x(), v = 100.0, slow = 10.0;
+  const double first = v / a + (10.0 - v * v / (2 * a) - (v * v - slow * slow) / (2 * a)) / v + (v - slow) / a;
+  const double h = 0.5 * a;
+  const double last = (v - slow) / h + v / h + (10.0 - (v * v - slow * slow) / (2 * h) - v * v / (2 * h)) / v;
+  EXPECT_NEAR(r.blocks[0].exitFeed, slow, 1e-9);
+  EXPECT_NEAR(r.blocks[0].time, first, 1e-9);
+  EXPECT_NEAR(r.blocks[1].time, 0.01 / slow, 1e-9);
+  EXPECT_NEAR(r.blocks[2].time, last, 1e-9);
 }
