@@ -87,7 +87,7 @@ private:
   // Limits of a piece of a 4- or 5-axis block from each axis's rate along the path (five_axis_motion.hpp).
   void jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
                    double& curvatureLimit) const;
-  SpeedLimit slowestAxis(const JointVector& limits, const Eigen::Vector3d& tangent) const;
+  SpeedLimit slowestAxis(const JointVector& inverseLimits, const Eigen::Vector3d& tangent) const;
   Junction junction(const Segment& before, const Segment& after) const;
   Junction tipJunction(const Segment& before, const Segment& after) const;
   Junction jointJunction(const Segment& before, const Segment& after) const;
@@ -106,6 +106,7 @@ private:
 
   const MachineModel& machine_;
   JointVector jointVelocity_, jointRapid_, jointAcceleration_, jointJerk_;  // X Y Z and the rotary axes
+  JointVector inverseVelocity_, inverseRapid_, inverseAcceleration_, inverseJerk_;  // 1 / each
   Commit commit_;
   std::vector<Segment> ring_;
   size_t head_ = 0, count_ = 0;
