@@ -182,6 +182,11 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 }
 
 Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
+  // LinuxCNC never blends a rapid with a feed move: the segment before stops, at its full acceleration (tp.c
+  // handleModeChange).
+  if (machine_.controller == ControllerKind::LinuxCNC &&
+      (before.block.motion == Motion::Rapid) != (after.block.motion == Motion::Rapid))
+    return {};
   if (!before.joint && !after.joint) return tipJunction(before, after);
   if (machine_.rotaryPlanner == RotaryPlanner::LinuxCnc && before.source != after.source) {
     // LinuxCNC makes neither a tangent junction nor a blend arc where a block turns a rotary axis, and its

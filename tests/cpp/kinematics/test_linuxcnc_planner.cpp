@@ -155,3 +155,16 @@ TEST(LinuxCncChords, BrakesInTimeForAShortBlockBehindALongOne) {
   EXPECT_NEAR(r.blocks[1].time, 0.01 / slow, 1e-9);
   EXPECT_NEAR(r.blocks[2].time, last, 1e-9);
 }
+
+TEST(LinuxCncChords, ARapidAndAFeedMoveAreNeverBlended) {
+  // G0 X10 then G1 X20 in a straight line under G64: LinuxCNC stops between them (tp.c handleModeChange), the
+  // rapid at its full 2500 mm/s² (a triangle: 10 mm never reach 200 mm/s), the feed move as the program's last
+  // (half of it, to F6000 and back).
+  const MachineModel m = preset("linuxcnc-2.9");
+  const SimulationResult r = run("G64\nG0 X10\nG1 X20 F6000\n", m);
+  ASSERT_EQ(r.blocks.size(), 2u);
+  const double a = m.maxAcceleration.x(), h = 0.5 * a, v = 100.0;
+  EXPECT_NEAR(r.blocks[0].exitFeed, 0.0, 1e-12);
+  EXPECT_NEAR(r.blocks[0].time, 2.0 * std::sqrt(10.0 / a), 1e-9);
+  EXPECT_NEAR(r.blocks[1].time, 2.0 * v / h + (10.0 - v * v / h) / v, 1e-9);
+}
