@@ -119,9 +119,10 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   if (joint) {
     s.joint = std::make_shared<const JointMotion>(*joint);
     if (m.rotaryPlanner == RotaryPlanner::LinuxCnc) {
-      // LinuxCNC's directions are the program's X Y Z; a turn of the rotary axes alone has none.
-      const Eigen::Vector3d along = joint->rotaryOnly ? Eigen::Vector3d::Zero() : Eigen::Vector3d(joint->rate.head<3>());
-      s.startTangent = s.endTangent = along.norm() > 1e-12 ? along.normalized() : along;
+      // LinuxCNC's directions are the program's X Y Z; a turn of the rotary axes alone gets +X, as posemath
+      // gives a line of no length (pmCartLineInit), which its parabolic blends read.
+      const Eigen::Vector3d along = joint->rotaryOnly ? Eigen::Vector3d::UnitX() : Eigen::Vector3d(joint->rate.head<3>());
+      s.startTangent = s.endTangent = along.norm() > 1e-12 ? along.normalized() : Eigen::Vector3d::UnitX();
     } else {
       // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
       const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();

@@ -76,6 +76,12 @@ TEST(LinuxCncRotary, ChainOfRotaryBlocksOverlapsRestToRestProfiles) {
   double sum = 0.0;
   for (const BlockResult& b : blended.blocks) sum += b.time;
   EXPECT_NEAR(sum, blended.summary.totalTime, 1e-9);
+  // C alone, 2 degrees a block, under G64 P0.01: the blend's tolerance does not bind between turns of the
+  // rotary axes alone (LinuxCNC gives them all the direction +X), so the chain overlaps the same way.
+  std::string turns = "G64 P0.01\nF60000\n";
+  for (int i = 1; i <= n; ++i) turns += "G1 C" + std::to_string(2 * i) + "\n";
+  const double c = 0.5 * m.rotaryAxes[1].maxAcceleration;
+  EXPECT_NEAR(run(turns, m).summary.totalTime, (n + 1) * std::sqrt(2.0 / c), 1e-6);
   // The joint-space planner looks ahead through the same chain: far faster than LinuxCNC.
   MachineModel joint = m;
   joint.rotaryPlanner = RotaryPlanner::JointSpace;
