@@ -5,6 +5,7 @@
 #include "common/error.hpp"
 #include "kinematics/five_axis.hpp"
 #include "kinematics/simulation.hpp"
+#include "support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,14 +16,8 @@
 using namespace hsm::kinematics;
 
 namespace {
-MachineModel preset(const std::string& name) { return loadMachine(name, {HSM_MACHINES_DIR}); }
-
-SimulationResult run(const std::string& program, const MachineModel& machine) {
-  std::istringstream stream(program);
-  SimulationOptions options;
-  options.keepBlocks = true;
-  return simulate(stream, machine, {}, options);
-}
+using hsm::test::preset;
+using hsm::test::run;
 
 // n blocks of 1 mm along X, each turning C by 2 degrees, in the given path mode.
 std::string chain(int n, const std::string& mode) {
