@@ -418,6 +418,9 @@ Segment Planner::blendArc(const Segment& before, const Segment& after, const Jun
   arc.block.end = after.block.start + j.trim * after.startTangent;
   arc.startTangent = before.endTangent;
   arc.endTangent = after.startTangent;
+  arc.blendArc = true;
+  arc.programmedStart = before.block.start;
+  arc.programmedEnd = before.block.end;
   arc.dynamics = {j.arcAcceleration, kInfinity, false};
   arc.cruise = std::min(j.speed, j.arcLength / (kLinuxCncSegmentCycles * machine_.interpolationCycle));
   arc.junction = std::min(j.speed, arc.cruise);

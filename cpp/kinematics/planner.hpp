@@ -39,6 +39,10 @@ struct Segment {
   double restAfter = 0.0;
   bool parabolicFromPrevious = false;  // LinuxCNC: overlapped with the block before it by a parabolic blend
   bool trimmed = false;     // LinuxCNC: a blend arc took the start of the block
+  // LinuxCNC's blend arc, a segment of the block before the corner: `block` holds the arc's chord (traces),
+  // these the block's programmed ends (reports).
+  bool blendArc = false;
+  Eigen::Vector3d programmedStart = Eigen::Vector3d::Zero(), programmedEnd = Eigen::Vector3d::Zero();
   Eigen::Vector3d startTangent, endTangent;
   // 4- and 5-axis blocks: how the machine's axes move along it; none for a 3-axis block (shared, not held by
   // value: the segment is copied along the planner, and a 3-axis program must not pay for the 5-axis data).

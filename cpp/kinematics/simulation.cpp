@@ -47,7 +47,7 @@ public:
       current_ = BlockResult{};
       current_.line = s.block.line;
       current_.motion = s.block.motion;
-      current_.start = s.block.start;
+      current_.start = s.blendArc ? s.programmedStart : s.block.start;
       current_.center = s.block.center;
       current_.normal = s.block.normal;
       current_.sweep = s.block.isArc() ? s.block.sweep : 0.0;
@@ -71,7 +71,7 @@ public:
     }
     if (mixedLimits_) limitTimes_[label] += p.time;
     result_.summary.limitTime[label] += p.time;
-    current_.end = s.block.end;
+    current_.end = s.blendArc ? s.programmedEnd : s.block.end;  // the block's end, not its blend arc's
     if (s.joint) {
       current_.machineEnd = s.joint->end.head<3>();
       current_.rotaryEnd = s.joint->end.tail<2>();

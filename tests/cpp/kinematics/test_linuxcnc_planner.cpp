@@ -135,6 +135,9 @@ TEST(LinuxCncChords, ChordsShorterThanAServoCycleAtFBecomeBlendArcs) {
   int checked = 0;
   for (size_t k = chords / 4; k < 3 * chords / 4; ++k) {
     EXPECT_NEAR(r.blocks[k].meanFeed * 60.0, expected, 0.01 * expected) << "chord " << k;
+    // Each block reports its programmed end, not the end of the blend arc that rounds it.
+    const Eigen::Vector3d end(radius * std::cos(k * step), radius * std::sin(k * step), 0.0);
+    EXPECT_LT((r.blocks[k].end - end).norm(), 1e-6) << "chord " << k;
     ++checked;
   }
   EXPECT_EQ(checked, chords / 2);
