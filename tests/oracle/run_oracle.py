@@ -2,7 +2,8 @@
 """LinuxCNC 2.9 as an oracle for the feed-rate simulator (docs/oracle.md).
 
 For each G-code program: runs LinuxCNC headless in simulation (a configuration written into a temporary
-folder from tests/oracle/machine.json: trivkins, 3 joints, 1 ms servo thread, joint commands looped back to
+folder from the program's machine file by oracle_config.py: trivkins and 3 joints, or a table trunnion's
+xyzac-trt-kins / xyzbc-trt-kins and 5 joints in TCP mode; 1 ms servo thread, joint commands looped back to
 feedback, our DISPLAY program lcnc_display.py driving it through the `linuxcnc` Python module), measures
 its motion time by counting servo cycles in HAL (the `sampler` component samples motion.current-vel and the
 joint positions on the servo thread; halsampler writes them to a file), runs hsm-feedsim on the same program
@@ -10,7 +11,8 @@ with the same machine file, and prints and writes the table program, LinuxCNC s,
 
     /usr/bin/python3 tests/oracle/run_oracle.py [PROGRAM ...] [--out build/oracle] [--max-error 2]
 
-Without programs: tests/oracle/programs/*.ngc and tests/golden/linuxcnc_fixed.ngc. Writes OUT/oracle.md,
+Without programs: tests/oracle/programs/*.ngc and tests/golden/linuxcnc_fixed.ngc on machine.json,
+programs_xyzac/*.ngc on machine_xyzac.json, programs_xyzbc/*.ngc on machine_xyzbc.json. Writes OUT/oracle.md,
 OUT/oracle.csv and per program OUT/<name>/ (LinuxCNC's sampled trace and per-line speeds, hsm-feedsim's
 summary, blocks and trace). Exit code: 0 (the table is a measurement), 2 if LinuxCNC failed on a program
 (its log tail is printed), 3 if hsm-feedsim failed on one, 1 with --max-error when an |error| exceeds it.
