@@ -435,13 +435,15 @@ def roughing_study_panel_runs_and_applies(run):
         return
     for name, box in study.form.strategies.items():
         box.setChecked(name in ("S1", "S3"))
+    for key, box in study.form.variants.items():
+        box.setChecked(key == "step-up")
     study.form.resolution.setValue(1.0)
     study.run()
     table = study.form.table
 
     def shown_rows():
         """{label shown: (table row, V_r shown, feed shown)} as the user reads them."""
-        return {table.item(r, 0).text(): (r, float(table.item(r, 1).data(0)), float(table.item(r, 3).data(0)))
+        return {table.item(r, 0).text(): (r, float(table.item(r, 2).data(0)), float(table.item(r, 4).data(0)))
                 for r in range(table.rowCount())}
 
     rows = shown_rows()
@@ -451,7 +453,7 @@ def roughing_study_panel_runs_and_applies(run):
               str(run.notes["roughing study"]))
     run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3", 100) < vr.get("S1", 0), str(vr))
     measured = {r.row["strategy"]: (r.row["vr"], r.row["feed_mm"]) for r in study.results}
-    for column, order in ((1, QtCore.Qt.AscendingOrder), (1, QtCore.Qt.DescendingOrder), (3, QtCore.Qt.AscendingOrder)):
+    for column, order in ((2, QtCore.Qt.AscendingOrder), (2, QtCore.Qt.DescendingOrder), (4, QtCore.Qt.AscendingOrder)):
         table.sortItems(column, order)
         shown = shown_rows()
         run.check("sorted by column %d: each label keeps its own figures" % column,
@@ -463,7 +465,7 @@ def roughing_study_panel_runs_and_applies(run):
     check_study_maps(study)
     run.screenshot("roughing_study_panel")
     table.selectRow(shown_rows()["S3"][0])
-    run.check("the row labelled S3 is the one selected", study.selected() == "S3", str(study.selected()))
+    run.check("the row labelled S3 is the one selected", study.selected() == "S3|step-up", str(study.selected()))
     node = getattr(study, "map_node", None)
     cloud = node.getChild(3) if node is not None else None
     count = cloud.vertexProperty.getValue().vertex.getNum() if cloud is not None else 0
@@ -472,16 +474,16 @@ def roughing_study_panel_runs_and_applies(run):
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("roughing_study_stock_map")
     if node is not None:
-        check_stock_map_legend(node.getChild(node.getNumChildren() - 1), study.result_of("S3").stock_map[2])
+        check_stock_map_legend(node.getChild(node.getNumChildren() - 1), study.result_of("S3|step-up").stock_map[2])
     op = study.apply()
     status = study.form.status.text()
     run.notes["roughing study"]["applied"] = status
-    run.check("Apply says S3 and sets S3 on every region", op is not None and status.startswith("S3 applied")
+    run.check("Apply says S3 and sets S3 on every region", op is not None and status.startswith("S3 step-up applied")
               and slot.Strategy.startswith("S3") and slot.Region == 0, status)
     if op is not None:
         run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the applied operation computed")
         run.check("the applied operation has passes on the regions the row measured",
-                  op.Passes > 0 and op.RegionsSwept == study.result_of("S3").row["regions"], status)
+                  op.Passes > 0 and op.RegionsSwept == study.result_of("S3|step-up").row["regions"], status)
     study.reject()
     run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
 

@@ -122,7 +122,7 @@ def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.
     then, rest_fed = None, []
     if rest is not None:
         left = roughing.simulate_removal(moves, stock_brep, part_brep, tool=tool, resolution=resolution,
-                                         rest_spacing=rest.spacing, progress=part_of(0.45, 0.55))
+                                         rest_spacing=max(rest.spacing, resolution), progress=part_of(0.45, 0.55))
         rest_regions = sweep_regions(rest.strategy, part_brep, stock_brep, volume.solids, rest.tool,
                                      dict(settings, step=rest.step), True, left.rest, progress=part_of(0.55, 0.7))
         rest_moves, rest_fed = roughing.keep_rapids_out_of_stock(
