@@ -443,17 +443,18 @@ def roughing_study_panel_runs_and_applies(run):
 
     def shown_rows():
         """{label shown: (table row, V_r shown, feed shown)} as the user reads them."""
-        return {table.item(r, 0).text(): (r, float(table.item(r, 2).data(0)), float(table.item(r, 4).data(0)))
+        return {table.item(r, 0).text(): (r, float(table.item(r, 1).data(0)), float(table.item(r, 3).data(0)))
                 for r in range(table.rowCount())}
 
     rows = shown_rows()
     vr = {name: shown[1] for name, shown in rows.items()}
     run.notes["roughing study"] = {"rows": list(rows), "V_r %": vr, "status": study.form.status.text()}
-    run.check("the table has S1 and S3 with their V_r", sorted(rows) == ["S1", "S3"] and all(0 < v < 100 for v in vr.values()),
+    run.check("the table has S1 and S3 with step-up and their V_r", sorted(rows) == ["S1+su", "S3+su"] and
+              all(0 < v < 100 for v in vr.values()),
               str(run.notes["roughing study"]))
-    run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3", 100) < vr.get("S1", 0), str(vr))
-    measured = {r.row["strategy"]: (r.row["vr"], r.row["feed_mm"]) for r in study.results}
-    for column, order in ((2, QtCore.Qt.AscendingOrder), (2, QtCore.Qt.DescendingOrder), (4, QtCore.Qt.AscendingOrder)):
+    run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3+su", 100) < vr.get("S1+su", 0), str(vr))
+    measured = {r.row["strategy"] + "+su": (r.row["vr"], r.row["feed_mm"]) for r in study.results}
+    for column, order in ((1, QtCore.Qt.AscendingOrder), (1, QtCore.Qt.DescendingOrder), (3, QtCore.Qt.AscendingOrder)):
         table.sortItems(column, order)
         shown = shown_rows()
         run.check("sorted by column %d: each label keeps its own figures" % column,
@@ -464,7 +465,7 @@ def roughing_study_panel_runs_and_applies(run):
     run.check_table_reads("Roughing study table", table, roughing_study_panel.KEY_COLUMNS)
     check_study_maps(study)
     run.screenshot("roughing_study_panel")
-    table.selectRow(shown_rows()["S3"][0])
+    table.selectRow(shown_rows()["S3+su"][0])
     run.check("the row labelled S3 is the one selected", study.selected() == "S3|step-up", str(study.selected()))
     node = getattr(study, "map_node", None)
     cloud = node.getChild(3) if node is not None else None

@@ -8,6 +8,7 @@ from PySide2 import QtCore, QtWidgets
 import hsmplanner
 from hsmplanner.app import roughing_object, roughing_study
 from hsmplanner.app.progress import freecad_progress
+from hsmplanner.plots.roughing_study import short_label
 
 from .task_panel import (PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout,
                          with_controller_selected)
@@ -21,8 +22,8 @@ VARIANTS = [("as the paper", "one level per slice, the paper's", dict(step_up=Fa
             ("step-up", "intermediate levels inside the slices where the part leans", {}, roughing_study.STEP_UP),
             ("+ rest Ø4", "step-up, then a rest roughing of what it left with a Ø4 r0.5 torus (S3 on the stock "
              "left, 4 mm step): two operations", dict(rest=roughing_study.Rest()), roughing_study.Rest().label)]
-TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply makes it)"),
-         ("variant", "variant", "as the paper (one level per slice), with step-up levels, or with a rest roughing"),
+TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply makes it): S1 as the paper (one "
+          "level per slice), S1+su with step-up levels, S1+su+r then a rest roughing with a Ø4 torus"),
          ("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
          ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
          ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
@@ -34,7 +35,7 @@ TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply
          ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
          ("held by", "held_by", "what held the speed, share of the time"),
          ("rapids fed", "rapids_fed", "approaches that would have cut stock left as rapids: they feed into it")]
-KEY_COLUMNS = 4  # strategy, variant, V_r, time: in view without scrolling
+KEY_COLUMNS = 3  # strategy (and variant), V_r, time: in view without scrolling
 MAP_HEIGHT_PX = 190  # of one stock map stacked in the panel
 
 
@@ -223,6 +224,8 @@ class RoughingStudyPanel(TaskPanel):
             for column, (_, key, _) in enumerate(TABLE):
                 item = QtWidgets.QTableWidgetItem()
                 value = values.get(key, "")
+                if key == "strategy":  # with its variant, short: the key columns fit the Combo View
+                    value = short_label(values)
                 if isinstance(value, (int, float)):
                     item.setData(QtCore.Qt.DisplayRole, value)  # sorts as a number
                 else:
