@@ -169,7 +169,10 @@ void bindSweep(py::module_& m) {
       .def_readonly("positions", &ClearanceReport::positions)
       .def_readonly("too_close", &ClearanceReport::tooClose)
       .def_readonly("worst_move", &ClearanceReport::worstMove)
-      .def_readonly("worst_tip", &ClearanceReport::worstTip);
+      .def_readonly("worst_tip", &ClearanceReport::worstTip)
+      .def_property_readonly("move_minimum", [](const ClearanceReport& r) {
+        return py::array_t<double>(r.moveMinimum.size(), r.moveMinimum.data());
+      }, "per move, the least distance along it, mm (capped at the limit + 2)");
   m.def(
       "check_clearance",
       [](const py::array_t<double>& tips, const py::array_t<double>& axes, const std::string& partBrep,

@@ -8,6 +8,7 @@
 #include "geometry/mesh.hpp"
 #include "roughing/dexel.hpp"
 #include "roughing/flat.hpp"
+#include "roughing/grown_cutter.hpp"
 #include "roughing/projection.hpp"
 
 #include <algorithm>
@@ -20,16 +21,6 @@ namespace {
 
 constexpr long kMaxSamples = 100'000'000;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// The cutter grown by `grow` mm: its lowest height above the tip at `rho` mm from its axis (its flat bottom,
-// then its corner's circle), +∞ beyond its reach. It fills everything above that height.
-double lowest(const Cutter& c, double grow, double rho) {
-  const double flat = c.radius() - c.corner();
-  if (rho <= flat) return -grow;
-  const double d = rho - flat, g = c.corner() + grow;
-  if (d > g) return kInfinity;
-  return c.corner() - std::sqrt(std::max(0.0, g * g - d * d));
-}
 
 // The columns of a level laid flat: cells of `size` flat mm from (x0, y0).
 struct Grid {
@@ -128,7 +119,7 @@ public:
     const Field top = partTop();
     // The envelope: the lowest tip height per column at which the grown cutter touches no part point.
     Field envelope{std::vector<double>(grid_.cells(), -kInfinity), {}, {}};
-    spread(grid_, *projection_, top, cutter_.radius() + allowance_, [&](double rho) { return -lowest(cutter_, allowance_, rho); },
+    spread(grid_, *projection_, top, cutter_.radius() + allowance_, [&](double rho) { return -GrownCutter::lowestAt(cutter_, allowance_, rho); },
            [](double a, double b) { return std::max(a, b); }, envelope.value);
     // The floors: from the envelope, and from the lowest level at or above it.
     envelope.height.resize(grid_.cells());
@@ -142,7 +133,7 @@ public:
         envelope.height[c] = atLevel.height[c] = std::isfinite(envelope.value[c]) ? envelope.value[c] : 0.5 * (low_ + high_);
         envelope.where[c] = atLevel.where[c] = {grid_.x0 + (i + 0.5) * grid_.size, grid_.y0 + (j + 0.5) * grid_.size};
       }
-    const auto tool = [&](double rho) { return lowest(cutter_, 0.0, rho); };
+    const auto tool = [&](double rho) { return GrownCutter::lowestAt(cutter_, 0.0, rho); };
     const auto least = [](double a, double b) { return std::min(a, b); };
     std::vector<double> floor(grid_.cells(), kInfinity), floorOfLevels(grid_.cells(), kInfinity);
     spread(grid_, *projection_, envelope, cutter_.radius(), tool, least, floor);

@@ -7,6 +7,7 @@
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
 #include "roughing/flat.hpp"
+#include "roughing/grown_cutter.hpp"
 #include "roughing/projection.hpp"
 #include "roughing/step_up.hpp"
 
@@ -38,7 +39,7 @@ struct RestPoint {
 struct Slice {
   int subVolume = 0;
   double tip = 0.0, top = 0.0;  // heights along the axis: the main level's tip and the slice's near side
-  double lift = 0.0;            // how much nearer the surface the tool's rim is than its centre (sweep.hpp)
+  std::vector<Band> bands;      // of the part's heights relative to the tip, each with its keep-out (grown_cutter)
   cl::Paths region, inner;
   Window window;
   std::vector<RestPoint> rest;  // rest roughing: the stock left within the slice's heights
@@ -196,11 +197,11 @@ private:
     const double surface = surfaceHeight(sub);
     if (partition_.strategy == Strategy::HubOffsets) {
       // The slicing surface is the slice's far side; the reference (the hub, a floor) is part of the part: the
-      // tip stays the allowance above it, and the lift of the tool's rim over a concave hub.
+      // tip stays the allowance above it, and as much more as a concave hub rises under the tool's bottom.
       projection_->setLevel(surface, mesh);
-      const double lift = rimLift();
       slice.top = std::min(surface + partition_.step, high);
-      slice.tip = std::max(surface, surface - sub.surface.offset + settings_.allowance + lift + settings_.meshDeflection);
+      slice.tip = std::max(surface, surface - sub.surface.offset + settings_.allowance + grown().floorLift() +
+                                        settings_.meshDeflection);
       slice.top = std::max(slice.top, slice.tip + settings_.tolerance);
     } else {
       slice.top = surface;
@@ -211,7 +212,7 @@ private:
     // One plane for all the slice's levels (the intermediate ones compare their domains with the main one's):
     // its scales are the main level's, the tip surface that has the least room.
     projection_->setLevel(slice.tip, mesh);
-    slice.lift = rimLift();
+    slice.bands = grown().bands(kHeightBands, kFloorSlack, settings_.meshDeflection + settings_.tolerance);
     slice.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
     const double margin = (radius + settings_.allowance + settings_.meshDeflection + 1.0) / projection_->smallestScale();
@@ -229,36 +230,13 @@ private:
   }
 
   // Where the tool's centre may go with its tip at `tip`: the slice's inner region less the part's keep-out,
-  // layer by layer above the tip (bands): the part from the allowance under the tip up is kept as far from the
-  // centre as the tool, grown by the allowance, is wide at that height (a torus's corner is narrower than its
-  // flutes), and the mesh's deflection and the offsets' arc tolerance (their chords cut inside the arcs) more.
-  // The lowest layer starts 5 µm above the allowance under the tip: a floor the tip was raised onto lies
-  // exactly there, and rounding (a shape read back from BREP text, or not) must not decide whether it shadows
-  // the whole level (half the 0.01 mm the clearance check grants).
+  // layer by layer above the tip (the slice's bands): the part from the allowance under the tip up is kept as
+  // far from the centre as the tool, grown by the allowance, is wide there (a torus's corner is narrower than
+  // its flutes; on a concave surface a point off the axis stands higher along it), and the mesh's deflection
+  // and the offsets' arc tolerance (their chords cut inside the arcs) more.
   cl::Paths domainOf(const Slice& slice, double tip) const {
-    const Cutter& c = settings_.cutter;
-    const double a = settings_.allowance, extra = settings_.meshDeflection + settings_.tolerance;
-    const double corner = c.corner();
-    // The tool grown by the allowance, at a height z above its tip: its corner's circle grown by a.
-    auto width = [&](double z) {
-      if (z >= corner) return c.radius() + a;
-      const double d = corner - z;
-      return c.radius() - corner + std::sqrt(std::max(0.0, (corner + a) * (corner + a) - d * d));
-    };
-    // Bands whose widths step evenly from the flat bottom's (R − r) to the flutes' grown by a (R + a): each
-    // keeps the part at most a step farther than the tool needs. The height where the grown corner is w wide.
-    auto heightOf = [&](double w) {
-      const double d = w - (c.radius() - corner);
-      return corner - std::sqrt(std::max(0.0, (corner + a) * (corner + a) - d * d));
-    };
-    std::vector<Band> bands;
-    double z0 = -a + kFloorSlack;
-    for (int k = 1; k <= kHeightBands; ++k) {
-      const double z1 = heightOf(c.radius() - corner + (corner + a) * k / kHeightBands);
-      if (z1 > z0) bands.push_back({tip + z0 - slice.lift, tip + z1 - slice.lift, width(z1) + extra});
-      z0 = std::max(z0, z1);
-    }
-    bands.push_back({tip + z0 - slice.lift, std::numeric_limits<double>::infinity(), c.radius() + a + extra});
+    std::vector<Band> bands = slice.bands;
+    for (Band& band : bands) band.from += tip, band.to += tip;
     const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, bands, slice.window, settings_.tolerance, slice.inner);
     return boolean(cl::ctDifference, slice.inner, keepOut);
   }
@@ -291,11 +269,8 @@ private:
     return rings;
   }
 
-  // How much nearer the surface the rim of the tool's disk (grown by the allowance) is than its centre.
-  double rimLift() const {
-    const double r = settings_.cutter.radius() + settings_.allowance;
-    return 0.5 * r * r * projection_->concavity();
-  }
+  // The cutter grown by the allowance on the level the projection is set to.
+  GrownCutter grown() const { return GrownCutter(settings_.cutter, settings_.allowance, projection_->concavity()); }
 
   // A face of the part parallel to the slicing surface within the allowance under the tip (a floor: a plane
   // parallel to S1's, the hub under S4's offsets of a skin that follows it): the tip stays the allowance above
@@ -312,7 +287,10 @@ private:
       for (int k = 0; k < 3; ++k) h = std::max(h, projection_->height(partMesh_.vertices[t[k]]));
       if (h > slice.tip - settings_.allowance - 1e-9 && h < slice.tip + settings_.allowance) floor = std::max(floor, h);
     }
-    const double raised = floor + settings_.allowance + rimLift();
+    // As S5's tip over its hub: a curved floor's mesh is within its deflection of it, and the lift is of second
+    // order in the distance from the axis (a plane's facets lie on it).
+    const double lift = grown().floorLift();
+    const double raised = floor + settings_.allowance + (lift > 0.0 ? lift + settings_.meshDeflection : 0.0);
     if (std::isfinite(floor) && raised < slice.top) slice.tip = raised;
   }
 

@@ -135,7 +135,7 @@ TEST(Sweep, EntriesRampIntoMaterialAndLinksRetractAlongTheAxis) {
     const Eigen::Vector3d d = m.tip - r.moves[i - 1].tip;
     const double along = d.dot(m.axis), across = (d - along * m.axis).norm();
     if (m.kind == MoveKind::Ramp) {
-      EXPECT_LE(-along, slope * across * 1.001 + 1e-6) << "move " << i;
+      EXPECT_LE(-along, slope * across * 1.001 + 1e-5) << "move " << i;  // 0.1 µm: the plane's integers
     }
     if (m.kind == MoveKind::Cut) {
       EXPECT_NEAR(along, 0.0, 1e-9) << "move " << i;
