@@ -5,6 +5,7 @@
 #include "common/text.hpp"
 #include "geometry/brep.hpp"
 #include "roughing/clearance.hpp"
+#include "roughing/reach.hpp"
 #include "roughing/removal.hpp"
 #include "roughing/sweep.hpp"
 
@@ -271,6 +272,26 @@ void bindSweep(py::module_& m) {
       },
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
       py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
+  py::class_<LeftSplit>(m, "LeftSplit", "What a roughing path leaves, by cause (mm³)")
+      .def_readonly("resolution", &LeftSplit::resolution, "mm, the grid of columns and heights")
+      .def_readonly("volume", &LeftSplit::volume, "mm³ of the solid's material as sampled")
+      .def_readonly("unreachable", &LeftSplit::unreachable, "mm³ no tool position along these axes reaches")
+      .def_readonly("between_levels", &LeftSplit::betweenLevels, "mm³ reached only from between the path's levels")
+      .def_readonly("levels", &LeftSplit::levels, "the path's distinct cutting heights");
+  m.def(
+      "split_what_is_left",
+      [](const Partition& partition, const RemovalSolid& solid, const std::string& partBrep, const Cutter& cutter,
+         double allowance, const py::array_t<double>& tips, const py::array_t<double>& axes,
+         const py::array_t<long>& kinds, double resolution, int threads) {
+        const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const TopoDS_Shape part = geometry::readBrep(partBrep);
+        py::gil_scoped_release release;
+        return guarded("split of what is left", [&] {
+          return splitWhatIsLeft(partition, solid, part, cutter, allowance, moves, resolution, threads);
+        });
+      },
+      py::arg("partition"), py::arg("solid"), py::arg("part_brep"), py::arg("cutter"), py::arg("allowance"),
+      py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("resolution") = 0.25, py::arg("threads") = 0);
   m.def(
       "simulate_removal_runs",
       [](const std::vector<py::tuple>& runs, const std::string& stockBrep, const std::string& partBrep,

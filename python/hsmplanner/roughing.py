@@ -193,6 +193,21 @@ def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_sectio
                                                 progress)
 
 
+def split_what_is_left(partition_result, volume, part, paths, tool=None, allowance=None, resolution=0.25,
+                       threads=0):
+    """What the moves of `paths` (one region's sweep of `partition_result`, before joining) leave, by cause,
+    measured apart from the sweep on a grid of `resolution` mm (cpp/roughing/reach.hpp): a LeftSplit with the
+    region's material (volume), what no tool along the path's own axes reaches without coming nearer the part
+    than the allowance (unreachable) and what it reaches only from heights between the path's levels
+    (between_levels), mm³; the rest of a removal simulation's stock left is the path's own."""
+    moves = _moves_of(paths)
+    tool = tool if tool is not None else _core.roughing.Cutter()
+    allowance = _core.roughing.SweepSettings().allowance if allowance is None else float(allowance)
+    return _core.roughing.split_what_is_left(partition_result, _solid(volume), as_brep(part), tool, allowance,
+                                             moves["tip"], moves["axis"], moves["kind"], float(resolution),
+                                             int(threads))
+
+
 def keep_rapids_out_of_stock(paths, stock, part, tool=None, resolution=0.2, margin=1.0, threads=None,
                              after=None, progress=None):
     """The moves of `paths` (a SweepResult or a moves dict, e.g. join_paths') simulated through the stock at

@@ -3,7 +3,7 @@
 // the allowance layer, feed path, in-material share).
 // Run: build/bin/bench_roughing_quality [resolution mm] [strategies, e.g. 135] [key=value …]
 //   keys: step_up_min, step_up_scallop (mm; step_up_min=0: no intermediate levels), threads, split (the grid of
-//   the split of what is left, mm; 0: none), diameter and corner (the torus, mm), step (the partition's, mm).
+//   the split of what is left, mm; 0: none), diameter and corner (the torus, mm), holder (its diameter, mm), step (the partition's, mm).
 #include "roughing/clearance.hpp"
 #include "roughing/parts.hpp"
 #include "roughing/reach.hpp"
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   if (options.count("step_up_scallop")) settings.stepUpScallop = options["step_up_scallop"];
   if (options.count("diameter")) settings.cutter.diameter = options["diameter"];
   if (options.count("corner")) settings.cutter.cornerRadius = options["corner"];
+  if (options.count("holder")) settings.cutter.holderDiameter = options["holder"];
   PartitionSettings partitionSettings;
   if (options.count("step")) partitionSettings.step = options["step"];
   RemovalSettings removalSettings;

@@ -6,8 +6,8 @@ import FreeCAD
 import numpy as np
 
 from hsmplanner import roughing
-from hsmplanner.app import roughing_object, roughing_op, roughing_parts
-from hsmplanner.app.compat import create_job
+from hsmplanner.app import roughing_object, roughing_op
+from helpers import slot_roughing_job
 
 SMALL = dict(diameter=4.0, corner_radius=0.5, flute_length=15.0, stick_out=30.0)
 
@@ -60,6 +60,16 @@ class RestRoughingApi(unittest.TestCase):
         self.assertEqual(len(both.rapid_faults), 0)
         self.assertGreater(both.path_length, self.left.path_length)
 
+    def test_what_z_level_leaves_split_by_cause(self):
+        partition = roughing.partition(self.solid, self.shapes.part_brep, "S1")
+        split = roughing.split_what_is_left(partition, self.solid, self.shapes.part_brep, self.first, resolution=0.5)
+        self.assertAlmostEqual(split.volume, self.volume.volume, delta=0.02 * self.volume.volume)
+        # Along Z the overhanging wall hides a wedge of the slot: no tool reaches it, whatever the path.
+        self.assertGreater(split.unreachable, 0.28 * self.volume.volume)
+        self.assertLess(split.unreachable + split.between_levels, self.left.remaining_volume * 1.05)
+        with self.assertRaisesRegex(ValueError, "resolution 0.01 mm is outside"):
+            roughing.split_what_is_left(partition, self.solid, self.shapes.part_brep, self.first, resolution=0.01)
+
     def test_bad_inputs_are_named(self):
         with self.assertRaisesRegex(ValueError, "rest spacing 0.1 mm is outside \\[0.4"):
             roughing.simulate_removal(self.first, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.4,
@@ -84,13 +94,7 @@ class RestFromOperation(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        cls.document = FreeCAD.newDocument("RestRoughing")
-        part, stock = roughing_parts.create_slanted_slot_block(cls.document)
-        cls.document.recompute()
-        cls.job = create_job([part])
-        roughing_op.torus_controller(cls.job)
-        cls.first = roughing_op.CreateVolumeRoughing("Roughing", parentJob=cls.job)
-        cls.first.Volume = roughing_object.create(part, stock, Strategy="S1")
+        cls.document, part, stock, cls.job, _, cls.first = slot_roughing_job("RestRoughing", "S1")
         small = roughing_op.torus_controller(cls.job, diameter=4.0, corner_radius=0.5, number=4, replace=False)
         cls.rest = roughing_op.CreateVolumeRoughing("Rest", parentJob=cls.job)
         cls.rest.Volume = roughing_object.create(part, stock, Strategy="S3", Step=4.0)

@@ -6,6 +6,7 @@
 #include "roughing/reach.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/sweep.hpp"
+#include "fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,17 +17,10 @@ using namespace hsm;
 using namespace hsm::roughing;
 
 namespace {
-struct Case {
-  PartAndStock shapes = slantedSlotBlock();
-  VolumeToRemove volume = volumeToRemove(shapes.stock, shapes.part);
-};
-const Case& slot() {
-  static const Case c;
-  return c;
-}
+const fixtures::PartCase& slot() { return fixtures::plainSlot(); }
 
 LeftSplit splitOf(Strategy strategy, double stepUp) {
-  const Case& c = slot();
+  const fixtures::PartCase& c = slot();
   const RemovalSolid& solid = c.volume.solids.front();
   const Partition p = partition(solid, c.shapes.part, strategy);
   SweepSettings s;
@@ -59,7 +53,7 @@ TEST(Reach, WhatNoToolAlongTheAxisReachesAndWhatLiesBetweenLevels) {
 }
 
 TEST(Reach, BadInputsAreRefusedByName) {
-  const Case& c = slot();
+  const fixtures::PartCase& c = slot();
   const RemovalSolid& solid = c.volume.solids.front();
   const Partition p = partition(solid, c.shapes.part, Strategy::PlanesParallelToFace);
   auto message = [&](double resolution, double allowance, int threads) {

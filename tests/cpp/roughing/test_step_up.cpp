@@ -6,6 +6,7 @@
 #include "roughing/removal.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/sweep.hpp"
+#include "fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,27 +18,15 @@ using namespace hsm;
 using namespace hsm::roughing;
 
 namespace {
-struct Case {
-  PartAndStock shapes = [] {
-    SlantedSlotParameters p;
-    p.slotWidth = 30.0;
-    p.length = 100.0;
-    return slantedSlotBlock(p);
-  }();
-  VolumeToRemove volume = volumeToRemove(shapes.stock, shapes.part);
-  Partition partition = roughing::partition(volume.solids.front(), shapes.part, Strategy::PlanesParallelToFace);
-};
-const Case& slot() {
-  static const Case c;
-  return c;
-}
+const fixtures::PartCase& slot() { return fixtures::wideSlot(); }
 
 SweepResult sweepWith(double minimum, double scallop = 0.25) {
   SweepSettings s;
   s.stepUpMinimum = minimum;
   s.stepUpScallop = scallop;
-  const Case& c = slot();
-  return sweep(c.partition, c.volume.solids.front(), c.shapes.part, c.shapes.stock, s);
+  const fixtures::PartCase& c = slot();
+  static const Partition z = partition(c.volume.solids.front(), c.shapes.part, Strategy::PlanesParallelToFace);
+  return sweep(z, c.volume.solids.front(), c.shapes.part, c.shapes.stock, s);
 }
 
 RemovalResult removalOf(const SweepResult& r) {

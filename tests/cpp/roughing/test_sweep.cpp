@@ -4,6 +4,7 @@
 #include "roughing/clearance.hpp"
 #include "roughing/removal.hpp"
 #include "roughing/sweep.hpp"
+#include "fixtures.hpp"
 
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -24,26 +25,10 @@ using namespace hsm;
 using namespace hsm::roughing;
 
 namespace {
-// A slot wide enough for two rings of passes at the paper's engagement (30 mm: 21 mm for the tool's centre).
-SlantedSlotParameters wideSlot() {
-  SlantedSlotParameters p;
-  p.slotWidth = 30.0;
-  p.length = 100.0;
-  return p;
-}
-
-struct SlotCase {
-  PartAndStock shapes = slantedSlotBlock(wideSlot());
-  VolumeToRemove volume = volumeToRemove(shapes.stock, shapes.part);
-};
-
-const SlotCase& slot() {
-  static const SlotCase c;
-  return c;
-}
+const fixtures::PartCase& slot() { return fixtures::wideSlot(); }
 
 SweepResult sweepOf(Strategy strategy, const SweepSettings& settings = {}, Partition* kept = nullptr) {
-  const SlotCase& c = slot();
+  const fixtures::PartCase& c = slot();
   Partition partition = roughing::partition(c.volume.solids.front(), c.shapes.part, strategy);
   SweepResult result = sweep(partition, c.volume.solids.front(), c.shapes.part, c.shapes.stock, settings);
   if (kept) *kept = std::move(partition);
@@ -253,16 +238,6 @@ TEST(Sweep, ImpellerCylindersKeepTheAxisRadialAndClearOfTheBlades) {
   EXPECT_EQ(clear.tooClose, 0) << "closest " << clear.minimum << " mm at move " << clear.worstMove;
 }
 
-namespace {
-struct ImpellerCase {
-  PartAndStock wheel = impeller();
-  VolumeToRemove volume = volumeToRemove(wheel.stock, wheel.part);
-};
-const ImpellerCase& wheelCase() {
-  static const ImpellerCase c;
-  return c;
-}
-}  // namespace
 
 // S4 and S5 on a channel of the impeller: continuous 5-axis paths on offsets of the skin and of the hub.
 // Checked independently of the sweep's meridian: OCCT projects every cut point on the reference surface (the
@@ -271,11 +246,11 @@ const ImpellerCase& wheelCase() {
 class ImpellerOffsets : public ::testing::TestWithParam<Strategy> {};
 
 TEST_P(ImpellerOffsets, AxesNormalToTheOffsetsAndClearOfTheBlades) {
-  const ImpellerCase& c = wheelCase();
+  const fixtures::PartCase& c = fixtures::impellerCase();
   const RemovalSolid& channel = c.volume.solids.front();
-  const Partition partition = roughing::partition(channel, c.wheel.part, GetParam());
+  const Partition partition = roughing::partition(channel, c.shapes.part, GetParam());
   const SweepSettings settings;
-  const SweepResult r = sweep(partition, channel, c.wheel.part, c.wheel.stock, settings);
+  const SweepResult r = sweep(partition, channel, c.shapes.part, c.shapes.stock, settings);
   ASSERT_FALSE(r.passes.empty()) << strategyName(GetParam());
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(channel.solid, TopAbs_FACE, faces);
@@ -304,7 +279,7 @@ TEST_P(ImpellerOffsets, AxesNormalToTheOffsetsAndClearOfTheBlades) {
   }
   EXPECT_GT(checked, 20);
   EXPECT_GT(spread * 180.0 / M_PI, 20.0) << "the axis turns along the passes: a continuous 5-axis path";
-  const ClearanceReport clear = checkClearance(r.moves, c.wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
+  const ClearanceReport clear = checkClearance(r.moves, c.shapes.part, settings.cutter, settings.allowance - 0.01, 1.0);
   EXPECT_EQ(clear.tooClose, 0) << "closest " << clear.minimum << " mm at move " << clear.worstMove;
   // Neighbouring passes of a level never farther apart than the engagement asked (measured in space).
   const double step = settings.radialEngagement * settings.cutter.diameter;
@@ -330,25 +305,25 @@ INSTANTIATE_TEST_SUITE_P(Sweep, ImpellerOffsets, ::testing::Values(Strategy::Sto
 // included, finds no position near the part, and the material removal no gouge (a straight rapid between
 // the channels' safe surfaces went through a blade: 5,104 mm³ of S2 "gouge" before).
 TEST(Sweep, ChannelsJoinedThroughTheAir) {
-  const ImpellerCase& c = wheelCase();
+  const fixtures::PartCase& c = fixtures::impellerCase();
   for (Strategy strategy : {Strategy::CoaxialCylinders, Strategy::PlanesParallelToFace}) {
     std::vector<std::vector<ToolMove>> regions;
     size_t count = 0;
     for (size_t i = 0; i < 2; ++i) {
       const RemovalSolid& channel = c.volume.solids[i];
-      regions.push_back(sweep(roughing::partition(channel, c.wheel.part, strategy), channel, c.wheel.part, c.wheel.stock, {}).moves);
+      regions.push_back(sweep(roughing::partition(channel, c.shapes.part, strategy), channel, c.shapes.part, c.shapes.stock, {}).moves);
       count += regions.back().size();
     }
-    const std::vector<ToolMove> joined = joinSweeps(regions, c.wheel.stock);
+    const std::vector<ToolMove> joined = joinSweeps(regions, c.shapes.stock);
     EXPECT_GT(joined.size(), count);
     const SweepSettings settings;
-    const ClearanceReport clear = checkClearance(joined, c.wheel.part, settings.cutter, settings.allowance - 0.01, 1.0);
+    const ClearanceReport clear = checkClearance(joined, c.shapes.part, settings.cutter, settings.allowance - 0.01, 1.0);
     EXPECT_EQ(clear.tooClose, 0) << strategyName(strategy) << ": closest " << clear.minimum << " at move " << clear.worstMove;
     if (strategy == Strategy::PlanesParallelToFace)
       for (const ToolMove& m : joined) EXPECT_GT(m.axis.dot(joined.front().axis), 1.0 - 1e-12) << "S1 keeps one axis";
     RemovalSettings coarse;
     coarse.resolution = 0.5;
-    const RemovalResult removal = simulateRemoval(joined, settings.cutter, c.wheel.stock, c.wheel.part, coarse);
+    const RemovalResult removal = simulateRemoval(joined, settings.cutter, c.shapes.stock, c.shapes.part, coarse);
     EXPECT_LT(removal.gougeVolume, 1.0) << strategyName(strategy) << ": gouge at move " << removal.gougeMove;
   }
 }
