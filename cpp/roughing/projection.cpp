@@ -18,6 +18,13 @@ namespace hsm::roughing {
 
 namespace {
 
+// Two straight lines at an angle θ that meet L away: a point at distance D = L·sin θ from one, on the other,
+// is L·θ away measured along the arc; x / asin x (x = D / L) is the scale that holds out to D.
+double chordFactor(double x) {
+  x = std::min(0.99, x);
+  return x > 1e-9 ? x / std::asin(x) : 1.0;
+}
+
 cl::IntPoint toInt(double x, double y) {
   return {static_cast<cl::cInt>(std::llround(x * kScale)), static_cast<cl::cInt>(std::llround(y * kScale))};
 }
@@ -107,8 +114,8 @@ public:
   // across to a radial tool axis Δθ away the distance is ρ·sin Δθ, shorter: out to the reach, the scale
   // that holds at its end (x / asin x of the reach over ρ).
   Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
-    const double rho = height(p), x = std::min(0.99, reach_ / std::max(rho, 1e-6));
-    return {rho / r_ * (x > 1e-9 ? x / std::asin(x) : 1.0), 1.0};
+    const double rho = height(p);
+    return {rho / r_ * chordFactor(reach_ / std::max(rho, 1e-6)), 1.0};
   }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
@@ -194,7 +201,18 @@ public:
   Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
     const auto place = placeOf(p);
     if (!place) return {1.0, 1.0};
-    return {meridian_->plane(p).x() / rhoRef_, meridian_->stretch(place->s, place->d)};
+    // The normal lines converge on the axis round it and on the meridian's centre of curvature along it: over
+    // the sweep's reach a point's distance from another line is the sine of their angle, not the angle.
+    const double rho = std::max(meridian_->plane(p).x(), 1e-6), h = 1e-2;
+    const double stretch = meridian_->stretch(place->s, place->d);
+    const double bend = std::abs(meridian_->stretch(place->s, place->d + h) - meridian_->stretch(place->s, place->d - h)) / (2.0 * h);
+    // And a point b round the axis and a along the meridian from a tool's line (a² + b² = D²) is
+    // a² + b²·(1 − a·t/ρ) squared away where the line stands a·t nearer the axis (t: the meridian's radial
+    // share): at worst D²·(1 − 2·D·t/(3√3·ρ)), a scale taken both ways.
+    const double t = std::abs(meridian_->normal(place->s).y());
+    const double near = std::sqrt(std::max(0.01, 1.0 - 2.0 * reach_ * t / (3.0 * std::sqrt(3.0) * rho)));
+    return near * Eigen::Vector2d(rho / rhoRef_ * chordFactor(reach_ / rho),
+                                  stretch * chordFactor(reach_ * bend / std::max(stretch, 1e-6)));
   }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
