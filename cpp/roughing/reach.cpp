@@ -133,13 +133,34 @@ public:
         envelope.height[c] = atLevel.height[c] = std::isfinite(envelope.value[c]) ? envelope.value[c] : 0.5 * (low_ + high_);
         envelope.where[c] = atLevel.where[c] = {grid_.x0 + (i + 0.5) * grid_.size, grid_.y0 + (j + 0.5) * grid_.size};
       }
+    // The floors per layer of heights: where the columns diverge (unrolled cylinders, offsets of a surface of
+    // revolution) a material point's distance from a tool's column is measured at the point's own height.
     const auto tool = [&](double rho) { return GrownCutter::lowestAt(cutter_, 0.0, rho); };
     const auto least = [](double a, double b) { return std::min(a, b); };
-    std::vector<double> floor(grid_.cells(), kInfinity), floorOfLevels(grid_.cells(), kInfinity);
-    spread(grid_, *projection_, envelope, cutter_.radius(), tool, least, floor);
-    spread(grid_, *projection_, atLevel, cutter_.radius(), tool, least, floorOfLevels);
-    integrate(floor, floorOfLevels, split);
+    const int layers = layerCount();
+    std::vector<std::vector<double>> floors(layers), floorsOfLevels(layers);
+    for (int b = 0; b < layers; ++b) {
+      if (layers > 1) {
+        const double h = low_ + (b + 0.5) * (high_ - low_) / layers;
+        std::fill(envelope.height.begin(), envelope.height.end(), h);
+        atLevel.height = envelope.height;
+      }
+      floors[b].assign(grid_.cells(), kInfinity), floorsOfLevels[b].assign(grid_.cells(), kInfinity);
+      spread(grid_, *projection_, envelope, cutter_.radius(), tool, least, floors[b]);
+      spread(grid_, *projection_, atLevel, cutter_.radius(), tool, least, floorsOfLevels[b]);
+    }
+    integrate(floors, floorsOfLevels, split);
     return split;
+  }
+
+  // Layers of about kLayer mm over the solid's heights where the plane's scales change with the height, else 1.
+  int layerCount() const {
+    constexpr double kLayer = 2.0;
+    constexpr int kMaxLayers = 32;
+    const cl::IntPoint q = grid_.centre(grid_.nx / 2, grid_.ny / 2);
+    const Eigen::Vector2d a = scalesOf(*projection_, q, low_, g_), b = scalesOf(*projection_, q, high_, g_);
+    if ((a - b).norm() < 1e-9) return 1;
+    return std::clamp(static_cast<int>(std::ceil((high_ - low_) / kLayer)), 1, kMaxLayers);
   }
 
 private:
@@ -187,7 +208,8 @@ private:
   }
 
   // The solid's material, column by column over the region's box, on its tri-dexel model.
-  void integrate(const std::vector<double>& floor, const std::vector<double>& floorOfLevels, LeftSplit& split) const {
+  void integrate(const std::vector<std::vector<double>>& floors, const std::vector<std::vector<double>>& floorsOfLevels,
+                 LeftSplit& split) const {
     TriDexel material(solidMesh_.bounds(), g_, kMaxSamples);
     material.fill(solidMesh_);
     const int heights = static_cast<int>(std::ceil((high_ - low_) / g_));
@@ -205,9 +227,10 @@ private:
             if (!material.inside(projection_->point(q, h))) continue;
             const Eigen::Vector2d s = scalesOf(*projection_, q, h, 0.5 * g_);
             const double volume = s.x() * s.y() * g_ * g_ * g_;
+            const size_t layer = std::min(floors.size() - 1, static_cast<size_t>((h - low_) / (high_ - low_) * floors.size()));
             sum[0] += volume;
-            if (h < floor[c]) sum[1] += volume;
-            else if (h < floorOfLevels[c]) sum[2] += volume;
+            if (h < floors[layer][c]) sum[1] += volume;
+            else if (h < floorsOfLevels[layer][c]) sum[2] += volume;
           }
         }
     });

@@ -12,7 +12,8 @@
 //                    cutter's lowest height at their distance from the axis (a drop-cutter of the part's
 //                    heights, distances in true mm over the plane's scales at each point);
 //   floor F(q')      the lowest point the tool reaches in column q' from any column within its radius, the tip
-//                    at the envelope there: material below it is out of reach;
+//                    at the envelope there: material below it is out of reach (where the columns diverge, in
+//                    layers of 2 mm: the distance to a tool's column is measured at the material's height);
 //   levels           the distinct tip heights of the path's cuts; from each column the tool reaches only as low
 //                    as the lowest level above its envelope, which gives a floor F_L ≥ F;
 // and the solid's material is integrated column by column (its tri-dexel model, the volume element from the

@@ -52,6 +52,27 @@ TEST(Reach, WhatNoToolAlongTheAxisReachesAndWhatLiesBetweenLevels) {
   EXPECT_LT(stepped.betweenLevels, 0.5 * z.betweenLevels);
 }
 
+// Along the hub's normals (S5 on an impeller's channel) the columns diverge, and a point's distance from a
+// tool's column is taken at the point's own height, layer by layer: the tool's reach still does not depend on
+// the path, and the shares stay within the sampled material.
+TEST(Reach, WhereTheColumnsDivergeTheSharesStillAddUp) {
+  const fixtures::PartCase& c = fixtures::impellerCase();
+  const RemovalSolid& channel = c.volume.solids.front();
+  const Partition p = partition(channel, c.shapes.part, Strategy::HubOffsets);
+  SweepSettings s;
+  s.stepUpMinimum = 0.0;
+  const SweepResult r = sweep(p, channel, c.shapes.part, c.shapes.stock, s);
+  const LeftSplit swept = splitWhatIsLeft(p, channel, c.shapes.part, s.cutter, s.allowance, r.moves, 0.5);
+  const LeftSplit none = splitWhatIsLeft(p, channel, c.shapes.part, s.cutter, s.allowance, {}, 0.5);
+  EXPECT_NEAR(swept.volume, channel.volume, 0.02 * channel.volume) << "the solid's material, sampled";
+  EXPECT_NEAR(none.unreachable, swept.unreachable, 1e-6 * channel.volume) << "the tool's reach does not depend on the path";
+  EXPECT_GT(swept.unreachable, 0.1 * swept.volume) << "the blades lean over the hub's normals";
+  EXPECT_LT(swept.unreachable, 0.5 * swept.volume);
+  EXPECT_GE(swept.levels, 2);
+  EXPECT_GT(swept.betweenLevels, 0.0);
+  EXPECT_LE(swept.unreachable + swept.betweenLevels, swept.volume);
+}
+
 TEST(Reach, BadInputsAreRefusedByName) {
   const fixtures::PartCase& c = slot();
   const RemovalSolid& solid = c.volume.solids.front();
