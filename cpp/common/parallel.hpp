@@ -65,38 +65,26 @@ void parallelSlices(long n, int threads, long grain, Work&& work) {
   if (failure) std::rethrow_exception(failure);
 }
 
-// Chunks of `chunk` items taken in turn by `threads` worker threads (0: all cores; one: the calling thread
-// itself); after each chunk done the calling thread calls report(items done) (a Python progress callback must
-// be called from there); an exception there (the user cancelled) stops the workers at their next chunk and
-// reaches the caller after the join, as one in a worker does.
-template <class Work, class Report>
-void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Report&& report) {
-  chunk = std::max<long>(1, chunk);
-  const long workers = std::min<long>(threadCount(threads), (n + chunk - 1) / chunk);
-  if (workers <= 1) {
-    for (long from = 0; from < n; from += chunk) {
-      work(from, std::min(n, from + chunk));
-      report(std::min(n, from + chunk));
-    }
-    return;
-  }
-  // The calling thread only reports: woken by each chunk done, it hears a cancel while the workers work,
-  // however long its own chunk would have taken.
-  std::atomic<long> next{0}, done{0};
+// Runs body(worker, stop, announce) on `workers` threads; each calls announce() after a piece of work and
+// returns when its work is done or `stop` is set. Meanwhile the calling thread only reports: woken by each
+// announce, it calls report(progress()) when that changes (a Python progress callback must be called from
+// there), so it hears a cancel while the workers work, however long a piece takes. An exception there (the
+// user cancelled) sets `stop` and reaches the caller after the join, as one in a worker does.
+template <class Body, class Progress, class Report>
+void superviseWorkers(long workers, Body&& body, Progress&& progress, Report&& report) {
   std::atomic<bool> stop{false};
   std::exception_ptr failure, cancelled;
   std::mutex mutex;
   std::condition_variable progressed;
   long finished = 0;  // workers that returned (under `mutex`)
+  const auto announce = [&] {
+    { const std::lock_guard<std::mutex> lock(mutex); }  // the reporter reads the progress under the lock
+    progressed.notify_one();
+  };
   std::vector<std::thread> pool;
-  startEach(pool, workers, [&](long) {
+  startEach(pool, workers, [&](long worker) {
     try {
-      for (long from = next.fetch_add(chunk); from < n && !stop; from = next.fetch_add(chunk)) {
-        work(from, std::min(n, from + chunk));
-        done += std::min(n, from + chunk) - from;
-        { const std::lock_guard<std::mutex> lock(mutex); }  // the reporter checks `done` under the lock
-        progressed.notify_one();
-      }
+      body(worker, stop, announce);
     } catch (...) {
       stop = true;
       const std::lock_guard<std::mutex> lock(mutex);
@@ -112,8 +100,8 @@ void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Repor
     std::unique_lock<std::mutex> lock(mutex);
     long reported = 0;
     while (finished < workers) {
-      progressed.wait(lock, [&] { return finished == workers || done.load() != reported; });
-      const long now = done.load();
+      progressed.wait(lock, [&] { return finished == workers || progress() != reported; });
+      const long now = progress();
       if (now == reported) continue;
       reported = now;
       if (cancelled) continue;
@@ -130,6 +118,67 @@ void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Repor
   for (auto& t : pool) t.join();
   if (cancelled) std::rethrow_exception(cancelled);
   if (failure) std::rethrow_exception(failure);
+}
+
+// Chunks of `chunk` items taken in turn by `threads` worker threads (0: all cores; one: the calling thread
+// itself); after each chunk done the calling thread calls report(items done) (superviseWorkers: a cancel there
+// stops the workers at their next chunk).
+template <class Work, class Report>
+void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Report&& report) {
+  chunk = std::max<long>(1, chunk);
+  const long workers = std::min<long>(threadCount(threads), (n + chunk - 1) / chunk);
+  if (workers <= 1) {
+    for (long from = 0; from < n; from += chunk) {
+      work(from, std::min(n, from + chunk));
+      report(std::min(n, from + chunk));
+    }
+    return;
+  }
+  std::atomic<long> next{0}, done{0};
+  superviseWorkers(
+      workers,
+      [&](long, const std::atomic<bool>& stop, const auto& announce) {
+        for (long from = next.fetch_add(chunk); from < n && !stop; from = next.fetch_add(chunk)) {
+          work(from, std::min(n, from + chunk));
+          done += std::min(n, from + chunk) - from;
+          announce();
+        }
+      },
+      [&] { return done.load(); }, report);
+}
+
+// Calls work(lane, step) for every lane in [0, lanes) and every step in [0, steps), each lane's steps in order
+// on a thread of its own (one lane: the calling thread itself): what a lane owns needs no lock and no lane
+// waits for another, so a long run of small steps pays no barrier per step. The calling thread calls
+// report(steps every lane has done) as they advance (superviseWorkers: a cancel there stops the lanes at their
+// next step).
+template <class Work, class Report>
+void parallelLanes(int lanes, long steps, Work&& work, Report&& report) {
+  lanes = std::clamp(lanes, 1, kMaxThreads);
+  if (lanes == 1) {
+    for (long step = 0; step < steps; ++step) {
+      work(0, step);
+      report(step + 1);
+    }
+    return;
+  }
+  std::vector<std::atomic<long>> done(static_cast<size_t>(lanes));
+  for (auto& d : done) d = 0;
+  superviseWorkers(
+      lanes,
+      [&](long lane, const std::atomic<bool>& stop, const auto& announce) {
+        for (long step = 0; step < steps && !stop; ++step) {
+          work(static_cast<int>(lane), step);
+          done[static_cast<size_t>(lane)] = step + 1;
+          announce();
+        }
+      },
+      [&] {
+        long least = steps;
+        for (const auto& d : done) least = std::min(least, d.load());
+        return least;
+      },
+      report);
 }
 
 // Calls work(from, to) over [0, n) in chunks of `chunk` items that `threads` threads (0: all cores) take in

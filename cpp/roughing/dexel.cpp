@@ -62,13 +62,6 @@ long TriDexel::rays() const {
   return static_cast<long>(rays_[0].size() + rays_[1].size() + rays_[2].size());
 }
 
-Eigen::Vector3d TriDexel::origin(int k, int i, int j) const {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  p[(k + 1) % 3] = low_[(k + 1) % 3] + i * h_ + jitter_[k][0];
-  p[(k + 2) % 3] = low_[(k + 2) % 3] + j * h_ + jitter_[k][1];
-  return p;
-}
-
 void TriDexel::rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const {
   const int u = (k + 1) % 3, v = (k + 2) % 3;
   auto first = [&](double x, int axis, int a) {

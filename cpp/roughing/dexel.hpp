@@ -42,8 +42,14 @@ public:
   int count(int k, int axis) const { return n_[k][axis]; }
   Intervals& at(int k, int i, int j) { return rays_[k][static_cast<size_t>(j) * n_[k][0] + i]; }
   const Intervals& at(int k, int i, int j) const { return rays_[k][static_cast<size_t>(j) * n_[k][0] + i]; }
-  // Where ray (i, j) of direction k runs: its point at coordinate 0 along k.
-  Eigen::Vector3d origin(int k, int i, int j) const;
+  // Where ray (i, j) of direction k runs: its point at coordinate 0 along k (inline: the simulation asks it
+  // for every ray a tool crosses).
+  Eigen::Vector3d origin(int k, int i, int j) const {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    p[(k + 1) % 3] = low_[(k + 1) % 3] + i * h_ + jitter_[k][0];
+    p[(k + 2) % 3] = low_[(k + 2) % 3] + j * h_ + jitter_[k][1];
+    return p;
+  }
   // The material as a closed mesh of blocks: one column per `stride` × `stride` Z rays (the middle one's
   // intervals), its top and bottom, and its sides where the neighbouring column has no material. Its volume
   // is the columns' (Σ length × (stride·resolution)²).

@@ -20,6 +20,12 @@ namespace {
 
 constexpr long kMaxRays = 20'000'000;  // three models of them: material, part, part not entered
 constexpr long kMaxPositions = 10'000'000;
+// Positions whose chips are tallied per thread before they are added up: bounds that memory (16 bytes per
+// position and thread) however long the program.
+constexpr size_t kRoundPositions = 1 << 15;
+// mm: a ray whose material ends this close to the cutter's bounding cylinder is still cut (the cutter's own
+// spans are computed otherwise and may reach a rounding error beyond it).
+constexpr double kSlack = 1e-9;
 constexpr int kCornerSegments = 8;
 constexpr double kRapidVolume = 1e-6;  // mm³: less is rounding at a grazing ray, not material  // a torus corner of radius 1 as 8 cones: within 5 µm of it
 
@@ -36,6 +42,9 @@ struct Shape {
   std::vector<Ball> balls;
   double radius = 0.0, length = 0.0;  // bounding cylinder
   double corner = 0.0;                // below this height the corner's cones and the ball are needed
+  double top = 0.0;                   // the highest point of the cones and balls (above `length` when the
+                                      // flutes are shorter than the corner)
+  std::vector<int> stack;             // the cones from the bottom up
 };
 
 Shape shapeOf(const Cutter& c) {
@@ -60,6 +69,11 @@ Shape shapeOf(const Cutter& c) {
     }
     s.corner = r;
   }
+  for (size_t c = 0; c < s.cones.size(); ++c) s.stack.push_back(static_cast<int>(c));
+  std::sort(s.stack.begin(), s.stack.end(), [&](int a, int b) { return s.cones[a].h0 < s.cones[b].h0; });
+  s.top = s.length;
+  for (const Cone& c : s.cones) s.top = std::max(s.top, c.h1);
+  for (const Ball& b : s.balls) s.top = std::max(s.top, b.centre + b.radius);
   return s;
 }
 
@@ -143,16 +157,31 @@ Position positionAt(const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, con
   return p;
 }
 
-// The cutter's intervals along ray o + t·e_k (world), united (sorted, merged).
-void cutterSpans(const Shape& shape, const Position& at, const Eigen::Vector3d& o, int k, Intervals& out) {
+// A cutter of cones only (flat, torus) is convex: its profile's radius grows ever slower with height, from
+// the flat bottom up the corner to the flutes' cylinder. Along a ray whose height changes, its cones' spans
+// then follow one another in the order of their heights and join into one; so only the first and the last
+// the ray meets are computed, walking in from both ends of the stack (in the corner most rays meet few of
+// its eight cones). False where that does not hold (a ball, a ray at one height): every span is computed.
+bool walkStack(const Shape& shape, const Eigen::Vector3d& q, const Eigen::Vector3d& d, Intervals& out) {
+  if (!shape.balls.empty() || std::abs(d.z()) < 1e-12) return false;
+  const int n = static_cast<int>(shape.stack.size());
+  const auto spanOf = [&](int m) { return coneSpan(shape.cones[shape.stack[d.z() > 0.0 ? m : n - 1 - m]], q, d); };
+  Span first, last;
+  int m = 0;
+  while (m < n && !(first = spanOf(m))) ++m;
+  if (!first) return true;
+  for (int e = n - 1; e > m && !last; --e) last = spanOf(e);
+  out.push_back({first->from, last ? last->to : first->to});
+  return true;
+}
+
+// The cutter's intervals along the ray q + t·d (tool frame), united (sorted, merged); `bound`: the ray within
+// the bounding cylinder (the caller's test that it meets the tool at all).
+void cutterSpans(const Shape& shape, const Eigen::Vector3d& q, const Eigen::Vector3d& d, const Interval& bound,
+                 Intervals& out) {
   out.clear();
-  const Eigen::Vector3d w = o - at.tip;
-  const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
-  const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
-  // The bounding cylinder first: most rays of the box miss the tool or pass above its corner.
-  const Span bound = coneSpan({0.0, shape.radius, shape.length, shape.radius}, q, d);
-  if (!bound) return;
-  const bool low = std::min(q.z() + bound->from * d.z(), q.z() + bound->to * d.z()) < shape.corner;
+  const bool low = std::min(q.z() + bound.from * d.z(), q.z() + bound.to * d.z()) < shape.corner;
+  if (low && walkStack(shape, q, d, out)) return;
   for (size_t c = 0; c < shape.cones.size(); ++c)
     if (c == 0 || low)
       if (const Span s = coneSpan(shape.cones[c], q, d)) out.push_back(*s);
@@ -173,6 +202,31 @@ bool touches(const Intervals& ray, double from, double to) {
   for (const Interval& s : ray)
     if (s.to > from && s.from < to) return true;
   return false;
+}
+
+// The first and the last index of a range [lo, hi] from a double (perhaps far out): none when first > last.
+int firstWithin(double x, int lo, int hi) { return static_cast<int>(std::clamp(x, double(lo), hi + 1.0)); }
+int lastWithin(double x, int lo, int hi) { return static_cast<int>(std::clamp(x, lo - 1.0, double(hi))); }
+
+// The u-range [from, to] of the points (u, c) within `radius` of the segment a-b (2-D; from > to: none). Seen
+// along a model's rays, a cylinder about a segment lies within this capsule: the rays of row c that can meet it.
+std::pair<double, double> rowOfCapsule(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double radius, double c) {
+  double from = std::numeric_limits<double>::infinity(), to = -from;
+  const auto add = [&](double u) { from = std::min(from, u), to = std::max(to, u); };
+  for (const Eigen::Vector2d* end : {&a, &b}) {  // the round ends
+    const double across = radius * radius - (c - end->y()) * (c - end->y());
+    if (across >= 0.0) add(end->x() - std::sqrt(across)), add(end->x() + std::sqrt(across));
+  }
+  const Eigen::Vector2d along = b - a;
+  const double length = along.norm();
+  if (length > 0.0) {
+    const Eigen::Vector2d side = radius / length * Eigen::Vector2d(-along.y(), along.x());
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(a + side), Eigen::Vector2d(a - side)}) {  // the straight sides
+      const Eigen::Vector2d q = p + along;
+      if (p.y() != q.y() && (p.y() - c) * (q.y() - c) <= 0.0) add(p.x() + (c - p.y()) / (q.y() - p.y()) * (q.x() - p.x()));
+    }
+  }
+  return {from, to};
 }
 
 // Samples of the moves: the tip straight, the axis turned evenly, neighbours at most `step` apart at the tip
@@ -294,7 +348,7 @@ public:
     part_.fill(partMesh_);
     material_.subtract(part_);
     uncut_ = part_;
-    threads_ = threadCount(settings.threads);
+    lanes_ = threadCount(settings.threads);
   }
 
   RemovalResult run(const std::vector<ToolMove>& moves) {
@@ -312,22 +366,13 @@ public:
       if (moves[i].kind != MoveKind::Rapid) r.feedLength += length;
     }
     ProgressReporter report(settings_.progress, "material removal");
-    double sinceStickOut = 0.0;
-    size_t start = 0;
-    while (start < positions.size()) {
-      // A batch ends where the stick-out is measured next: it sees the stock as it is there.
-      size_t end = start;
-      while (end < positions.size() && (sinceStickOut < settings_.stickOutSpacing || end == start))
-        sinceStickOut += positions[end++].step;
-      cut(positions, start, end, r);
-      const Position& last = positions[end - 1];
-      if (sinceStickOut >= settings_.stickOutSpacing || end == positions.size()) {
-        sinceStickOut = 0.0;
-        const double needed = stickOutAt(last);
-        if (needed > r.stickOut) r.stickOut = needed, r.stickOutMove = last.move;
-      }
-      start = end;
-      report(double(start) / double(positions.size()));
+    const std::vector<size_t> ends = batchEnds(positions);
+    for (size_t first = 0; first < ends.size();) {
+      const size_t start = first ? ends[first - 1] : 0;
+      size_t last = first + 1;
+      while (last < ends.size() && ends[last] - start <= kRoundPositions) ++last;
+      cutRound(positions, ends, first, last, r, report);
+      first = last;
     }
     r.remainingVolume = material_.volume();
     r.remainingShare = r.volumeToRemove > 0.0 ? 100.0 * r.remainingVolume / r.volumeToRemove : 0.0;
@@ -345,42 +390,51 @@ public:
 private:
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
 
-  // Positions [start, end) through the model, rays shared out between threads row by row (interleaved, so
-  // that the few rows a tool crosses are spread over all of them).
-  void cut(const std::vector<Position>& positions, size_t start, size_t end, RemovalResult& r) {
-    const size_t n = end - start;
-    std::vector<std::vector<double>> removed(threads_, std::vector<double>(n, 0.0)), gouged(threads_, std::vector<double>(n, 0.0));
-    parallelSlices(threads_, threads_, 1, [&](long from, long to) {
-      Intervals spans;
-      for (long thread = from; thread < to; ++thread)
-        for (size_t p = start; p < end; ++p) {
-          const Position& at = positions[p];
-          for (int k = 0; k < 3; ++k) {
-            int i0, i1, j0, j1;
-            material_.rangeOf(k, at.box, i0, i1, j0, j1);
-            const int first = j0 + static_cast<int>(((thread - j0) % threads_ + threads_) % threads_);
-            for (int j = first; j <= j1; j += threads_)
-              for (int i = i0; i <= i1; ++i) {
-                Intervals& ray = material_.at(k, i, j);
-                Intervals& solid = uncut_.at(k, i, j);
-                const bool inPart = k == 2 && touches(solid, at.box.min()[k], at.box.max()[k]);
-                if (!inPart && !touches(ray, at.box.min()[k], at.box.max()[k])) continue;
-                cutterSpans(shape_, at, material_.origin(k, i, j), k, spans);
-                for (const Interval& s : spans) {
-                  const double taken = subtract(ray, s.from, s.to);
-                  if (k == 2) {
-                    removed[thread][p - start] += taken;
-                    if (inPart) gouged[thread][p - start] += roughing::subtract(solid, s.from, s.to);
-                  }
-                }
-              }
-          }
-        }
-    });
+  // What a lane (a thread) tallies for the positions of a round, on its own rows.
+  struct Tally {
+    std::vector<double> removed, gouged;  // per position: length taken out along the Z rays, of stock and part
+    std::vector<double> highest;          // per batch: the stick-out its rows need at the batch's end
+    Intervals spans;                      // scratch
+  };
+
+  // The ends of the batches of positions: a batch ends where the stick-out is measured next (and at the last
+  // position), so that it sees the stock as it is there.
+  std::vector<size_t> batchEnds(const std::vector<Position>& positions) const {
+    std::vector<size_t> ends;
+    for (size_t end = 0; end < positions.size();) {
+      double since = 0.0;
+      const size_t start = end;
+      while (end < positions.size() && (since < settings_.stickOutSpacing || end == start)) since += positions[end++].step;
+      ends.push_back(end);
+    }
+    return ends;
+  }
+
+  // A lane owns pairs of rows dealt out in turn: the few rows a tool crosses are spread over all lanes, and so
+  // are the stick-out's every other row. Each ray is cut by one lane only, in the positions' order, so lanes
+  // need neither locks nor a barrier between positions.
+  bool owns(int lane, int j) const { return (j / 2) % lanes_ == lane; }
+
+  // Batches [first, last) of the positions through the model, each lane on its rows, then the chips, gouges,
+  // rapid faults and stick-outs added up in the positions' order.
+  void cutRound(const std::vector<Position>& positions, const std::vector<size_t>& ends, size_t first, size_t last,
+                RemovalResult& r, ProgressReporter& report) {
+    const size_t start = first ? ends[first - 1] : 0, n = ends[last - 1] - start;
+    std::vector<Tally> tallies(static_cast<size_t>(lanes_));
+    for (Tally& t : tallies) t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
+    parallelLanes(
+        lanes_, static_cast<long>(last - first),
+        [&](int lane, long batch) {
+          Tally& t = tallies[static_cast<size_t>(lane)];
+          const size_t from = first + batch ? ends[first + batch - 1] : 0, to = ends[first + batch];
+          for (size_t p = from; p < to; ++p) cutAt(positions[p], lane, t.removed[p - start], t.gouged[p - start], t.spans);
+          t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane);
+        },
+        [&](long done) { report(double(ends[first + done - 1]) / double(positions.size())); });
     const double cell = material_.resolution() * material_.resolution();
     for (size_t p = 0; p < n; ++p) {
       double volume = 0.0, gouge = 0.0;
-      for (int t = 0; t < threads_; ++t) volume += removed[t][p] * cell, gouge += gouged[t][p] * cell;
+      for (const Tally& t : tallies) volume += t.removed[p] * cell, gouge += t.gouged[p] * cell;
       const Position& at = positions[start + p];
       if (at.feed && at.step > 0.0 && volume >= settings_.chipSection * at.step) r.inMaterialLength += at.step;
       if (gouge > 0.0) {
@@ -394,13 +448,71 @@ private:
         r.rapidVolume += volume;
       }
     }
+    for (size_t b = first; b < last; ++b) {
+      double needed = 0.0;
+      for (const Tally& t : tallies) needed = std::max(needed, t.highest[b - first]);
+      if (needed > r.stickOut) r.stickOut = needed, r.stickOutMove = positions[ends[b] - 1].move;
+    }
+  }
+
+  // One position through the rays of `lane`'s rows: only the rays within the capsule about the cutter (not its
+  // whole box: a tilted tool's box is mostly empty), and of those only the ones whose stock or part reaches
+  // into the cutter's bounding cylinder. Adds the Z rays' lengths taken out of the stock and of the part.
+  void cutAt(const Position& at, int lane, double& removed, double& gouged, Intervals& spans) {
+    const double h = material_.resolution();
+    const double radius = shape_.radius * (1.0 + 1e-9) + kSlack;
+    const Eigen::Vector3d top = at.tip + shape_.top * at.axis;
+    const Cone bounding{0.0, shape_.radius, shape_.length, shape_.radius}, reaching{0.0, shape_.radius, shape_.top, shape_.radius};
+    for (int k = 0; k < 3; ++k) {
+      const int u = (k + 1) % 3, v = (k + 2) % 3;
+      int i0, i1, j0, j1;
+      material_.rangeOf(k, at.box, i0, i1, j0, j1);
+      const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
+      const Eigen::Vector2d a(at.tip[u], at.tip[v]), b(top[u], top[v]);
+      for (int j = j0; j <= j1; ++j) {
+        if (!owns(lane, j)) continue;
+        const Eigen::Vector3d row = material_.origin(k, 0, j);
+        const auto [from, to] = rowOfCapsule(a, b, radius, row[v]);
+        if (!(from <= to)) continue;
+        const int first = firstWithin(std::ceil((from - row[u]) / h), i0, i1);
+        const int last = lastWithin(std::floor((to - row[u]) / h), i0, i1);
+        for (int i = first; i <= last; ++i) {
+          // Most rays the tool crosses lost their material there to the positions before: the box tells
+          // them at once; the bounding cylinder then tells most of the others.
+          Intervals& ray = material_.at(k, i, j);
+          Intervals* solid = k == 2 ? &uncut_.at(k, i, j) : nullptr;
+          if (!(solid && touches(*solid, at.box.min()[k], at.box.max()[k])) && !touches(ray, at.box.min()[k], at.box.max()[k]))
+            continue;
+          const Eigen::Vector3d w = material_.origin(k, i, j) - at.tip;
+          const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
+          const Span bound = coneSpan(bounding, q, d);
+          if (!bound) continue;
+          // Every span of the cutter lies within `reach` (the bounding cylinder, or a taller one when the
+          // corner stands above short flutes): a ray whose stock and part keep out of it loses nothing.
+          const Span reach = shape_.top > shape_.length ? coneSpan(reaching, q, d) : bound;
+          const double lo = (reach ? reach : bound)->from - kSlack, hi = (reach ? reach : bound)->to + kSlack;
+          const bool inPart = solid && touches(*solid, lo, hi);
+          if (!inPart && !touches(ray, lo, hi)) continue;
+          cutterSpans(shape_, q, d, *bound, spans);
+          for (const Interval& s : spans) {
+            const double taken = subtract(ray, s.from, s.to);
+            if (k == 2) {
+              removed += taken;
+              if (inPart) gouged += roughing::subtract(*solid, s.from, s.to);
+            }
+          }
+        }
+      }
+    }
   }
 
   // The highest point of the part or of the stock left within the holder's radius of the axis, above the tip
-  // (0 when none): read on the rays of the direction nearest the axis, each clipped to the holder's cylinder.
-  double stickOutAt(const Position& at) const {
+  // (0 when none), on `lane`'s rows: read on the rays of the direction nearest the axis, each clipped to the
+  // holder's cylinder (rows clipped to the band that cylinder covers seen along them).
+  double stickOutAt(const Position& at, int lane) const {
     int k;
     at.axis.cwiseAbs().maxCoeff(&k);
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
     const double radius = 0.5 * cutter_.holderDiameter;
     const Eigen::AlignedBox3d stock = stockMesh_.bounds();
     double reach = 0.0;  // how far up the axis the stock goes
@@ -412,36 +524,52 @@ private:
     const Eigen::AlignedBox3d box(at.tip.cwiseMin(top) - across, at.tip.cwiseMax(top) + across);
     int i0, i1, j0, j1;
     material_.rangeOf(k, box, i0, i1, j0, j1);
-    std::vector<double> highest(threads_, 0.0);
-    parallelSlices(threads_, threads_, 1, [&](long from, long to) {
-      for (long thread = from; thread < to; ++thread)
-        for (int j = j0 + 2 * static_cast<int>(thread); j <= j1; j += 2 * threads_)
-          for (int i = i0; i <= i1; i += 2) {  // every other ray: heights stay exact along each ray
-            const Eigen::Vector3d o = material_.origin(k, i, j);
-            // The ray o + t·e_k within the holder's infinite cylinder about the axis.
-            const Eigen::Vector3d w = o - at.tip;
-            Eigen::Vector3d d = Eigen::Vector3d::Zero();
-            d[k] = 1.0;
-            const Eigen::Vector3d wp = w - w.dot(at.axis) * at.axis, dp = d - d.dot(at.axis) * at.axis;
-            const double A = dp.squaredNorm(), B = 2.0 * wp.dot(dp), C = wp.squaredNorm() - radius * radius;
-            double t0 = -std::numeric_limits<double>::infinity(), t1 = -t0;
-            if (A > 1e-12) {
-              const double disc = B * B - 4.0 * A * C;
-              if (disc < 0.0) continue;
-              t0 = (-B - std::sqrt(disc)) / (2.0 * A), t1 = (-B + std::sqrt(disc)) / (2.0 * A);
-            } else if (C > 0.0) {
-              continue;
-            }
-            for (const Intervals* ray : {&material_.at(k, i, j), &part_.at(k, i, j)})
-              for (const Interval& s : *ray) {
-                const double a = std::max(s.from, t0), b = std::min(s.to, t1);
-                if (b <= a) continue;
-                const double h = std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]);
-                highest[thread] = std::max(highest[thread], h);
-              }
+    // A ray along e_k meets the axis's infinite cylinder where its distance to the axis, |(o - tip)·n| / |n|
+    // with n = e_k × axis, is at most the radius: a band of each row (when the axis leans enough to tell).
+    const Eigen::Vector3d n = Eigen::Vector3d::Unit(k).cross(at.axis);
+    const double band = radius * n.norm() + kSlack;
+    const double h = material_.resolution();
+    double highest = 0.0;
+    for (int j = j0; j <= j1; j += 2) {
+      if (!owns(lane, j)) continue;
+      int first = i0, last = i1;
+      if (n.norm() > 1e-3) {
+        const Eigen::Vector3d row = material_.origin(k, 0, j);
+        const double offset = (row[v] - at.tip[v]) * n[v];
+        if (std::abs(n[u]) > 1e-9) {
+          double from = at.tip[u] + (-band - offset) / n[u], to = at.tip[u] + (band - offset) / n[u];
+          if (from > to) std::swap(from, to);
+          first = firstWithin(i0 + 2.0 * std::ceil(std::max(0.0, from - row[u] - i0 * h) / (2.0 * h)), i0, i1);  // i0's parity
+          last = lastWithin(std::floor((to - row[u]) / h), i0, i1);
+        } else if (std::abs(offset) > band) {
+          continue;
+        }
+      }
+      for (int i = first; i <= last; i += 2) {  // every other ray: heights stay exact along each ray
+        const Eigen::Vector3d o = material_.origin(k, i, j);
+        // The ray o + t·e_k within the holder's infinite cylinder about the axis.
+        const Eigen::Vector3d w = o - at.tip;
+        Eigen::Vector3d d = Eigen::Vector3d::Zero();
+        d[k] = 1.0;
+        const Eigen::Vector3d wp = w - w.dot(at.axis) * at.axis, dp = d - d.dot(at.axis) * at.axis;
+        const double A = dp.squaredNorm(), B = 2.0 * wp.dot(dp), C = wp.squaredNorm() - radius * radius;
+        double t0 = -std::numeric_limits<double>::infinity(), t1 = -t0;
+        if (A > 1e-12) {
+          const double disc = B * B - 4.0 * A * C;
+          if (disc < 0.0) continue;
+          t0 = (-B - std::sqrt(disc)) / (2.0 * A), t1 = (-B + std::sqrt(disc)) / (2.0 * A);
+        } else if (C > 0.0) {
+          continue;
+        }
+        for (const Intervals* ray : {&material_.at(k, i, j), &part_.at(k, i, j)})
+          for (const Interval& s : *ray) {
+            const double a = std::max(s.from, t0), b = std::min(s.to, t1);
+            if (b <= a) continue;
+            highest = std::max(highest, std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]));
           }
-    });
-    return *std::max_element(highest.begin(), highest.end());
+      }
+    }
+    return highest;
   }
 
   void thicknessOf(const std::vector<Sample>& samples, RemovalResult& r) const {
@@ -466,7 +594,7 @@ private:
   geometry::TriangleMesh stockMesh_, partMesh_;
   TriDexel material_, part_;
   TriDexel uncut_;  // the part not yet entered by the tool: a gouge is counted once
-  int threads_ = 1;
+  int lanes_ = 1;  // threads, each on rows of its own
 };
 
 }  // namespace

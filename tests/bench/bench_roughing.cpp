@@ -4,7 +4,9 @@
 // same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the sweeps (S1-S5) of every
 // channel, and the 2-D offsets of one level by Clipper and by OCCT's BRepOffsetAPI_MakeOffset.
 // Part 3 (issue 17): material removal of each strategy on the whole impeller, 1 and 2 threads.
-// Run: build/bin/bench_roughing [runs] [removal]   ("removal": part 3 only)
+// Run: build/bin/bench_roughing [runs] [removal [S1..S5|all] [threads]]   ("removal": part 3 only, of one
+// strategy and on one thread count when named). Under `valgrind --tool=callgrind --instr-atstart=no` only the
+// simulations are instrumented: callgrind's total is their instructions (e.g. `... removal S3 1`).
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/clearance.hpp"
@@ -24,6 +26,13 @@
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <polyclipping/clipper.hpp>
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#endif
+#include <ctime>
 
 #include <algorithm>
 #include <chrono>
@@ -44,6 +53,13 @@ double bestOf(int runs, const std::function<void()>& work) {
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
+}
+
+// CPU seconds of the whole process (all its threads): what the work costs whatever else runs on the machine.
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 }  // namespace
 
@@ -145,28 +161,43 @@ void offsets(const RemovalSolid& channel) {
               "Clipper %.0f x faster\n", step, 1e3 * clipper, clipperRings, 1e3 * occt, occtRings, occt / clipper);
 }
 
-// Part 3 (issue 17: material removal of one strategy on the impeller at 0.2 mm < 10 s on two cores): each
-// strategy's sweeps of all channels simulated on 1 and 2 threads, the speed-up in the same run.
-void removal(const PartAndStock& wheel, const VolumeToRemove& volume) {
+// Part 3 (issue 17: material removal of one strategy on the impeller at 0.2 mm < 10 s on two cores; issue 27:
+// < 3 s on two threads and >= 1.8 x over one): each strategy's sweeps of all channels simulated on 1 and 2
+// threads (or on `threads` alone when > 0), the speed-up and the CPU seconds in the same run.
+void removal(const PartAndStock& wheel, const VolumeToRemove& volume, const std::string& only, int threads) {
   for (Strategy strategy : {Strategy::PlanesParallelToFace, Strategy::CoaxialCylinders, Strategy::SetupPlanes,
                             Strategy::StockOffsets, Strategy::HubOffsets}) {
+    if (only != "all" && only != "S" + std::to_string(static_cast<int>(strategy))) continue;
     std::vector<std::vector<ToolMove>> regions;
     for (const RemovalSolid& solid : volume.solids)
       regions.push_back(sweep(partition(solid, wheel.part, strategy), solid, wheel.part, wheel.stock, {}).moves);
     const std::vector<ToolMove> moves = joinSweeps(regions, wheel.stock);
-    double seconds[2];
+    const std::vector<int> counts = threads > 0 ? std::vector<int>{threads} : std::vector<int>{1, 2};
+    std::vector<double> seconds, cpu;
     RemovalResult r;
-    for (int threads : {1, 2}) {
+    for (int n : counts) {
       RemovalSettings settings;
-      settings.threads = threads;
-      seconds[threads - 1] = bestOf(1, [&] { r = simulateRemoval(moves, SweepSettings().cutter, wheel.stock, wheel.part, settings); });
+      settings.threads = n;
+      const double before = cpuSeconds();
+      CALLGRIND_START_INSTRUMENTATION;
+      seconds.push_back(bestOf(1, [&] { r = simulateRemoval(moves, SweepSettings().cutter, wheel.stock, wheel.part, settings); }));
+      CALLGRIND_STOP_INSTRUMENTATION;
+      cpu.push_back(cpuSeconds() - before);
     }
-    std::printf("removal %-22s at %.2f mm: %.2f s on 1 thread, %.2f s on 2 (x%.2f; target < 10 s on 2): %ld rays, %ld "
-                "positions; V_r %.1f %%, feed %.0f mm, in material %.1f %%, stick-out %.1f mm, gouge %.2f mm3, stock on "
-                "the part %.2f mean / %.2f max / %.2f std mm\n",
-                strategyName(strategy).c_str(), r.resolution, seconds[0], seconds[1], seconds[0] / seconds[1], r.rays,
-                r.positions, r.remainingShare, r.feedLength, r.inMaterialShare, r.stickOut, r.gougeVolume,
-                r.thicknessMean, r.thicknessMax, r.thicknessStd);
+    std::string times;
+    for (size_t i = 0; i < counts.size(); ++i) {
+      char text[120];
+      std::snprintf(text, sizeof text, "%s%.2f s on %d thread%s (CPU %.2f s)", i ? ", " : "", seconds[i], counts[i],
+                    counts[i] > 1 ? "s" : "", cpu[i]);
+      times += text;
+    }
+    if (counts.size() == 2) times += " (x" + std::to_string(seconds[0] / seconds[1]).substr(0, 4) + "; target < 3 s on 2, x1.8)";
+    std::printf("removal %-22s at %.2f mm: %s: %ld rays, %ld positions; V_r %.1f %%, feed %.0f mm, in material %.1f %%, "
+                "stick-out %.1f mm, gouge %.2f mm3, stock on the part %.2f mean / %.2f max / %.2f std mm\n",
+                strategyName(strategy).c_str(), r.resolution, times.c_str(), r.rays, r.positions, r.remainingShare,
+                r.feedLength, r.inMaterialShare, r.stickOut, r.gougeVolume, r.thicknessMean, r.thicknessMax,
+                r.thicknessStd);
+    std::fflush(stdout);
   }
 }
 
@@ -181,7 +212,7 @@ int main(int argc, char** argv) {
               cut, runs, volume.solids.size(), volume.volume, volume.stockVolume, volume.partVolume,
               volume.fuzzyRetry ? ", fuzzy retry" : "");
   if (argc > 2 && std::string(argv[2]) == "removal") {  // part 3 alone
-    removal(wheel, volume);
+    removal(wheel, volume, argc > 3 ? argv[3] : "all", argc > 4 ? std::atoi(argv[4]) : 0);
     return 0;
   }
   const RemovalSolid& channel = volume.solids.front();
@@ -212,6 +243,6 @@ int main(int argc, char** argv) {
   }
   sweeps(wheel, volume, runs);
   offsets(channel);
-  removal(wheel, volume);
+  removal(wheel, volume, "all", 0);
   return 0;
 }
