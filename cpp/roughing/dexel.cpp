@@ -5,24 +5,28 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hsm::roughing {
 
 double subtract(Intervals& intervals, double from, double to) {
   if (!(to > from)) return 0.0;
+  // In place (a removal simulation calls this for every ray a cutter crosses): the intervals [a, b) that
+  // overlap ]from, to[ give way to what is left of the first and of the last.
+  size_t a = 0;
+  while (a < intervals.size() && intervals[a].to <= from) ++a;
+  size_t b = a;
   double taken = 0.0;
-  Intervals kept;
-  kept.reserve(intervals.size() + 1);
-  for (const Interval& s : intervals) {
-    if (s.to <= from || s.from >= to) {
-      kept.push_back(s);
-      continue;
-    }
-    taken += std::min(s.to, to) - std::max(s.from, from);
-    if (s.from < from) kept.push_back({s.from, from});
-    if (s.to > to) kept.push_back({to, s.to});
-  }
-  if (taken > 0.0) intervals.swap(kept);
+  for (; b < intervals.size() && intervals[b].from < to; ++b)
+    taken += std::min(intervals[b].to, to) - std::max(intervals[b].from, from);
+  if (b == a) return 0.0;
+  Interval left{intervals[a].from, from}, right{to, intervals[b - 1].to};
+  const size_t kept = (left.from < left.to ? 1 : 0) + (right.from < right.to ? 1 : 0);
+  if (kept > b - a) intervals.insert(intervals.begin() + static_cast<long>(a), Interval{});  // one split in two
+  else intervals.erase(intervals.begin() + static_cast<long>(a + kept), intervals.begin() + static_cast<long>(b));
+  size_t at = a;
+  if (left.from < left.to) intervals[at++] = left;
+  if (right.from < right.to) intervals[at] = right;
   return taken;
 }
 
@@ -55,7 +59,31 @@ TriDexel::TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRa
     throw InputError("material removal at " + number(resolution) + " mm needs " + std::to_string(total) +
                      " rays (more than " + std::to_string(maxRays) + "): use a resolution of at least " +
                      number(std::sqrt(area / double(maxRays))) + " mm");
-  for (int k = 0; k < 3; ++k) rays_[k].resize(static_cast<size_t>(n_[k][0]) * n_[k][1]);
+  for (int k = 0; k < 3; ++k) {
+    rays_[k].resize(static_cast<size_t>(n_[k][0]) * n_[k][1]);
+    extents_[k].assign(rays_[k].size(), Extent{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+  }
+}
+
+void TriDexel::keepExtent(int k, size_t r) {
+  const Intervals& ray = rays_[k][r];
+  Extent& e = extents_[k][r];
+  if (ray.empty()) {
+    e = {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+    return;
+  }
+  // The floats nearest the ends, rounded outwards.
+  e.from = static_cast<float>(ray.front().from);
+  if (e.from > ray.front().from) e.from = std::nextafter(e.from, -std::numeric_limits<float>::infinity());
+  e.to = static_cast<float>(ray.back().to);
+  if (e.to < ray.back().to) e.to = std::nextafter(e.to, std::numeric_limits<float>::infinity());
+}
+
+double TriDexel::remove(int k, int i, int j, double from, double to) {
+  const size_t r = index(k, i, j);
+  const double taken = roughing::subtract(rays_[k][r], from, to);
+  if (taken > 0.0) keepExtent(k, r);
+  return taken;
 }
 
 long TriDexel::rays() const {
@@ -106,14 +134,17 @@ void TriDexel::fill(const geometry::TriangleMesh& mesh) {
       out.clear();
       for (size_t m = 0; m + 1 < x.size(); m += 2)
         if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
+      keepExtent(k, r);
     }
   }
 }
 
 void TriDexel::subtract(const TriDexel& other) {
   for (int k = 0; k < 3; ++k)
-    for (size_t r = 0; r < rays_[k].size(); ++r)
+    for (size_t r = 0; r < rays_[k].size(); ++r) {
       for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
+      keepExtent(k, r);
+    }
 }
 
 geometry::TriangleMesh TriDexel::blocks(int stride) const {

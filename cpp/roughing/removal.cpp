@@ -45,6 +45,7 @@ struct Shape {
   double top = 0.0;                   // the highest point of the cones and balls (above `length` when the
                                       // flutes are shorter than the corner)
   std::vector<int> stack;             // the cones from the bottom up
+  bool flutes = false;                // cones[0] is the flutes' cylinder (radius, up to length)
 };
 
 Shape shapeOf(const Cutter& c) {
@@ -71,6 +72,7 @@ Shape shapeOf(const Cutter& c) {
   }
   for (size_t c = 0; c < s.cones.size(); ++c) s.stack.push_back(static_cast<int>(c));
   std::sort(s.stack.begin(), s.stack.end(), [&](int a, int b) { return s.cones[a].h0 < s.cones[b].h0; });
+  s.flutes = !s.cones.empty() && s.cones[0].r0 == R && s.cones[0].r1 == R && s.cones[0].h1 == L;
   s.top = s.length;
   for (const Cone& c : s.cones) s.top = std::max(s.top, c.h1);
   for (const Ball& b : s.balls) s.top = std::max(s.top, b.centre + b.radius);
@@ -119,6 +121,38 @@ Span coneSpan(const Cone& c, const Eigen::Vector3d& q, const Eigen::Vector3d& d)
   return before ? before : after;
 }
 
+// coneSpan of the cylinder of `radius` between heights 0 and `height` (the cutter's bounding cylinder), the
+// same numbers with fewer operations (its slope is 0): every ray the cutter's capsule holds asks it.
+Span cylinderSpan(double radius, double height, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  double s0 = -std::numeric_limits<double>::infinity(), s1 = -s0;
+  if (std::abs(d.z()) < 1e-12) {
+    if (q.z() < 0.0 || q.z() > height) return {};
+  } else {
+    s0 = (0.0 - q.z()) / d.z(), s1 = (height - q.z()) / d.z();
+    if (s0 > s1) std::swap(s0, s1);
+  }
+  const double A = d.x() * d.x() + d.y() * d.y();  // ≥ 0
+  const double B = 2.0 * (q.x() * d.x() + q.y() * d.y());
+  const double C = q.x() * q.x() + q.y() * q.y() - radius * radius;
+  if (A < 1e-12) {
+    if (std::abs(B) < 1e-12) return C <= 0.0 ? intersect(Interval{s0, s1}, s0, s1) : Span{};
+    const double t = -C / B;
+    return B > 0.0 ? intersect(Interval{s0, t}, s0, s1) : intersect(Interval{t, s1}, s0, s1);
+  }
+  const double disc = B * B - 4.0 * A * C;
+  if (disc < 0.0) return {};
+  const double root = std::sqrt(disc);
+  return intersect(Interval{(-B - root) / (2.0 * A), (-B + root) / (2.0 * A)}, s0, s1);
+}
+
+// coneSpan of the flutes' cylinder (the cutter's radius from height h0 up to the flutes' length) from the
+// bounding cylinder's span along the same ray: the same roots, cut where coneSpan cuts them at h0.
+Span flutesSpan(double h0, const Interval& bound, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  if (std::abs(d.z()) < 1e-12) return q.z() < h0 ? Span{} : Span{bound};
+  const double s = (h0 - q.z()) / d.z(), far = std::numeric_limits<double>::infinity();
+  return d.z() > 0.0 ? intersect(bound, s, far) : intersect(bound, -far, s);
+}
+
 Span ballSpan(const Ball& b, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
   const Eigen::Vector3d w = q - Eigen::Vector3d(0.0, 0.0, b.centre);
   const double half = w.dot(d), disc = half * half - (w.squaredNorm() - b.radius * b.radius);
@@ -157,15 +191,33 @@ Position positionAt(const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, con
   return p;
 }
 
+// Cone c's span along the ray q + t·d, or none without solving where the ray keeps out of it: farther from
+// the axis than its widest circle, or beyond its heights within the bounding cylinder (`low` to `high`).
+Span coneSpanNear(const Shape& shape, int c, const Interval& bound, double low, double high, const Eigen::Vector3d& q,
+                  const Eigen::Vector3d& d) {
+  const Cone& cone = shape.cones[c];
+  if (cone.h0 > high + kSlack || cone.h1 < low - kSlack) return {};
+  // The ray's least distance from the axis, squared, is cross² / dxy (|q| across it for a ray along it).
+  const double dxy = d.x() * d.x() + d.y() * d.y(), cross = q.x() * d.y() - q.y() * d.x();
+  const double widest = std::max(cone.r0, cone.r1) + kSlack;
+  if (dxy > 0.0 ? widest * widest * dxy < cross * cross : widest * widest < q.x() * q.x() + q.y() * q.y()) return {};
+  return c == 0 && shape.flutes ? flutesSpan(cone.h0, bound, q, d) : coneSpan(cone, q, d);
+}
+
 // A cutter of cones only (flat, torus) is convex: its profile's radius grows ever slower with height, from
 // the flat bottom up the corner to the flutes' cylinder. Along a ray whose height changes, its cones' spans
 // then follow one another in the order of their heights and join into one; so only the first and the last
 // the ray meets are computed, walking in from both ends of the stack (in the corner most rays meet few of
 // its eight cones). False where that does not hold (a ball, a ray at one height): every span is computed.
-bool walkStack(const Shape& shape, const Eigen::Vector3d& q, const Eigen::Vector3d& d, Intervals& out) {
+bool walkStack(const Shape& shape, const Eigen::Vector3d& q, const Eigen::Vector3d& d, const Interval& bound,
+               Intervals& out) {
   if (!shape.balls.empty() || std::abs(d.z()) < 1e-12) return false;
   const int n = static_cast<int>(shape.stack.size());
-  const auto spanOf = [&](int m) { return coneSpan(shape.cones[shape.stack[d.z() > 0.0 ? m : n - 1 - m]], q, d); };
+  const double z0 = q.z() + bound.from * d.z(), z1 = q.z() + bound.to * d.z();
+  const double low = std::min(z0, z1), high = std::max(z0, z1);
+  const auto spanOf = [&](int m) {
+    return coneSpanNear(shape, shape.stack[d.z() > 0.0 ? m : n - 1 - m], bound, low, high, q, d);
+  };
   Span first, last;
   int m = 0;
   while (m < n && !(first = spanOf(m))) ++m;
@@ -181,10 +233,11 @@ void cutterSpans(const Shape& shape, const Eigen::Vector3d& q, const Eigen::Vect
                  Intervals& out) {
   out.clear();
   const bool low = std::min(q.z() + bound.from * d.z(), q.z() + bound.to * d.z()) < shape.corner;
-  if (low && walkStack(shape, q, d, out)) return;
+  if (low && walkStack(shape, q, d, bound, out)) return;
   for (size_t c = 0; c < shape.cones.size(); ++c)
     if (c == 0 || low)
-      if (const Span s = coneSpan(shape.cones[c], q, d)) out.push_back(*s);
+      if (const Span s = c == 0 && shape.flutes ? flutesSpan(shape.cones[0].h0, bound, q, d) : coneSpan(shape.cones[c], q, d))
+        out.push_back(*s);
   if (low)
     for (const Ball& b : shape.balls)
       if (const Span s = ballSpan(b, q, d)) out.push_back(*s);
@@ -202,6 +255,12 @@ bool touches(const Intervals& ray, double from, double to) {
   for (const Interval& s : ray)
     if (s.to > from && s.from < to) return true;
   return false;
+}
+
+// Whether ray (i, j) of direction k of `model`, whose extent is e, has material within ]from, to[: the extent
+// first, which most rays fail without their intervals being read.
+bool meets(const TriDexel& model, const TriDexel::Extent& e, int k, int i, int j, double from, double to) {
+  return e.to > from && e.from < to && touches(model.at(k, i, j), from, to);
 }
 
 // The first and the last index of a range [lo, hi] from a double (perhaps far out): none when first > last.
@@ -462,13 +521,14 @@ private:
     const double h = material_.resolution();
     const double radius = shape_.radius * (1.0 + 1e-9) + kSlack;
     const Eigen::Vector3d top = at.tip + shape_.top * at.axis;
-    const Cone bounding{0.0, shape_.radius, shape_.length, shape_.radius}, reaching{0.0, shape_.radius, shape_.top, shape_.radius};
+    const Cone reaching{0.0, shape_.radius, shape_.top, shape_.radius};
     for (int k = 0; k < 3; ++k) {
       const int u = (k + 1) % 3, v = (k + 2) % 3;
       int i0, i1, j0, j1;
       material_.rangeOf(k, at.box, i0, i1, j0, j1);
       const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
       const Eigen::Vector2d a(at.tip[u], at.tip[v]), b(top[u], top[v]);
+      const double boxFrom = at.box.min()[k], boxTo = at.box.max()[k];
       for (int j = j0; j <= j1; ++j) {
         if (!owns(lane, j)) continue;
         const Eigen::Vector3d row = material_.origin(k, 0, j);
@@ -476,29 +536,32 @@ private:
         if (!(from <= to)) continue;
         const int first = firstWithin(std::ceil((from - row[u]) / h), i0, i1);
         const int last = lastWithin(std::floor((to - row[u]) / h), i0, i1);
+        const TriDexel::Extent* stockRow = material_.extents(k, j);
+        const TriDexel::Extent* partRow = k == 2 ? uncut_.extents(k, j) : nullptr;
+        Eigen::Vector3d o = row;
         for (int i = first; i <= last; ++i) {
           // Most rays the tool crosses lost their material there to the positions before: the box tells
           // them at once; the bounding cylinder then tells most of the others.
-          Intervals& ray = material_.at(k, i, j);
-          Intervals* solid = k == 2 ? &uncut_.at(k, i, j) : nullptr;
-          if (!(solid && touches(*solid, at.box.min()[k], at.box.max()[k])) && !touches(ray, at.box.min()[k], at.box.max()[k]))
+          if (!(partRow && meets(uncut_, partRow[i], k, i, j, boxFrom, boxTo)) &&
+              !meets(material_, stockRow[i], k, i, j, boxFrom, boxTo))
             continue;
-          const Eigen::Vector3d w = material_.origin(k, i, j) - at.tip;
+          o[u] = material_.across(k, i);
+          const Eigen::Vector3d w = o - at.tip;
           const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
-          const Span bound = coneSpan(bounding, q, d);
+          const Span bound = cylinderSpan(shape_.radius, shape_.length, q, d);
           if (!bound) continue;
           // Every span of the cutter lies within `reach` (the bounding cylinder, or a taller one when the
           // corner stands above short flutes): a ray whose stock and part keep out of it loses nothing.
           const Span reach = shape_.top > shape_.length ? coneSpan(reaching, q, d) : bound;
           const double lo = (reach ? reach : bound)->from - kSlack, hi = (reach ? reach : bound)->to + kSlack;
-          const bool inPart = solid && touches(*solid, lo, hi);
-          if (!inPart && !touches(ray, lo, hi)) continue;
+          const bool inPart = partRow && meets(uncut_, partRow[i], k, i, j, lo, hi);
+          if (!inPart && !meets(material_, stockRow[i], k, i, j, lo, hi)) continue;
           cutterSpans(shape_, q, d, *bound, spans);
           for (const Interval& s : spans) {
-            const double taken = subtract(ray, s.from, s.to);
+            const double taken = material_.remove(k, i, j, s.from, s.to);
             if (k == 2) {
               removed += taken;
-              if (inPart) gouged += roughing::subtract(*solid, s.from, s.to);
+              if (inPart) gouged += uncut_.remove(k, i, j, s.from, s.to);
             }
           }
         }
@@ -561,12 +624,18 @@ private:
         } else if (C > 0.0) {
           continue;
         }
-        for (const Intervals* ray : {&material_.at(k, i, j), &part_.at(k, i, j)})
-          for (const Interval& s : *ray) {
+        for (const TriDexel* model : {&material_, &part_}) {
+          // The extent bounds what the ray can add (the height is linear along it): most rays cannot beat
+          // the highest point found and are not read.
+          const TriDexel::Extent e = model->extent(k, i, j);
+          const double a = std::max<double>(e.from, t0), b = std::min<double>(e.to, t1);
+          if (b <= a || std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]) <= highest) continue;
+          for (const Interval& s : model->at(k, i, j)) {
             const double a = std::max(s.from, t0), b = std::min(s.to, t1);
             if (b <= a) continue;
             highest = std::max(highest, std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]));
           }
+        }
       }
     }
     return highest;
