@@ -1,6 +1,7 @@
 #include "roughing/dexel.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/text.hpp"
 
 #include <algorithm>
@@ -102,49 +103,86 @@ void TriDexel::rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, 
   j0 = first(box.min()[v], v, 1), j1 = last(box.max()[v], v, 1, n_[k][1]);
 }
 
-void TriDexel::fill(const geometry::TriangleMesh& mesh) {
+void TriDexel::fill(const geometry::TriangleMesh& mesh, int threads) {
+  // Bands of rows filled side by side; each ray sees the triangles in the mesh's order, as on one thread.
+  struct Band {
+    int k, from, to;
+  };
+  std::vector<Band> bands;
+  const int perDirection = 4 * threadCount(threads);
   for (int k = 0; k < 3; ++k) {
-    const int u = (k + 1) % 3, v = (k + 2) % 3;
-    std::vector<std::vector<double>> crossings(rays_[k].size());
-    for (const Eigen::Vector3i& t : mesh.triangles) {
-      const Eigen::Vector3d& a = mesh.vertices[t[0]];
-      const Eigen::Vector3d& b = mesh.vertices[t[1]];
-      const Eigen::Vector3d& c = mesh.vertices[t[2]];
-      // The triangle seen along k: a ray crosses it where its (u, v) is inside (barycentric, half-open edges).
-      const double area = (b[u] - a[u]) * (c[v] - a[v]) - (c[u] - a[u]) * (b[v] - a[v]);
-      if (area == 0.0) continue;
-      Eigen::AlignedBox3d box(a);
-      box.extend(b), box.extend(c);
-      int i0, i1, j0, j1;
-      rangeOf(k, box, i0, i1, j0, j1);
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-          const Eigen::Vector3d o = origin(k, i, j);
-          const double wa = ((b[u] - o[u]) * (c[v] - o[v]) - (c[u] - o[u]) * (b[v] - o[v])) / area;
-          const double wb = ((c[u] - o[u]) * (a[v] - o[v]) - (a[u] - o[u]) * (c[v] - o[v])) / area;
-          const double wc = 1.0 - wa - wb;
-          if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-          crossings[static_cast<size_t>(j) * n_[k][0] + i].push_back(wa * a[k] + wb * b[k] + wc * c[k]);
-        }
-    }
-    for (size_t r = 0; r < crossings.size(); ++r) {
-      std::vector<double>& x = crossings[r];
-      std::sort(x.begin(), x.end());
-      Intervals& out = rays_[k][r];
-      out.clear();
-      for (size_t m = 0; m + 1 < x.size(); m += 2)
-        if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
-      keepExtent(k, r);
-    }
+    const int rows = n_[k][1], size = std::max(16, (rows + perDirection - 1) / perDirection);
+    for (int from = 0; from < rows; from += size) bands.push_back({k, from, std::min(rows, from + size)});
+  }
+  parallelChunks(static_cast<long>(bands.size()), threads, 1, [&](long first, long last) {
+    for (long b = first; b < last; ++b) fillRows(mesh, bands[b].k, bands[b].from, bands[b].to);
+  });
+}
+
+void TriDexel::fillRows(const geometry::TriangleMesh& mesh, int k, int from, int to) {
+  const int u = (k + 1) % 3, v = (k + 2) % 3;
+  const size_t first = index(k, 0, from);
+  std::vector<std::vector<double>> crossings(index(k, 0, to) - first);
+  const double low = origin(k, 0, from)[v] - h_, high = origin(k, 0, to - 1)[v] + h_;  // the band's rows, and a spacing
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    if (std::max({a[v], b[v], c[v]}) < low || std::min({a[v], b[v], c[v]}) > high) continue;  // another band's
+    // The triangle seen along k: a ray crosses it where its (u, v) is inside (barycentric, half-open edges).
+    const double area = (b[u] - a[u]) * (c[v] - a[v]) - (c[u] - a[u]) * (b[v] - a[v]);
+    if (area == 0.0) continue;
+    Eigen::AlignedBox3d box(a);
+    box.extend(b), box.extend(c);
+    int i0, i1, j0, j1;
+    rangeOf(k, box, i0, i1, j0, j1);
+    for (int j = std::max(j0, from); j <= std::min(j1, to - 1); ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const Eigen::Vector3d o = origin(k, i, j);
+        const double wa = ((b[u] - o[u]) * (c[v] - o[v]) - (c[u] - o[u]) * (b[v] - o[v])) / area;
+        const double wb = ((c[u] - o[u]) * (a[v] - o[v]) - (a[u] - o[u]) * (c[v] - o[v])) / area;
+        const double wc = 1.0 - wa - wb;
+        if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+        crossings[index(k, i, j) - first].push_back(wa * a[k] + wb * b[k] + wc * c[k]);
+      }
+  }
+  for (size_t r = 0; r < crossings.size(); ++r) {
+    std::vector<double>& x = crossings[r];
+    std::sort(x.begin(), x.end());
+    Intervals& out = rays_[k][first + r];
+    out.clear();
+    for (size_t m = 0; m + 1 < x.size(); m += 2)
+      if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
+    keepExtent(k, first + r);
   }
 }
 
-void TriDexel::subtract(const TriDexel& other) {
+void TriDexel::subtract(const TriDexel& other, int threads) {
   for (int k = 0; k < 3; ++k)
-    for (size_t r = 0; r < rays_[k].size(); ++r) {
-      for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
-      keepExtent(k, r);
-    }
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (size_t r = static_cast<size_t>(first); r < static_cast<size_t>(last); ++r) {
+        for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
+        keepExtent(k, r);
+      }
+    });
+}
+
+void TriDexel::assign(const TriDexel& other, int threads) {
+  for (int k = 0; k < 3; ++k) {
+    extents_[k] = other.extents_[k];
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (long r = first; r < last; ++r) rays_[k][r] = other.rays_[k][r];
+    });
+  }
+}
+
+void TriDexel::release(int threads) {
+  for (int k = 0; k < 3; ++k) {
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (long r = first; r < last; ++r) Intervals().swap(rays_[k][r]);
+    });
+    extents_[k].assign(extents_[k].size(), Extent{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+  }
 }
 
 geometry::TriangleMesh TriDexel::blocks(int stride) const {

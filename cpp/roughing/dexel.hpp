@@ -30,10 +30,13 @@ public:
   TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRays);
 
   // The intervals inside the closed mesh, on every ray (the rays sit at cell centres, offset by a fraction
-  // of a micrometre so that none runs exactly through a mesh's edge).
-  void fill(const geometry::TriangleMesh& mesh);
+  // of a micrometre so that none runs exactly through a mesh's edge); on `threads` threads (0: all cores).
+  void fill(const geometry::TriangleMesh& mesh, int threads = 1);
   // This model minus `other` (the same grid).
-  void subtract(const TriDexel& other);
+  void subtract(const TriDexel& other, int threads = 1);
+  // This model made `other`'s (the same grid), and every ray emptied (its memory freed), on `threads` threads.
+  void assign(const TriDexel& other, int threads = 1);
+  void release(int threads = 1);
 
   double resolution() const { return h_; }
   long rays() const;
@@ -70,6 +73,7 @@ public:
 
 private:
   size_t index(int k, int i, int j) const { return static_cast<size_t>(j) * n_[k][0] + i; }
+  void fillRows(const geometry::TriangleMesh& mesh, int k, int from, int to);  // rows [from, to) of direction k
   void keepExtent(int k, size_t r);
 
   double h_;

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -365,49 +366,67 @@ std::optional<Sample> sampleAt(const Eigen::Vector3d& p, const Eigen::Vector3d& 
   return s;
 }
 
+// The samples on triangle t of the mesh, `spacing` apart, added to `out`.
+void samplesOn(const geometry::TriangleMesh& mesh, const Eigen::Vector3i& t, double spacing, const TriDexel& partModel,
+               const TriDexel& material, std::vector<Sample>& out) {
+  const Eigen::Vector3d& a = mesh.vertices[t[0]];
+  const Eigen::Vector3d& b = mesh.vertices[t[1]];
+  const Eigen::Vector3d& c = mesh.vertices[t[2]];
+  const Eigen::Vector3d normal = (b - a).cross(c - a);
+  if (!(normal.norm() > 0.0)) return;
+  const int m = std::max(1, static_cast<int>(std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / spacing)));
+  const double weight = 0.5 * normal.norm() / (m * m);
+  auto add = [&](double u, double v) {
+    if (auto s = sampleAt(a + u * (b - a) + v * (c - a), normal.normalized(), weight, partModel, material))
+      out.push_back(*s);
+  };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; i + j < m; ++j) {
+      add((i + 1.0 / 3.0) / m, (j + 1.0 / 3.0) / m);
+      if (i + j + 2 <= m) add((i + 2.0 / 3.0) / m, (j + 2.0 / 3.0) / m);
+    }
+}
+
 // Samples of the part's surface about two resolutions apart (at most 2 million: farther apart on a large
-// part), at the centres of each triangle's subdivision.
-std::vector<Sample> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel& partModel, const TriDexel& material) {
+// part), at the centres of each triangle's subdivision; chunks of triangles on `threads` threads, their
+// samples kept in the triangles' order.
+std::vector<Sample> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel& partModel, const TriDexel& material,
+                              int threads) {
   double area = 0.0;
   for (const Eigen::Vector3i& t : mesh.triangles)
     area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
   const double spacing = std::max(2.0 * partModel.resolution(), std::sqrt(area / 1e6));
+  const long triangles = static_cast<long>(mesh.triangles.size()), chunk = 2048;
+  std::vector<std::vector<Sample>> chunks(static_cast<size_t>((triangles + chunk - 1) / chunk));
+  parallelChunks(triangles, threads, chunk, [&](long from, long to) {
+    for (long t = from; t < to; ++t) samplesOn(mesh, mesh.triangles[t], spacing, partModel, material, chunks[from / chunk]);
+  });
+  size_t count = 0;
+  for (const std::vector<Sample>& c : chunks) count += c.size();
   std::vector<Sample> out;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    const Eigen::Vector3d& a = mesh.vertices[t[0]];
-    const Eigen::Vector3d& b = mesh.vertices[t[1]];
-    const Eigen::Vector3d& c = mesh.vertices[t[2]];
-    const Eigen::Vector3d normal = (b - a).cross(c - a);
-    if (!(normal.norm() > 0.0)) continue;
-    const int m = std::max(1, static_cast<int>(std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / spacing)));
-    const double weight = 0.5 * normal.norm() / (m * m);
-    auto add = [&](double u, double v) {
-      if (auto s = sampleAt(a + u * (b - a) + v * (c - a), normal.normalized(), weight, partModel, material))
-        out.push_back(*s);
-    };
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; i + j < m; ++j) {
-        add((i + 1.0 / 3.0) / m, (j + 1.0 / 3.0) / m);
-        if (i + j + 2 <= m) add((i + 2.0 / 3.0) / m, (j + 2.0 / 3.0) / m);
-      }
-  }
+  out.reserve(count);
+  for (const std::vector<Sample>& c : chunks) out.insert(out.end(), c.begin(), c.end());
   return out;
+}
+
+// The stock's and the part's meshes at `deflection`, side by side when there are two threads or more (OCCT
+// meshes the part's many faces in parallel itself, but the stock's few faces would be meshed alone).
+std::array<geometry::TriangleMesh, 2> meshesOf(const TopoDS_Shape& stock, const TopoDS_Shape& part, double deflection,
+                                               int threads) {
+  std::array<geometry::TriangleMesh, 2> meshes;
+  parallelChunks(2, threads, 1, [&](long from, long to) {
+    for (long m = from; m < to; ++m) meshes[m] = geometry::meshFacesAfresh(m == 0 ? stock : part, deflection);
+  });
+  return meshes;
 }
 
 class Simulation {
 public:
   Simulation(const Cutter& cutter, const TopoDS_Shape& stock, const TopoDS_Shape& part, const RemovalSettings& settings)
-      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter),
-        stockMesh_(geometry::meshFacesAfresh(stock, deflection(settings.resolution))),
-        partMesh_(geometry::meshFacesAfresh(part, deflection(settings.resolution))),
-        material_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
-        part_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2), uncut_(part_) {
-    if (stockMesh_.triangles.empty()) throw InputError("material removal: the stock has no faces");
-    material_.fill(stockMesh_);
-    part_.fill(partMesh_);
-    material_.subtract(part_);
-    uncut_ = part_;
-    lanes_ = threadCount(settings.threads);
+      : Simulation(cutter, settings, meshesOf(stock, part, deflection(settings.resolution), threadCount(settings.threads))) {}
+
+  ~Simulation() {  // a few million rays to free: side by side too
+    for (TriDexel* model : {&material_, &part_, &uncut_}) model->release(lanes_);
   }
 
   RemovalResult run(const std::vector<ToolMove>& moves) {
@@ -415,7 +434,7 @@ public:
     r.resolution = settings_.resolution;
     r.rays = material_.rays();
     r.volumeToRemove = material_.volume();
-    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_);
+    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_, lanes_);
     const double h = settings_.resolution;
     const std::vector<Position> positions = positionsOf(moves, shape_, sampleStep(cutter_, h));
     r.positions = static_cast<long>(positions.size());
@@ -447,6 +466,19 @@ public:
   }
 
 private:
+  Simulation(const Cutter& cutter, const RemovalSettings& settings, std::array<geometry::TriangleMesh, 2>&& meshes)
+      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter), lanes_(threadCount(settings.threads)),
+        stockMesh_(std::move(meshes[0])), partMesh_(std::move(meshes[1])),
+        material_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
+        part_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
+        uncut_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2) {
+    if (stockMesh_.triangles.empty()) throw InputError("material removal: the stock has no faces");
+    material_.fill(stockMesh_, lanes_);
+    part_.fill(partMesh_, lanes_);
+    material_.subtract(part_, lanes_);
+    uncut_.assign(part_, lanes_);
+  }
+
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
 
   // What a lane (a thread) tallies for the positions of a round, on its own rows.
@@ -642,9 +674,15 @@ private:
   }
 
   void thicknessOf(const std::vector<Sample>& samples, RemovalResult& r) const {
+    std::vector<double> thickness(samples.size());
+    parallelChunks(static_cast<long>(samples.size()), lanes_, 1 << 14, [&](long from, long to) {
+      for (long i = from; i < to; ++i) thickness[i] = stockAt(material_, samples[i]);
+    });
     double total = 0.0, sum = 0.0, squares = 0.0;
-    for (const Sample& s : samples) {
-      const double t = stockAt(material_, s);
+    r.surfacePoints.reserve(samples.size()), r.thickness.reserve(samples.size()), r.weight.reserve(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+      const Sample& s = samples[i];
+      const double t = thickness[i];
       r.surfacePoints.push_back(s.point);
       r.thickness.push_back(t);
       r.weight.push_back(s.weight);
@@ -660,10 +698,10 @@ private:
   const RemovalSettings& settings_;
   Shape shape_;
   Cutter cutter_;
+  int lanes_ = 1;  // threads, each on rows of its own
   geometry::TriangleMesh stockMesh_, partMesh_;
   TriDexel material_, part_;
   TriDexel uncut_;  // the part not yet entered by the tool: a gouge is counted once
-  int lanes_ = 1;  // threads, each on rows of its own
 };
 
 }  // namespace
