@@ -148,29 +148,68 @@ void parallelChunksReporting(long n, int threads, long chunk, Work&& work, Repor
 }
 
 // Calls work(lane, step) for every lane in [0, lanes) and every step in [0, steps), each lane's steps in order
-// on a thread of its own (one lane: the calling thread itself): what a lane owns needs no lock and no lane
-// waits for another, so a long run of small steps pays no barrier per step. The calling thread calls
-// report(steps every lane has done) as they advance (superviseWorkers: a cancel there stops the lanes at their
-// next step).
+// and never two of one lane at once, on `threads` threads (0: all cores; one: the calling thread itself): what
+// a lane owns needs no lock, and no barrier holds the threads between steps. A thread takes the free lane that
+// is furthest behind, among equals one of its own (lane % threads), so that a lane stays on one core while the
+// cores keep pace and moves to another when one falls behind (other work on the machine, or a lane with more
+// to do). The calling thread calls report(steps every lane has done) as they advance (superviseWorkers: a
+// cancel there stops the lanes at their next step).
 template <class Work, class Report>
-void parallelLanes(int lanes, long steps, Work&& work, Report&& report) {
-  lanes = std::clamp(lanes, 1, kMaxThreads);
-  if (lanes == 1) {
+void parallelLanes(int lanes, int threads, long steps, Work&& work, Report&& report) {
+  lanes = std::max(1, lanes);
+  const int workers = std::min(threadCount(threads), lanes);
+  if (workers <= 1 || steps <= 0) {
     for (long step = 0; step < steps; ++step) {
-      work(0, step);
+      for (int lane = 0; lane < lanes; ++lane) work(lane, step);
       report(step + 1);
     }
     return;
   }
-  std::vector<std::atomic<long>> done(static_cast<size_t>(lanes));
+  std::mutex mutex;
+  std::condition_variable freed;           // a lane was released, or the lanes must stop
+  std::vector<std::atomic<long>> done(static_cast<size_t>(lanes));  // each lane's steps done
+  std::vector<char> busy(static_cast<size_t>(lanes), 0);             // under `mutex`
+  bool failed = false;                     // a step threw (under `mutex`)
   for (auto& d : done) d = 0;
+  // The free lane furthest behind, one of `worker`'s among equals; -1 when none is free.
+  const auto pick = [&](long worker) {
+    int best = -1;
+    for (int lane = 0; lane < lanes; ++lane) {
+      if (busy[lane] || done[lane] >= steps) continue;
+      if (best < 0 || done[lane] < done[best] || (done[lane] == done[best] && lane % workers == worker && best % workers != worker))
+        best = lane;
+    }
+    return best;
+  };
   superviseWorkers(
-      lanes,
-      [&](long lane, const std::atomic<bool>& stop, const auto& announce) {
-        for (long step = 0; step < steps && !stop; ++step) {
-          work(static_cast<int>(lane), step);
-          done[static_cast<size_t>(lane)] = step + 1;
+      workers,
+      [&](long worker, const std::atomic<bool>& stop, const auto& announce) {
+        std::unique_lock<std::mutex> lock(mutex);
+        for (;;) {
+          int lane = -1;
+          freed.wait(lock, [&] {
+            lane = pick(worker);
+            const bool finished = std::all_of(done.begin(), done.end(), [&](const std::atomic<long>& d) { return d >= steps; });
+            return lane >= 0 || finished || stop || failed;
+          });
+          if (lane < 0 || stop || failed) return;
+          busy[lane] = 1;
+          lock.unlock();
+          try {
+            work(lane, done[lane].load());
+          } catch (...) {
+            lock.lock();
+            failed = true;
+            freed.notify_all();
+            throw;
+          }
+          lock.lock();
+          ++done[lane];
+          busy[lane] = 0;
+          freed.notify_all();
+          lock.unlock();
           announce();
+          lock.lock();
         }
       },
       [&] {

@@ -24,6 +24,9 @@ constexpr long kMaxPositions = 10'000'000;
 // Positions whose chips are tallied per thread before they are added up: bounds that memory (16 bytes per
 // position and thread) however long the program.
 constexpr size_t kRoundPositions = 1 << 15;
+// Lanes of rows (at least; two per thread beyond): enough for the threads to share them out evenly, and the
+// same for 1 to 4 threads, so that those add the lanes' chips up alike.
+constexpr int kLanes = 8;
 // mm: a ray whose material ends this close to the cutter's bounding cylinder is still cut (the cutter's own
 // spans are computed otherwise and may reach a rounding error beyond it).
 constexpr double kSlack = 1e-9;
@@ -426,7 +429,7 @@ public:
       : Simulation(cutter, settings, meshesOf(stock, part, deflection(settings.resolution), threadCount(settings.threads))) {}
 
   ~Simulation() {  // a few million rays to free: side by side too
-    for (TriDexel* model : {&material_, &part_, &uncut_}) model->release(lanes_);
+    for (TriDexel* model : {&material_, &part_, &uncut_}) model->release(threads_);
   }
 
   RemovalResult run(const std::vector<ToolMove>& moves) {
@@ -434,7 +437,7 @@ public:
     r.resolution = settings_.resolution;
     r.rays = material_.rays();
     r.volumeToRemove = material_.volume();
-    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_, lanes_);
+    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_, threads_);
     const double h = settings_.resolution;
     const std::vector<Position> positions = positionsOf(moves, shape_, sampleStep(cutter_, h));
     r.positions = static_cast<long>(positions.size());
@@ -467,22 +470,23 @@ public:
 
 private:
   Simulation(const Cutter& cutter, const RemovalSettings& settings, std::array<geometry::TriangleMesh, 2>&& meshes)
-      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter), lanes_(threadCount(settings.threads)),
+      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter), threads_(threadCount(settings.threads)),
+        lanes_(std::max(kLanes, 2 * threads_)),
         stockMesh_(std::move(meshes[0])), partMesh_(std::move(meshes[1])),
         material_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
         part_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
         uncut_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2) {
     if (stockMesh_.triangles.empty()) throw InputError("material removal: the stock has no faces");
-    material_.fill(stockMesh_, lanes_);
-    part_.fill(partMesh_, lanes_);
-    material_.subtract(part_, lanes_);
-    uncut_.assign(part_, lanes_);
+    material_.fill(stockMesh_, threads_);
+    part_.fill(partMesh_, threads_);
+    material_.subtract(part_, threads_);
+    uncut_.assign(part_, threads_);
   }
 
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
 
   // What a lane (a thread) tallies for the positions of a round, on its own rows.
-  struct Tally {
+  struct alignas(64) Tally {  // a cache line of its own: lanes on other cores write theirs
     std::vector<double> removed, gouged;  // per position: length taken out along the Z rays, of stock and part
     std::vector<double> highest;          // per batch: the stick-out its rows need at the batch's end
     Intervals spans;                      // scratch
@@ -503,8 +507,12 @@ private:
 
   // A lane owns pairs of rows dealt out in turn: the few rows a tool crosses are spread over all lanes, and so
   // are the stick-out's every other row. Each ray is cut by one lane only, in the positions' order, so lanes
-  // need neither locks nor a barrier between positions.
-  bool owns(int lane, int j) const { return (j / 2) % lanes_ == lane; }
+  // need neither locks nor a barrier between positions. The first row from j on that `lane` owns (of j's
+  // parity when `parity`: the stick-out's every other row).
+  int nextRow(int lane, int j, bool parity = false) const {
+    const int pair = j / 2, ahead = ((lane - pair) % lanes_ + lanes_) % lanes_;
+    return ahead == 0 ? j : 2 * (pair + ahead) + (parity ? j % 2 : 0);
+  }
 
   // Batches [first, last) of the positions through the model, each lane on its rows, then the chips, gouges,
   // rapid faults and stick-outs added up in the positions' order.
@@ -514,7 +522,7 @@ private:
     std::vector<Tally> tallies(static_cast<size_t>(lanes_));
     for (Tally& t : tallies) t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
     parallelLanes(
-        lanes_, static_cast<long>(last - first),
+        lanes_, threads_, static_cast<long>(last - first),
         [&](int lane, long batch) {
           Tally& t = tallies[static_cast<size_t>(lane)];
           const size_t from = first + batch ? ends[first + batch - 1] : 0, to = ends[first + batch];
@@ -561,8 +569,7 @@ private:
       const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
       const Eigen::Vector2d a(at.tip[u], at.tip[v]), b(top[u], top[v]);
       const double boxFrom = at.box.min()[k], boxTo = at.box.max()[k];
-      for (int j = j0; j <= j1; ++j) {
-        if (!owns(lane, j)) continue;
+      for (int j = nextRow(lane, j0); j <= j1; j = nextRow(lane, j + 1)) {
         const Eigen::Vector3d row = material_.origin(k, 0, j);
         const auto [from, to] = rowOfCapsule(a, b, radius, row[v]);
         if (!(from <= to)) continue;
@@ -625,8 +632,7 @@ private:
     const double band = radius * n.norm() + kSlack;
     const double h = material_.resolution();
     double highest = 0.0;
-    for (int j = j0; j <= j1; j += 2) {
-      if (!owns(lane, j)) continue;
+    for (int j = nextRow(lane, j0, true); j <= j1; j = nextRow(lane, j + 2, true)) {
       int first = i0, last = i1;
       if (n.norm() > 1e-3) {
         const Eigen::Vector3d row = material_.origin(k, 0, j);
@@ -675,7 +681,7 @@ private:
 
   void thicknessOf(const std::vector<Sample>& samples, RemovalResult& r) const {
     std::vector<double> thickness(samples.size());
-    parallelChunks(static_cast<long>(samples.size()), lanes_, 1 << 14, [&](long from, long to) {
+    parallelChunks(static_cast<long>(samples.size()), threads_, 1 << 14, [&](long from, long to) {
       for (long i = from; i < to; ++i) thickness[i] = stockAt(material_, samples[i]);
     });
     double total = 0.0, sum = 0.0, squares = 0.0;
@@ -698,7 +704,8 @@ private:
   const RemovalSettings& settings_;
   Shape shape_;
   Cutter cutter_;
-  int lanes_ = 1;  // threads, each on rows of its own
+  int threads_ = 1;
+  int lanes_ = 1;  // of rows each, taken by the threads in turn
   geometry::TriangleMesh stockMesh_, partMesh_;
   TriDexel material_, part_;
   TriDexel uncut_;  // the part not yet entered by the tool: a gouge is counted once
