@@ -21,8 +21,8 @@ namespace {
 
 constexpr long kMaxRays = 20'000'000;  // three models of them: material, part, part not entered
 constexpr long kMaxPositions = 10'000'000;
-// Positions whose chips are tallied per thread before they are added up: bounds that memory (16 bytes per
-// position and thread) however long the program.
+// Positions whose chips are tallied per lane before they are added up: bounds that memory (16 bytes per
+// position and lane) however long the program.
 constexpr size_t kRoundPositions = 1 << 15;
 // Lanes of rows (at least; two per thread beyond): enough for the threads to share them out evenly, and the
 // same for 1 to 4 threads, so that those add the lanes' chips up alike.
@@ -472,10 +472,9 @@ private:
   Simulation(const Cutter& cutter, const RemovalSettings& settings, std::array<geometry::TriangleMesh, 2>&& meshes)
       : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter), threads_(threadCount(settings.threads)),
         lanes_(std::max(kLanes, 2 * threads_)),
-        stockMesh_(std::move(meshes[0])), partMesh_(std::move(meshes[1])),
-        material_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
-        part_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2),
-        uncut_(stockMesh_.bounds(), settings.resolution, kMaxRays / 2) {
+        stockMesh_(std::move(meshes[0])), partMesh_(std::move(meshes[1])), stockBox_(stockMesh_.bounds()),
+        material_(stockBox_, settings.resolution, kMaxRays / 2), part_(stockBox_, settings.resolution, kMaxRays / 2),
+        uncut_(stockBox_, settings.resolution, kMaxRays / 2) {
     if (stockMesh_.triangles.empty()) throw InputError("material removal: the stock has no faces");
     material_.fill(stockMesh_, threads_);
     part_.fill(partMesh_, threads_);
@@ -485,11 +484,20 @@ private:
 
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
 
-  // What a lane (a thread) tallies for the positions of a round, on its own rows.
+  // Where a position's cutter lies seen along the rays of one direction (cutBatch's scratch).
+  struct Reach {
+    int i0 = 0, i1 = -1, j0 = 0, j1 = -1;  // the rays of its box
+    int first = 0, last = -1;              // the rays of the current row within its capsule
+    Eigen::Vector3d d;                     // the rays' direction in the tool's frame
+    Eigen::Vector2d tip, top;              // its axis, from the tip to the top of the cutter
+  };
+
+  // What a lane tallies for the positions of a round, on its own rows.
   struct alignas(64) Tally {  // a cache line of its own: lanes on other cores write theirs
     std::vector<double> removed, gouged;  // per position: length taken out along the Z rays, of stock and part
     std::vector<double> highest;          // per batch: the stick-out its rows need at the batch's end
     Intervals spans;                      // scratch
+    std::vector<Reach> reach;             // scratch
   };
 
   // The ends of the batches of positions: a batch ends where the stick-out is measured next (and at the last
@@ -526,7 +534,7 @@ private:
         [&](int lane, long batch) {
           Tally& t = tallies[static_cast<size_t>(lane)];
           const size_t from = first + batch ? ends[first + batch - 1] : 0, to = ends[first + batch];
-          for (size_t p = from; p < to; ++p) cutAt(positions[p], lane, t.removed[p - start], t.gouged[p - start], t.spans);
+          cutBatch(positions, from, to, lane, t, start);
           t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane);
         },
         [&](long done) { report(double(ends[first + done - 1]) / double(positions.size())); });
@@ -554,53 +562,81 @@ private:
     }
   }
 
-  // One position through the rays of `lane`'s rows: only the rays within the capsule about the cutter (not its
-  // whole box: a tilted tool's box is mostly empty), and of those only the ones whose stock or part reaches
-  // into the cutter's bounding cylinder. Adds the Z rays' lengths taken out of the stock and of the part.
-  void cutAt(const Position& at, int lane, double& removed, double& gouged, Intervals& spans) {
+  // Positions [from, to) (a batch) through the rays of `lane`'s rows, ray by ray: only the rays within the
+  // capsule about a cutter (not its whole box: a tilted tool's box is mostly empty), of those only the ones
+  // whose stock or part reaches into its bounding cylinder. The batch's cutters overlap: a ray none of them can
+  // take material from is looked at once for them all; each ray still meets the positions in their order, so
+  // it loses what it would position by position, and each position adds up the Z rays' lengths it takes out
+  // of the stock and of the part (tally indices from `start`) in the same order.
+  void cutBatch(const std::vector<Position>& positions, size_t from, size_t to, int lane, Tally& t, size_t start) {
     const double h = material_.resolution();
     const double radius = shape_.radius * (1.0 + 1e-9) + kSlack;
-    const Eigen::Vector3d top = at.tip + shape_.top * at.axis;
     const Cone reaching{0.0, shape_.radius, shape_.top, shape_.radius};
+    std::vector<Reach>& reach = t.reach;
+    reach.resize(to - from);
     for (int k = 0; k < 3; ++k) {
       const int u = (k + 1) % 3, v = (k + 2) % 3;
-      int i0, i1, j0, j1;
-      material_.rangeOf(k, at.box, i0, i1, j0, j1);
-      const Eigen::Vector3d d(at.e1[k], at.e2[k], at.axis[k]);
-      const Eigen::Vector2d a(at.tip[u], at.tip[v]), b(top[u], top[v]);
-      const double boxFrom = at.box.min()[k], boxTo = at.box.max()[k];
-      for (int j = nextRow(lane, j0); j <= j1; j = nextRow(lane, j + 1)) {
+      int rowFrom = std::numeric_limits<int>::max(), rowTo = -1;
+      double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;  // the boxes along the rays
+      for (size_t p = from; p < to; ++p) {
+        const Position& at = positions[p];
+        Reach& c = reach[p - from];
+        material_.rangeOf(k, at.box, c.i0, c.i1, c.j0, c.j1);
+        if (c.i0 > c.i1 || c.j0 > c.j1) continue;
+        const Eigen::Vector3d top = at.tip + shape_.top * at.axis;
+        c.d = Eigen::Vector3d(at.e1[k], at.e2[k], at.axis[k]);
+        c.tip = Eigen::Vector2d(at.tip[u], at.tip[v]), c.top = Eigen::Vector2d(top[u], top[v]);
+        rowFrom = std::min(rowFrom, c.j0), rowTo = std::max(rowTo, c.j1);
+        lowest = std::min(lowest, at.box.min()[k]), highest = std::max(highest, at.box.max()[k]);
+      }
+      if (rowFrom > rowTo) continue;
+      for (int j = nextRow(lane, rowFrom); j <= rowTo; j = nextRow(lane, j + 1)) {
         const Eigen::Vector3d row = material_.origin(k, 0, j);
-        const auto [from, to] = rowOfCapsule(a, b, radius, row[v]);
-        if (!(from <= to)) continue;
-        const int first = firstWithin(std::ceil((from - row[u]) / h), i0, i1);
-        const int last = lastWithin(std::floor((to - row[u]) / h), i0, i1);
+        int first = std::numeric_limits<int>::max(), last = -1;
+        for (Reach& c : reach) {
+          c.first = 1, c.last = 0;
+          if (c.i0 > c.i1 || j < c.j0 || j > c.j1) continue;
+          const auto [ends, endsTo] = rowOfCapsule(c.tip, c.top, radius, row[v]);
+          if (!(ends <= endsTo)) continue;
+          c.first = firstWithin(std::ceil((ends - row[u]) / h), c.i0, c.i1);
+          c.last = lastWithin(std::floor((endsTo - row[u]) / h), c.i0, c.i1);
+          if (c.first <= c.last) first = std::min(first, c.first), last = std::max(last, c.last);
+        }
         const TriDexel::Extent* stockRow = material_.extents(k, j);
         const TriDexel::Extent* partRow = k == 2 ? uncut_.extents(k, j) : nullptr;
         Eigen::Vector3d o = row;
         for (int i = first; i <= last; ++i) {
-          // Most rays the tool crosses lost their material there to the positions before: the box tells
-          // them at once; the bounding cylinder then tells most of the others.
-          if (!(partRow && meets(uncut_, partRow[i], k, i, j, boxFrom, boxTo)) &&
-              !meets(material_, stockRow[i], k, i, j, boxFrom, boxTo))
+          // Most rays the tools cross lost their material there to the positions before: the boxes tell them
+          // at once (by the extent: without reading the ray); each box then, and each bounding cylinder.
+          if (!(partRow && partRow[i].to > lowest && partRow[i].from < highest) &&
+              !(stockRow[i].to > lowest && stockRow[i].from < highest))
             continue;
           o[u] = material_.across(k, i);
-          const Eigen::Vector3d w = o - at.tip;
-          const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
-          const Span bound = cylinderSpan(shape_.radius, shape_.length, q, d);
-          if (!bound) continue;
-          // Every span of the cutter lies within `reach` (the bounding cylinder, or a taller one when the
-          // corner stands above short flutes): a ray whose stock and part keep out of it loses nothing.
-          const Span reach = shape_.top > shape_.length ? coneSpan(reaching, q, d) : bound;
-          const double lo = (reach ? reach : bound)->from - kSlack, hi = (reach ? reach : bound)->to + kSlack;
-          const bool inPart = partRow && meets(uncut_, partRow[i], k, i, j, lo, hi);
-          if (!inPart && !meets(material_, stockRow[i], k, i, j, lo, hi)) continue;
-          cutterSpans(shape_, q, d, *bound, spans);
-          for (const Interval& s : spans) {
-            const double taken = material_.remove(k, i, j, s.from, s.to);
-            if (k == 2) {
-              removed += taken;
-              if (inPart) gouged += uncut_.remove(k, i, j, s.from, s.to);
+          for (size_t p = from; p < to; ++p) {
+            const Reach& c = reach[p - from];
+            if (i < c.first || i > c.last) continue;
+            const Position& at = positions[p];
+            const double boxFrom = at.box.min()[k], boxTo = at.box.max()[k];
+            if (!(partRow && meets(uncut_, partRow[i], k, i, j, boxFrom, boxTo)) &&
+                !meets(material_, stockRow[i], k, i, j, boxFrom, boxTo))
+              continue;
+            const Eigen::Vector3d w = o - at.tip;
+            const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
+            const Span bound = cylinderSpan(shape_.radius, shape_.length, q, c.d);
+            if (!bound) continue;
+            // Every span of the cutter lies within `within` (the bounding cylinder, or a taller one when the
+            // corner stands above short flutes): a ray whose stock and part keep out of it loses nothing.
+            const Span within = shape_.top > shape_.length ? coneSpan(reaching, q, c.d) : bound;
+            const double lo = (within ? within : bound)->from - kSlack, hi = (within ? within : bound)->to + kSlack;
+            const bool inPart = partRow && meets(uncut_, partRow[i], k, i, j, lo, hi);
+            if (!inPart && !meets(material_, stockRow[i], k, i, j, lo, hi)) continue;
+            cutterSpans(shape_, q, c.d, *bound, t.spans);
+            for (const Interval& s : t.spans) {
+              const double taken = material_.remove(k, i, j, s.from, s.to);
+              if (k == 2) {
+                t.removed[p - start] += taken;
+                if (inPart) t.gouged[p - start] += uncut_.remove(k, i, j, s.from, s.to);
+              }
             }
           }
         }
@@ -616,9 +652,8 @@ private:
     at.axis.cwiseAbs().maxCoeff(&k);
     const int u = (k + 1) % 3, v = (k + 2) % 3;
     const double radius = 0.5 * cutter_.holderDiameter;
-    const Eigen::AlignedBox3d stock = stockMesh_.bounds();
     double reach = 0.0;  // how far up the axis the stock goes
-    for (int c = 0; c < 8; ++c) reach = std::max(reach, (stock.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - at.tip).dot(at.axis));
+    for (int c = 0; c < 8; ++c) reach = std::max(reach, (stockBox_.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - at.tip).dot(at.axis));
     if (reach <= 0.0) return 0.0;
     Eigen::Vector3d across;
     for (int a = 0; a < 3; ++a) across[a] = radius * std::sqrt(std::max(0.0, 1.0 - at.axis[a] * at.axis[a]));
@@ -707,6 +742,7 @@ private:
   int threads_ = 1;
   int lanes_ = 1;  // of rows each, taken by the threads in turn
   geometry::TriangleMesh stockMesh_, partMesh_;
+  Eigen::AlignedBox3d stockBox_;
   TriDexel material_, part_;
   TriDexel uncut_;  // the part not yet entered by the tool: a gouge is counted once
 };
