@@ -683,8 +683,15 @@ private:
       }
       for (int i = first; i <= last; i += 2) {  // every other ray: heights stay exact along each ray
         const Eigen::Vector3d o = material_.origin(k, i, j);
-        // The ray o + t·e_k within the holder's infinite cylinder about the axis.
         const Eigen::Vector3d w = o - at.tip;
+        // The extents bound what the ray can add, the height being linear along it: most rays cannot beat the
+        // highest point found, and are neither clipped to the holder nor read.
+        const TriDexel::Extent stockSpan = material_.extent(k, i, j), partSpan = part_.extent(k, i, j);
+        const auto beats = [&](const TriDexel::Extent& e) {
+          return e.from <= e.to && w.dot(at.axis) + (at.axis[k] > 0.0 ? e.to : e.from) * at.axis[k] > highest;
+        };
+        if (!beats(stockSpan) && !beats(partSpan)) continue;
+        // The ray o + t·e_k within the holder's infinite cylinder about the axis.
         Eigen::Vector3d d = Eigen::Vector3d::Zero();
         d[k] = 1.0;
         const Eigen::Vector3d wp = w - w.dot(at.axis) * at.axis, dp = d - d.dot(at.axis) * at.axis;
@@ -698,9 +705,7 @@ private:
           continue;
         }
         for (const TriDexel* model : {&material_, &part_}) {
-          // The extent bounds what the ray can add (the height is linear along it): most rays cannot beat
-          // the highest point found and are not read.
-          const TriDexel::Extent e = model->extent(k, i, j);
+          const TriDexel::Extent e = model == &material_ ? stockSpan : partSpan;
           const double a = std::max<double>(e.from, t0), b = std::min<double>(e.to, t1);
           if (b <= a || std::max(w.dot(at.axis) + a * at.axis[k], w.dot(at.axis) + b * at.axis[k]) <= highest) continue;
           for (const Interval& s : model->at(k, i, j)) {
