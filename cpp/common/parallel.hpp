@@ -97,12 +97,17 @@ void superviseWorkers(long workers, Body&& body, Progress&& progress, Report&& r
     progressed.notify_one();
   });
   {
+    // Until the workers have returned and their last progress is reported (they may all be done before this
+    // thread first looks).
     std::unique_lock<std::mutex> lock(mutex);
     long reported = 0;
-    while (finished < workers) {
+    for (;;) {
       progressed.wait(lock, [&] { return finished == workers || progress() != reported; });
       const long now = progress();
-      if (now == reported) continue;
+      if (now == reported) {
+        if (finished == workers) break;
+        continue;
+      }
       reported = now;
       if (cancelled) continue;
       lock.unlock();
