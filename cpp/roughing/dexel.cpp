@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace hsm::roughing {
@@ -66,6 +68,22 @@ TriDexel::TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRa
   }
 }
 
+namespace {
+// The float nearest x at or below it (a cast rounds to the nearest, which may be above).
+float floatBelow(double x) {
+  float f = static_cast<float>(x);
+  if (f > x) {  // the float next below f, by its bits (libm's nextafterf is a call for every ray cut)
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    if (f > 0.0f) --bits;
+    else if (f < 0.0f) ++bits;
+    else bits = 0x80000001u;  // the least negative float below 0
+    std::memcpy(&f, &bits, sizeof f);
+  }
+  return f;
+}
+}  // namespace
+
 void TriDexel::keepExtent(int k, size_t r) {
   const Intervals& ray = rays_[k][r];
   Extent& e = extents_[k][r];
@@ -73,11 +91,8 @@ void TriDexel::keepExtent(int k, size_t r) {
     e = {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
     return;
   }
-  // The floats nearest the ends, rounded outwards.
-  e.from = static_cast<float>(ray.front().from);
-  if (e.from > ray.front().from) e.from = std::nextafter(e.from, -std::numeric_limits<float>::infinity());
-  e.to = static_cast<float>(ray.back().to);
-  if (e.to < ray.back().to) e.to = std::nextafter(e.to, std::numeric_limits<float>::infinity());
+  e.from = floatBelow(ray.front().from);
+  e.to = -floatBelow(-ray.back().to);
 }
 
 double TriDexel::remove(int k, int i, int j, double from, double to) {
