@@ -391,10 +391,10 @@ void samplesOn(const geometry::TriangleMesh& mesh, const Eigen::Vector3i& t, dou
 }
 
 // Samples of the part's surface about two resolutions apart (at most 2 million: farther apart on a large
-// part), at the centres of each triangle's subdivision; chunks of triangles on `threads` threads, their
-// samples kept in the triangles' order.
-std::vector<Sample> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel& partModel, const TriDexel& material,
-                              int threads) {
+// part), at the centres of each triangle's subdivision: in chunks of triangles on `threads` threads, each
+// chunk's in the triangles' order.
+std::vector<std::vector<Sample>> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel& partModel,
+                                           const TriDexel& material, int threads) {
   double area = 0.0;
   for (const Eigen::Vector3i& t : mesh.triangles)
     area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
@@ -404,12 +404,7 @@ std::vector<Sample> samplesOf(const geometry::TriangleMesh& mesh, const TriDexel
   parallelChunks(triangles, threads, chunk, [&](long from, long to) {
     for (long t = from; t < to; ++t) samplesOn(mesh, mesh.triangles[t], spacing, partModel, material, chunks[from / chunk]);
   });
-  size_t count = 0;
-  for (const std::vector<Sample>& c : chunks) count += c.size();
-  std::vector<Sample> out;
-  out.reserve(count);
-  for (const std::vector<Sample>& c : chunks) out.insert(out.end(), c.begin(), c.end());
-  return out;
+  return chunks;
 }
 
 // The stock's and the part's meshes at `deflection`, side by side when there are two threads or more (OCCT
@@ -437,7 +432,7 @@ public:
     r.resolution = settings_.resolution;
     r.rays = material_.rays();
     r.volumeToRemove = material_.volume();
-    const std::vector<Sample> samples = samplesOf(partMesh_, part_, material_, threads_);
+    const std::vector<std::vector<Sample>> samples = samplesOf(partMesh_, part_, material_, threads_);
     const double h = settings_.resolution;
     const std::vector<Position> positions = positionsOf(moves, shape_, sampleStep(cutter_, h));
     r.positions = static_cast<long>(positions.size());
@@ -719,20 +714,23 @@ private:
     return highest;
   }
 
-  void thicknessOf(const std::vector<Sample>& samples, RemovalResult& r) const {
-    std::vector<double> thickness(samples.size());
-    parallelChunks(static_cast<long>(samples.size()), threads_, 1 << 14, [&](long from, long to) {
-      for (long i = from; i < to; ++i) thickness[i] = stockAt(material_, samples[i]);
+  // The stock left on the samples (read chunk by chunk on the threads), and its statistics (in order).
+  void thicknessOf(const std::vector<std::vector<Sample>>& samples, RemovalResult& r) const {
+    std::vector<size_t> offset(1, 0);
+    for (const std::vector<Sample>& chunk : samples) offset.push_back(offset.back() + chunk.size());
+    r.surfacePoints.resize(offset.back()), r.thickness.resize(offset.back()), r.weight.resize(offset.back());
+    parallelChunks(static_cast<long>(samples.size()), threads_, 1, [&](long from, long to) {
+      for (long c = from; c < to; ++c)
+        for (size_t i = 0; i < samples[c].size(); ++i) {
+          const Sample& s = samples[c][i];
+          r.surfacePoints[offset[c] + i] = s.point, r.thickness[offset[c] + i] = stockAt(material_, s);
+          r.weight[offset[c] + i] = s.weight;
+        }
     });
     double total = 0.0, sum = 0.0, squares = 0.0;
-    r.surfacePoints.reserve(samples.size()), r.thickness.reserve(samples.size()), r.weight.reserve(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i) {
-      const Sample& s = samples[i];
-      const double t = thickness[i];
-      r.surfacePoints.push_back(s.point);
-      r.thickness.push_back(t);
-      r.weight.push_back(s.weight);
-      total += s.weight, sum += s.weight * t, squares += s.weight * t * t;
+    for (size_t i = 0; i < r.thickness.size(); ++i) {
+      const double t = r.thickness[i], w = r.weight[i];
+      total += w, sum += w * t, squares += w * t * t;
       r.thicknessMax = std::max(r.thicknessMax, t);
     }
     if (total > 0.0) {

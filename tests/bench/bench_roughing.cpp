@@ -6,8 +6,8 @@
 // Part 3 (issue 17): material removal of each strategy on the whole impeller, 1 and 2 threads.
 // Run: build/bin/bench_roughing [runs] [removal [S1..S5|all] [threads]]   ("removal": part 3 only, the best
 // of `runs` of each simulation, of one strategy and on one thread count when named). Under `valgrind
-// --tool=callgrind --instr-atstart=no` only the simulations are instrumented: callgrind's total is their
-// instructions (e.g. `... 1 removal S3 1`).
+// --tool=cachegrind --cache-sim=no --instr-at-start=no` (or callgrind with --instr-atstart=no) only the
+// simulations are instrumented: the I refs are their instructions (e.g. `... 1 removal S3 1`).
 #include "roughing/parts.hpp"
 #include "roughing/roughing.hpp"
 #include "roughing/clearance.hpp"
@@ -27,11 +27,14 @@
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <polyclipping/clipper.hpp>
-#if __has_include(<valgrind/callgrind.h>)
+#if __has_include(<valgrind/callgrind.h>) && __has_include(<valgrind/cachegrind.h>)
+#include <valgrind/cachegrind.h>
 #include <valgrind/callgrind.h>
 #else
 #define CALLGRIND_START_INSTRUMENTATION
 #define CALLGRIND_STOP_INSTRUMENTATION
+#define CACHEGRIND_START_INSTRUMENTATION
+#define CACHEGRIND_STOP_INSTRUMENTATION
 #endif
 #include <ctime>
 
@@ -201,8 +204,10 @@ void removal(const PartAndStock& wheel, const VolumeToRemove& volume, const std:
         settings.threads = counts[c];
         const double before = cpuSeconds();
         CALLGRIND_START_INSTRUMENTATION;
+        CACHEGRIND_START_INSTRUMENTATION;
         const double t = bestOf(1, [&] { r = simulateRemoval(moves, SweepSettings().cutter, wheel.stock, wheel.part, settings); });
         CALLGRIND_STOP_INSTRUMENTATION;
+        CACHEGRIND_STOP_INSTRUMENTATION;
         if (t < seconds[c]) seconds[c] = t, cpu[c] = cpuSeconds() - before;
       }
     std::string times;
