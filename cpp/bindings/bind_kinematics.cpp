@@ -120,6 +120,9 @@ void bindKinematics(py::module_& m) {
       .value("siemens840d", ControllerKind::Siemens840D)
       .value("linuxcnc", ControllerKind::LinuxCNC)
       .value("grbl", ControllerKind::Grbl);
+  py::enum_<RotaryPlanner>(m, "RotaryPlanner", "How blocks that turn rotary axes are planned")
+      .value("joint_space", RotaryPlanner::JointSpace)
+      .value("linuxcnc", RotaryPlanner::LinuxCnc);
   m.attr("DEFAULT_MACHINE") = kDefaultMachine;
   py::class_<RotaryAxis>(m, "RotaryAxis", "A rotary axis: degrees, deg/s, deg/s², deg/s³")
       .def(py::init<>())
@@ -159,6 +162,7 @@ void bindKinematics(py::module_& m) {
       .def_readwrite("rotary_axes", &MachineModel::rotaryAxes, "chain order: the table's from the bed, then the head's")
       .def_readwrite("tool_axis", &MachineModel::toolAxis)
       .def_readwrite("tool_tip_programmed", &MachineModel::toolTipProgrammed)
+      .def_readwrite("rotary_planner", &MachineModel::rotaryPlanner)
       .def_property_readonly("kinematics", &MachineModel::kinematicsName,
                              "'table-table', 'head-table', 'head-head', 'table', 'head' or '' (3 axes)");
   m.def(

@@ -84,7 +84,8 @@ void bindPartition(py::module_& m) {
       .def_readwrite("step", &PartitionSettings::step, "mm between slicing surfaces (axial engagement)")
       .def_readwrite("setup_resolution_deg", &PartitionSettings::setupResolutionDeg, "S3: directions every …°")
       .def_readwrite("setup_grid", &PartitionSettings::setupGrid, "S3: points of the volume every … mm")
-      .def_readwrite("threads", &PartitionSettings::threads, "S3's search: threads (0: all cores)");
+      .def_readwrite("threads", &PartitionSettings::threads, "S3's search: threads (0: all cores)")
+      .def_readwrite("rest", &PartitionSettings::rest, "S3: the direction reaching the most of this rest stock");
   py::class_<SlicingSurface>(m, "SlicingSurface", "The surface a sub-volume starts on")
       .def_readonly("kind", &SlicingSurface::kind)
       .def_readonly("origin", &SlicingSurface::origin, "mm")

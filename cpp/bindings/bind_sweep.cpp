@@ -5,6 +5,7 @@
 #include "common/text.hpp"
 #include "geometry/brep.hpp"
 #include "roughing/clearance.hpp"
+#include "roughing/reach.hpp"
 #include "roughing/removal.hpp"
 #include "roughing/sweep.hpp"
 
@@ -44,6 +45,21 @@ py::dict moveArrays(const std::vector<ToolMove>& moves) {
   return d;
 }
 
+py::array_t<double> pointArray(const std::vector<Eigen::Vector3d>& points) {
+  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t(3)});
+  for (size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) out.mutable_at(static_cast<py::ssize_t>(i), k) = points[i][k];
+  return out;
+}
+
+RestStock restFrom(const py::array_t<double>& points, double spacing) {
+  if (points.ndim() != 2 || points.shape(1) != 3) throw InputError("rest stock points must be an (N, 3) array");
+  RestStock rest;
+  rest.spacing = spacing;
+  for (py::ssize_t i = 0; i < points.shape(0); ++i) rest.points.emplace_back(points.at(i, 0), points.at(i, 1), points.at(i, 2));
+  return rest;
+}
+
 std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array_t<double>& axes,
                                 const std::optional<py::array_t<long>>& kinds = std::nullopt) {
   if (tips.ndim() != 2 || tips.shape(1) != 3 || axes.ndim() != 2 || axes.shape(1) != 3 || axes.shape(0) != tips.shape(0))
@@ -67,6 +83,19 @@ std::vector<ToolMove> movesFrom(const py::array_t<double>& tips, const py::array
   }
   return moves;
 }
+
+// Operations as (moves dict, Cutter) pairs: the runs of a program of several tools.
+std::vector<ToolRun> runsFrom(const std::vector<py::tuple>& runs) {
+  std::vector<ToolRun> out;
+  for (const py::tuple& run : runs) {
+    if (run.size() != 2) throw InputError("each run is (moves, cutter): moves a dict of tip, axis and kind arrays");
+    const py::dict d = run[0].cast<py::dict>();
+    out.push_back({movesFrom(d["tip"].cast<py::array_t<double>>(), d["axis"].cast<py::array_t<double>>(),
+                             d["kind"].cast<py::array_t<long>>()),
+                   run[1].cast<Cutter>()});
+  }
+  return out;
+}
 }  // namespace
 
 void bindSweep(py::module_& m) {
@@ -83,6 +112,14 @@ void bindSweep(py::module_& m) {
       .def_readwrite("holder_diameter", &Cutter::holderDiameter)
       .def_readwrite("holder_length", &Cutter::holderLength)
       .def("profile_radius", &Cutter::profileRadius, py::arg("height"), "radius at a height above the tip");
+  py::class_<RestStock>(m, "RestStock", "Stock a previous operation left: points `spacing` mm apart, beyond the allowance")
+      .def(py::init<>())
+      .def(py::init(&restFrom), py::arg("points"), py::arg("spacing"))
+      .def_property_readonly("points", [](const RestStock& r) { return pointArray(r.points); }, "(N, 3), mm")
+      .def_readonly("spacing", &RestStock::spacing, "mm; each point stands for a cube of that side")
+      .def_property_readonly("volume", [](const RestStock& r) { return double(r.points.size()) * std::pow(r.spacing, 3); },
+                             "mm³, as the points stand for it")
+      .def("__len__", [](const RestStock& r) { return r.points.size(); });
   py::class_<SweepSettings>(m, "SweepSettings", "Sweeping of the sub-volumes (mm, degrees)")
       .def(py::init<>())
       .def_readwrite("cutter", &SweepSettings::cutter)
@@ -91,7 +128,10 @@ void bindSweep(py::module_& m) {
       .def_readwrite("tolerance", &SweepSettings::tolerance)
       .def_readwrite("ramp_angle_deg", &SweepSettings::rampAngleDeg)
       .def_readwrite("clearance", &SweepSettings::clearance)
-      .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection);
+      .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection)
+      .def_readwrite("step_up_minimum", &SweepSettings::stepUpMinimum, "mm between intermediate levels; 0: none")
+      .def_readwrite("step_up_scallop", &SweepSettings::stepUpScallop, "mm of staircase left across a wall")
+      .def_readwrite("rest", &SweepSettings::rest, "rest roughing: cut only where the tool reaches this stock");
   std::vector<std::string> kinds;
   for (MoveKind k : {MoveKind::Rapid, MoveKind::Plunge, MoveKind::Ramp, MoveKind::Cut, MoveKind::Link})
     kinds.push_back(moveKindName(k));
@@ -99,6 +139,9 @@ void bindSweep(py::module_& m) {
   py::class_<Pass>(m, "Pass")
       .def_readonly("sub_volume", &Pass::subVolume)
       .def_readonly("ring", &Pass::ring, "0 for the domain's boundary, k for its k-th offset")
+      .def_readonly("closed", &Pass::closed, "a loop, or an open path")
+      .def_readonly("intermediate", &Pass::intermediate, "on a level between a slice's far and near sides")
+      .def_readonly("depth", &Pass::depth, "the ring's offset inward from the level's domain, mm laid flat")
       .def_readonly("points", &Pass::points);
   py::class_<SweepResult>(m, "SweepResult", "Lengths in mm")
       .def_property_readonly("moves", [](const SweepResult& r) { return moveArrays(r.moves); })
@@ -127,7 +170,10 @@ void bindSweep(py::module_& m) {
       .def_readonly("positions", &ClearanceReport::positions)
       .def_readonly("too_close", &ClearanceReport::tooClose)
       .def_readonly("worst_move", &ClearanceReport::worstMove)
-      .def_readonly("worst_tip", &ClearanceReport::worstTip);
+      .def_readonly("worst_tip", &ClearanceReport::worstTip)
+      .def_property_readonly("move_minimum", [](const ClearanceReport& r) {
+        return py::array_t<double>(r.moveMinimum.size(), r.moveMinimum.data());
+      }, "per move, the least distance along it, mm (capped at the limit + 2)");
   m.def(
       "check_clearance",
       [](const py::array_t<double>& tips, const py::array_t<double>& axes, const std::string& partBrep,
@@ -161,7 +207,9 @@ void bindSweep(py::module_& m) {
       .def_readwrite("threads", &RemovalSettings::threads, "0: all cores")
       .def_readwrite("allowance", &RemovalSettings::allowance, "mm of stock meant to stay on the part")
       .def_readwrite("stock_mesh_stride", &RemovalSettings::stockMeshStride,
-                     "> 0: the stock left as blocks of stride x stride rays (0: none)");
+                     "> 0: the stock left as blocks of stride x stride rays (0: none)")
+      .def_readwrite("rest_spacing", &RemovalSettings::restSpacing,
+                     "> 0: the stock left beyond the allowance as points this far apart (rest roughing), mm");
   py::class_<RapidFault>(m, "RapidFault", "A rapid that cuts the stock left")
       .def_readonly("move", &RapidFault::move, "index of the rapid in the moves")
       .def_readonly("at", &RapidFault::at, "the tip where it first cuts, mm")
@@ -192,12 +240,8 @@ void bindSweep(py::module_& m) {
       .def_readonly("gouge_at", &RemovalResult::gougeAt)
       .def_readonly("rapid_faults", &RemovalResult::rapidFaults, "rapids that cut the stock left (faults)")
       .def_readonly("rapid_volume", &RemovalResult::rapidVolume, "mm³ the rapids take out")
-      .def_property_readonly("surface_points", [](const RemovalResult& r) {
-        py::array_t<double> out({static_cast<py::ssize_t>(r.surfacePoints.size()), py::ssize_t(3)});
-        for (size_t i = 0; i < r.surfacePoints.size(); ++i)
-          for (int k = 0; k < 3; ++k) out.mutable_at(static_cast<py::ssize_t>(i), k) = r.surfacePoints[i][k];
-        return out;
-      })
+      .def_property_readonly("surface_points", [](const RemovalResult& r) { return pointArray(r.surfacePoints); })
+      .def_readonly("rest", &RemovalResult::rest, "the stock left beyond the allowance (with rest_spacing)")
       .def_property_readonly("thickness", [](const RemovalResult& r) { return py::array_t<double>(r.thickness.size(), r.thickness.data()); })
       .def_property_readonly("weight", [](const RemovalResult& r) { return py::array_t<double>(r.weight.size(), r.weight.data()); })
       .def_readonly("thickness_mean", &RemovalResult::thicknessMean)
@@ -228,23 +272,56 @@ void bindSweep(py::module_& m) {
       },
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
       py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
+  py::class_<LeftSplit>(m, "LeftSplit", "What a roughing path leaves, by cause (mm³)")
+      .def_readonly("resolution", &LeftSplit::resolution, "mm, the grid of columns and heights")
+      .def_readonly("volume", &LeftSplit::volume, "mm³ of the solid's material as sampled")
+      .def_readonly("unreachable", &LeftSplit::unreachable, "mm³ no tool position along these axes reaches")
+      .def_readonly("between_levels", &LeftSplit::betweenLevels, "mm³ reached only from between the path's levels")
+      .def_readonly("levels", &LeftSplit::levels, "the path's distinct cutting heights");
+  m.def(
+      "split_what_is_left",
+      [](const Partition& partition, const RemovalSolid& solid, const std::string& partBrep, const Cutter& cutter,
+         double allowance, const py::array_t<double>& tips, const py::array_t<double>& axes,
+         const py::array_t<long>& kinds, double resolution, int threads) {
+        const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const TopoDS_Shape part = geometry::readBrep(partBrep);
+        py::gil_scoped_release release;
+        return guarded("split of what is left", [&] {
+          return splitWhatIsLeft(partition, solid, part, cutter, allowance, moves, resolution, threads);
+        });
+      },
+      py::arg("partition"), py::arg("solid"), py::arg("part_brep"), py::arg("cutter"), py::arg("allowance"),
+      py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("resolution") = 0.25, py::arg("threads") = 0);
+  m.def(
+      "simulate_removal_runs",
+      [](const std::vector<py::tuple>& runs, const std::string& stockBrep, const std::string& partBrep,
+         RemovalSettings settings, const py::object& progress) {
+        const std::vector<ToolRun> toolRuns = runsFrom(runs);
+        const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
+        settings.progress = progressCallback(progress);
+        py::gil_scoped_release release;
+        return guarded("material removal", [&] { return simulateRemoval(toolRuns, stock, part, settings); });
+      },
+      py::arg("runs"), py::arg("stock_brep"), py::arg("part_brep"), py::arg("settings"), py::arg("progress") = py::none());
   m.def(
       "keep_rapids_out_of_stock",
       [](const py::array_t<double>& tips, const py::array_t<double>& axes, const py::array_t<long>& kinds,
          const Cutter& cutter, const std::string& stockBrep, const std::string& partBrep, RemovalSettings settings,
-         double margin, const py::object& progress) {
+         double margin, const py::object& progress, const std::vector<py::tuple>& before) {
         const std::vector<ToolMove> moves = movesFrom(tips, axes, kinds);
+        const std::vector<ToolRun> earlier = runsFrom(before);
         const TopoDS_Shape stock = geometry::readBrep(stockBrep), part = geometry::readBrep(partBrep);
         settings.progress = progressCallback(progress);
         py::gil_scoped_release release;
         RapidsMended mended = guarded("rapids in stock", [&] {
-          return keepRapidsOutOfStock(moves, cutter, stock, part, settings, margin);
+          return keepRapidsOutOfStock(moves, cutter, stock, part, settings, margin, earlier);
         });
         py::gil_scoped_acquire acquire;
         return py::make_tuple(moveArrays(mended.moves), mended.mended);
       },
       py::arg("tips"), py::arg("axes"), py::arg("kinds"), py::arg("cutter"), py::arg("stock_brep"),
-      py::arg("part_brep"), py::arg("settings"), py::arg("margin") = 1.0, py::arg("progress") = py::none());
+      py::arg("part_brep"), py::arg("settings"), py::arg("margin") = 1.0, py::arg("progress") = py::none(),
+      py::arg("before") = std::vector<py::tuple>{});
 }
 
 }  // namespace hsm::bindings

@@ -14,8 +14,15 @@ namespace hsm::kinematics {
 namespace {
 constexpr double kDegree = M_PI / 180.0;
 
+// Rodrigues' formula with one sincos: the simulator turns every block's axes through it.
 Eigen::Matrix3d rotation(const RotaryAxis& axis, double degrees) {
-  return Eigen::AngleAxisd(degrees * kDegree, axis.direction).toRotationMatrix();
+  const double angle = degrees * kDegree, s = std::sin(angle), c = std::cos(angle), k = 1.0 - c;
+  const Eigen::Vector3d& w = axis.direction;
+  Eigen::Matrix3d r;
+  r << c + k * w.x() * w.x(), k * w.x() * w.y() - s * w.z(), k * w.x() * w.z() + s * w.y(),
+      k * w.y() * w.x() + s * w.z(), c + k * w.y() * w.y(), k * w.y() * w.z() - s * w.x(),
+      k * w.z() * w.x() - s * w.y(), k * w.z() * w.y() + s * w.x(), c + k * w.z() * w.z();
+  return r;
 }
 
 // The rigid motion of the table (workpiece -> machine) or of the head (tip frame -> carriage), composed from the
@@ -23,9 +30,17 @@ Eigen::Matrix3d rotation(const RotaryAxis& axis, double degrees) {
 struct Motion {
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  bool identity = true;
   void then(const RotaryAxis& axis, double degrees) {  // this ∘ (turn about the axis through its pivot)
     const Eigen::Matrix3d r = rotation(axis, degrees);
-    t += R * (axis.pivot - r * axis.pivot);
+    const Eigen::Vector3d shift = axis.pivot - r * axis.pivot;
+    if (identity) {  // the first turn of the chain: nothing to compose with
+      t = shift;
+      R = r;
+      identity = false;
+      return;
+    }
+    t += R * shift;
     R = R * r;
   }
 };
@@ -100,9 +115,26 @@ Eigen::Vector3d toolAxisAt(const MachineModel& m, const RotaryAngles& angles) {
   return table.R.transpose() * (head.R * m.toolAxis);
 }
 
+namespace {
+// The point x turned by `degrees` about the axis through its pivot (Rodrigues on the vector itself).
+Eigen::Vector3d turned(const RotaryAxis& axis, double degrees, const Eigen::Vector3d& x) {
+  const double angle = degrees * kDegree, s = std::sin(angle), c = std::cos(angle);
+  const Eigen::Vector3d& w = axis.direction;
+  const Eigen::Vector3d v = x - axis.pivot;
+  return axis.pivot + c * v + s * w.cross(v) + ((1.0 - c) * w.dot(v)) * w;
+}
+
+// chainMotion(m, angles, table) applied to x, the outermost axis first: no matrices composed.
+Eigen::Vector3d chainPoint(const MachineModel& m, const RotaryAngles& angles, bool table, Eigen::Vector3d x) {
+  for (size_t i = m.rotaryAxes.size(); i-- > 0;)
+    if (m.rotaryAxes[i].onTable == table) x = turned(m.rotaryAxes[i], angles[i], x);
+  return x;
+}
+}  // namespace
+
+// The simulator asks this for every block of a 5-axis program: the point alone, turned axis by axis.
 Eigen::Vector3d linearAxesFor(const MachineModel& m, const Eigen::Vector3d& tip, const RotaryAngles& angles) {
-  const Motion table = chainMotion(m, angles, true), head = chainMotion(m, angles, false);
-  return table.R * tip + table.t - head.t;
+  return chainPoint(m, angles, true, tip) - chainPoint(m, angles, false, Eigen::Vector3d::Zero());
 }
 
 std::vector<AngleSolution> orientationSolutions(const MachineModel& m, const Eigen::Vector3d& wanted) {

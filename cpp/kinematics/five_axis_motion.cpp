@@ -37,6 +37,39 @@ const char* speedLimitName(SpeedLimit limit) {
   return names[static_cast<int>(limit)];
 }
 
+void FiveAxisCutter::programPiece(const Block& block,
+                                  const std::function<void(const Block&, const JointMotion&)>& piece) {
+  const MachineModel& m = machine_;
+  const RotaryAngles startAngles = previous_;
+  JointMotion joint;
+  joint.active = true;
+  joint.start = jointsAt(block, 0.0);
+  previous_ = startAngles;
+  joint.end = jointsAt(block, 1.0);
+  // X Y Z and the angles as the program gives them (tip, A B C), each linear along the block
+  JointVector from, to;
+  from << block.start, fromAngles_[0], fromAngles_[1];
+  to << block.end, toAngles_[0], toAngles_[1];
+  joint.tipLength = (block.end - block.start).norm();
+  joint.rotaryOnly = joint.tipLength < 1e-6;
+  joint.pathLength = joint.rotaryOnly ? (to.tail<2>() - from.tail<2>()).norm() : joint.tipLength;
+  if (joint.pathLength > 0.0) {
+    joint.rate = (to - from) / joint.pathLength;
+    Block b = block;
+    if (!(block.toolTip || m.toolTipProgrammed)) {  // the program gives the machine's axes: report the tip
+      b.start = forwardKinematics(m, {joint.start.head<3>(), {joint.start[3], joint.start[4]}}).tip;
+      b.end = forwardKinematics(m, {joint.end.head<3>(), {joint.end[3], joint.end[4]}}).tip;
+    }
+    if (block.inverseTime) b.feed = joint.pathLength * block.feed;
+    b.rateLength = joint.pathLength;
+    piece(b, joint);
+  }
+  previous_ = toAngles_;
+  programmed_ = block.rotaryEnd;
+  orientation_ = Eigen::Vector3d::Zero();
+  endKnown_ = false;
+}
+
 JointVector FiveAxisCutter::jointsAt(const Block& b, double lambda) {
   const MachineModel& m = machine_;
   const Eigen::Vector3d point = b.isArc() ? b.pointAt(lambda * b.length()) : b.start + lambda * (b.end - b.start);
@@ -66,7 +99,7 @@ void FiveAxisCutter::sample(const Block& block, const RotaryAngles& startAngles,
     // Near a singularity the angles swing more than the orientation turns: cut finer until no piece turns
     // an axis more than 2°, or the bound is reached.
     previous_ = startAngles;
-    q.assign(1, jointsAt(block, 0.0));
+    q.assign(1, startJoints(block, startAngles));
     double widest = 0.0;
     for (int i = 1; i <= pieces; ++i) {
       q.push_back(jointsAt(block, double(i) / pieces));
@@ -79,14 +112,14 @@ void FiveAxisCutter::sample(const Block& block, const RotaryAngles& startAngles,
 
 void FiveAxisCutter::cut(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece) {
   const MachineModel& m = machine_;
-  const std::string where = "line " + std::to_string(block.line) + ": ";
+  const auto where = [&block] { return "line " + std::to_string(block.line) + ": "; };
   for (int k = 0; k < 3; ++k)
     if ((programmed_[k] != 0.0 || block.rotaryEnd[k] != 0.0) && m.rotaryIndex(char('A' + k)) < 0)
-      throw InputError(where + "the program turns " + std::string(1, char('A' + k)) + " but machine \"" + m.name +
+      throw InputError(where() + "the program turns " + std::string(1, char('A' + k)) + " but machine \"" + m.name +
                        "\" has no such axis" + (m.hasRotaryAxes() ? " (it has " + m.kinematicsName() + " axes)" : "") +
                        ": choose the machine the program was posted for");
   if (block.orientationVectors && !m.hasRotaryAxes())
-    throw InputError(where + "the program gives tool orientations (A3 B3 C3) but machine \"" + m.name +
+    throw InputError(where() + "the program gives tool orientations (A3 B3 C3) but machine \"" + m.name +
                      "\" has no rotary axes: choose a 5-axis machine");
 
   // Pieces: one per degree of rotary motion (of the orientation for vectors), per 5° of an arc.
@@ -101,7 +134,7 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
       try {
         toAngles_ = inverseKinematics(m, {block.end, block.orientationEnd}, previous_).position.angles;
       } catch (const InputError& error) {
-        throw InputError(where + error.what());
+        throw InputError(where() + error.what());
       }
     } else {
       for (size_t i = 0; i < m.rotaryAxes.size(); ++i) {
@@ -110,28 +143,31 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
         if (block.rotaryEnd[k] != programmed_[k]) toAngles_[i] = block.rotaryEnd[k];
         // An angle word the axis cannot reach: a real controller stops at its software limit (an alarm).
         if (!axis.continuous && !(toAngles_[i] >= axis.minPosition - 1e-9 && toAngles_[i] <= axis.maxPosition + 1e-9))
-          throw InputError(where + std::string(1, axis.name) + hsm::number(toAngles_[i]) + " is outside the travel of " +
+          throw InputError(where() + std::string(1, axis.name) + hsm::number(toAngles_[i]) + " is outside the travel of " +
                            std::string(1, axis.name) + " on machine \"" + m.name + "\" [" +
                            hsm::number(axis.minPosition) + ", " + hsm::number(axis.maxPosition) +
                            "] deg: correct the program, or choose the machine it was posted for");
       }
     }
     turn = std::max(std::abs(toAngles_[0] - fromAngles_[0]), std::abs(toAngles_[1] - fromAngles_[1]));
+    if (m.rotaryPlanner == RotaryPlanner::LinuxCnc && !block.orientationVectors && !block.isArc())
+      return programPiece(block, piece);
   }
   int pieces = static_cast<int>(std::ceil(turn / kDegreesPerPiece));
   if (block.isArc()) pieces = std::max(pieces, static_cast<int>(std::ceil(std::abs(block.sweep) * 180.0 / M_PI / kArcDegreesPerPiece)));
   pieces = std::clamp(pieces, 1, kMaxPiecesPerBlock);
 
-  std::vector<JointVector> q;
+  std::vector<JointVector>& q = q_;
   try {
     sample(block, startAngles, pieces, q);
   } catch (const InputError& error) {
-    throw InputError(where + error.what());
+    throw InputError(where() + error.what());
   }
 
   // The feed's path: the tip (tip programmed) or X Y Z (machine axes); the rotary angle when neither moves.
   const bool tip = block.toolTip || m.toolTipProgrammed;
-  std::vector<Eigen::Vector3d> points(pieces + 1);
+  std::vector<Eigen::Vector3d>& points = points_;
+  points.resize(pieces + 1);
   for (int i = 0; i <= pieces; ++i) {
     if (tip) {
       const double lambda = double(i) / pieces;
@@ -141,7 +177,10 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
       points[i] = forwardKinematics(m, position).tip;
     }
   }
-  std::vector<double> ds(pieces), tipLength(pieces);
+  std::vector<double>& ds = ds_;
+  std::vector<double>& tipLength = tipLength_;
+  ds.resize(pieces);
+  tipLength.resize(pieces);
   double linear = 0.0;
   for (int i = 0; i < pieces; ++i) {
     tipLength[i] = (points[i + 1] - points[i]).norm();
@@ -154,23 +193,26 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   double total = 0.0;
   for (double d : ds) total += d;
 
-  std::vector<JointVector> rate(pieces), bend(pieces + 1, JointVector::Zero());
+  std::vector<JointVector>& rate = rate_;
+  std::vector<JointVector>& bend = bend_;
+  rate.resize(pieces);
+  bend.assign(pieces + 1, JointVector::Zero());
   for (int i = 0; i < pieces; ++i) rate[i] = ds[i] > 0.0 ? JointVector((q[i + 1] - q[i]) / ds[i]) : JointVector::Zero();
   for (int i = 1; i < pieces; ++i) {
     const double span = 0.5 * (ds[i - 1] + ds[i]);
     if (span > 0.0) bend[i] = (rate[i] - rate[i - 1]) / span;
   }
+  Block b = block;
+  if (b.isArc()) b.motion = Motion::Linear;  // the pieces are chords of the arc
+  // G93: the whole block lasts 1/F, so its path speed is its length × F.
+  if (block.inverseTime) b.feed = total * block.feed;
+  b.rateLength = total;  // the block-processing limit counts the program's block, not its pieces
+  JointMotion joint;
+  joint.active = true;
   for (int i = 0; i < pieces; ++i) {
     if (!(ds[i] > 0.0)) continue;
-    Block b = block;
-    if (b.isArc()) b.motion = Motion::Linear;  // the pieces are chords of the arc
     b.start = points[i];
     b.end = points[i + 1];
-    // G93: the whole block lasts 1/F, so its path speed is its length × F.
-    if (block.inverseTime) b.feed = total * block.feed;
-    b.rateLength = total;  // the block-processing limit counts the program's block, not its pieces
-    JointMotion joint;
-    joint.active = true;
     joint.pathLength = ds[i];
     joint.tipLength = tipLength[i];
     joint.rotaryOnly = rotaryOnly;
@@ -182,7 +224,26 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   }
   previous_ = {q.back()[3], q.back()[4]};
   programmed_ = block.rotaryEnd;
-  orientation_ = block.orientationVectors ? block.orientationEnd : toolAxisAt(m, previous_);
+  // The tool axis of angles is asked for only when a vector follows: zero says so.
+  orientation_ = block.orientationVectors ? block.orientationEnd : Eigen::Vector3d::Zero();
+  remember(block, block.end, q.back());
+}
+
+// The machine's axes where the block starts: where the block before it ended when it starts there, at the same
+// angles and in the same frame (one kinematics evaluation a block instead of two).
+JointVector FiveAxisCutter::startJoints(const Block& block, const RotaryAngles& angles) {
+  const bool tip = block.toolTip || machine_.toolTipProgrammed;
+  if (endKnown_ && endTip_ == tip && endPoint_ == block.start && endJoints_[3] == angles[0] &&
+      endJoints_[4] == angles[1] && !(block.orientationVectors && !block.orientationByAxes))
+    return endJoints_;
+  return jointsAt(block, 0.0);
+}
+
+void FiveAxisCutter::remember(const Block& block, const Eigen::Vector3d& end, const JointVector& joints) {
+  endKnown_ = true;
+  endTip_ = block.toolTip || machine_.toolTipProgrammed;
+  endPoint_ = end;
+  endJoints_ = joints;
 }
 
 }  // namespace hsm::kinematics

@@ -54,14 +54,31 @@ public:
   // InputError (with the block's line) when the machine cannot take the orientation or a rotary axis the
   // program moves.
   void cut(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece);
+  // Whether the block turns a rotary axis (or gives an orientation) where the program left them.
+  bool turns(const Block& block) const {
+    return block.orientationVectors || block.rotaryEnd != programmed_;
+  }
 
 private:
   JointVector jointsAt(const Block& block, double lambda);
+  // LinuxCNC's planner: the block as one piece in the program's coordinates (see RotaryPlanner::LinuxCnc).
+  void programPiece(const Block& block, const std::function<void(const Block&, const JointMotion&)>& piece);
   // The machine axes at `pieces` + 1 points, refined near singularities (pieces may grow).
   void sample(const Block& block, const RotaryAngles& startAngles, int& pieces, std::vector<JointVector>& q);
+  JointVector startJoints(const Block& block, const RotaryAngles& angles);
+  void remember(const Block& block, const Eigen::Vector3d& end, const JointVector& joints);
   const MachineModel& machine_;
   RotaryAngles previous_{0.0, 0.0};
-  // Where the previous block left the program: A B C as programmed, the tool axis (zero before any vector).
+  // Where the last block cut ended: its point as programmed and the machine's axes there (a next block that starts
+  // there at the same angles starts there).
+  bool endKnown_ = false, endTip_ = false;
+  Eigen::Vector3d endPoint_ = Eigen::Vector3d::Zero();
+  JointVector endJoints_ = JointVector::Zero();
+  // Scratch of cut(), kept so that a block allocates nothing.
+  std::vector<JointVector> q_, rate_, bend_;
+  std::vector<Eigen::Vector3d> points_;
+  std::vector<double> ds_, tipLength_;
+  // Where the previous block left the program: A B C as programmed, the tool axis (zero: the angles' own).
   Eigen::Vector3d programmed_ = Eigen::Vector3d::Zero(), orientation_ = Eigen::Vector3d::Zero();
   RotaryAngles fromAngles_{0.0, 0.0}, toAngles_{0.0, 0.0};  // the block's angles when the axes interpolate
 };

@@ -64,6 +64,14 @@ ControllerKind controllerKind(const std::string& name, const std::string& origin
   bad(origin, "controller \"" + name + "\" is unknown: use siemens-840d, linuxcnc or grbl");
 }
 
+RotaryPlanner rotaryPlanner(const json& root, const MachineModel& m, const std::string& origin) {
+  const bool linuxcnc = m.controller == ControllerKind::LinuxCNC;
+  const std::string name = text(root, "planner", origin, linuxcnc ? "linuxcnc" : "joint-space");
+  if (name == "joint-space") return RotaryPlanner::JointSpace;
+  if (name == "linuxcnc") return RotaryPlanner::LinuxCnc;
+  bad(origin, "\"planner\": \"" + name + "\" is unknown: use joint-space or linuxcnc (see docs/machines.md)");
+}
+
 constexpr double kPerMinute = 1.0 / 60.0;  // mm/min -> mm/s
 constexpr double kMetres = 1000.0;         // m/s², m/s³ -> mm/s², mm/s³
 
@@ -150,6 +158,10 @@ std::string controllerName(ControllerKind kind) {
   return "?";
 }
 
+std::string rotaryPlannerName(RotaryPlanner planner) {
+  return planner == RotaryPlanner::LinuxCnc ? "linuxcnc" : "joint-space";
+}
+
 void checkMachine(const MachineModel& m) {
   auto check = [&](double value, double low, double high, const std::string& what, double display,
                    const std::string& unit) {
@@ -171,6 +183,9 @@ void checkMachine(const MachineModel& m) {
   check(m.arcTolerance, 1e-4, 1.0, "arc tolerance", 1.0, "mm");
   check(m.compressorPathLimit, 0.0, 1000.0, "compressor path limit", 1.0, "mm");
   checkRotaryAxes(m);
+  if (m.rotaryPlanner == RotaryPlanner::LinuxCnc && m.controller != ControllerKind::LinuxCNC)
+    throw InputError("machine \"" + m.name + "\": planner linuxcnc is LinuxCNC's own; controller " +
+                     controllerName(m.controller) + " plans in joint space (planner joint-space)");
 }
 
 void checkRotaryAxes(const MachineModel& m) {
@@ -260,6 +275,7 @@ static MachineModel machineFromJsonChecked(const std::string& source, const std:
   }
   m.toolTipProgrammed =
       m.hasRotaryAxes() && flag(root, "tool_tip_programmed", origin, m.controller == ControllerKind::LinuxCNC);
+  m.rotaryPlanner = rotaryPlanner(root, m, origin);
   if (root.contains("kinematics")) {
     const std::string said = root["kinematics"].is_string() ? root["kinematics"].get<std::string>() : "?";
     if (said != m.kinematicsName())
@@ -296,6 +312,7 @@ std::string machineToJson(const MachineModel& m) {
     root["kinematics"] = m.kinematicsName();
     root["tool_axis"] = {m.toolAxis.x(), m.toolAxis.y(), m.toolAxis.z()};
     root["tool_tip_programmed"] = m.toolTipProgrammed;
+    root["planner"] = rotaryPlannerName(m.rotaryPlanner);
     json axes = json::array();
     for (const RotaryAxis& a : m.rotaryAxes) axes.push_back(rotaryAxisJson(a));
     root["rotary_axes"] = axes;

@@ -18,6 +18,17 @@ enum class ControllerKind {
   Grbl,         // trapezoidal; junction deviation; arcs cut into chords
 };
 
+// How blocks that turn rotary axes are planned.
+enum class RotaryPlanner {
+  // Every axis of the machine (X Y Z after the kinematics, and the rotary axes) is followed along the block and
+  // held to its own limits: the 840D's TRAORI, and any machine whose controller plans in joint space.
+  JointSpace,
+  // LinuxCNC 2.9: the program's own coordinates (tool tip X Y Z, A B C linear) are planned with the [AXIS_*]
+  // limits, joint limits unchecked in coordinated motion; a block that turns a rotary axis is never blended or
+  // looked ahead through: it runs from rest to rest, overlapped with its neighbours by a parabolic blend.
+  LinuxCnc,
+};
+
 // A rotary axis of a 4- or 5-axis machine. Positions in degrees, as programmed; limits in deg/s, deg/s², deg/s³
 // (files hold deg/min, deg/s², deg/s³: the units of machine data sheets).
 struct RotaryAxis {
@@ -56,6 +67,7 @@ struct MachineModel {
   // X Y Z of the program are the tool tip in the workpiece frame without a word saying so (LinuxCNC with TCP
   // kinematics such as xyzac-trt-kins); the 840D's programs switch it with TRAORI / TRAFOOF.
   bool toolTipProgrammed = false;
+  RotaryPlanner rotaryPlanner = RotaryPlanner::JointSpace;  // how blocks that turn rotary axes are planned
 
   bool hasRotaryAxes() const { return !rotaryAxes.empty(); }
   // "table-table", "head-table", "head-head", "table" or "head" (4 axes), "" (3 axes).
@@ -76,6 +88,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& origin 
 std::string machineToJson(const MachineModel& machine);
 
 std::string controllerName(ControllerKind kind);
+std::string rotaryPlannerName(RotaryPlanner planner);  // "joint-space" or "linuxcnc", as in the JSON file
 
 // A machine by file path, or by name (NAME.json) in the folders given; InputError lists the names found.
 MachineModel loadMachine(const std::string& nameOrFile, const std::vector<std::string>& folders);

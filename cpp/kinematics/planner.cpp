@@ -16,8 +16,10 @@ constexpr double kTangentCosine = 1.0 - 1e-12;  // junctions straighter than thi
 // LinuxCNC 2.9 splits the acceleration on arcs and blends: 0.866·a normal, 0.5·a tangential (0.866² + 0.5² = 1).
 constexpr double kLinuxCncNormalShare = 0.866;
 constexpr double kLinuxCncTangentShare = 0.5;
-constexpr double kLinuxCncKinkRatio = 0.1;
-const double kLinuxCncReversal = std::cos(178.0 * M_PI / 180.0);  // ARC_BLEND_KINK_RATIO: a kink's share of the axis acceleration
+constexpr double kLinuxCncKinkRatio = 0.1;  // ARC_BLEND_KINK_RATIO: a kink's share of the axis acceleration
+constexpr double kLinuxCncGapCycles = 4.0;  // ARC_BLEND_GAP_CYCLES: a blend arc takes a shorter rest of the block before
+constexpr double kLinuxCncSegmentCycles = 1.02;  // TP_MIN_SEGMENT_CYCLES: blend pieces last this many cycles
+const double kLinuxCncReversal = std::cos(178.0 * M_PI / 180.0);  // reversals within 2° stop
 
 // Radius of the arc that rounds a corner within `tolerance` of the corner point, using at most half of each
 // block (the rule of 840D rounding, LinuxCNC blends and grbl's junction deviation).
@@ -44,21 +46,26 @@ Planner::Planner(const MachineModel& machine, Commit commit) : machine_(machine)
     jointAcceleration_[3 + i] = a.maxAcceleration;
     jointJerk_[3 + i] = a.maxJerk;
   }
+  inverseVelocity_ = jointVelocity_.cwiseInverse();  // an infinite limit costs nothing: 0
+  inverseRapid_ = jointRapid_.cwiseInverse();
+  inverseAcceleration_ = jointAcceleration_.cwiseInverse();
+  inverseJerk_ = jointJerk_.cwiseInverse();
 }
 
 namespace {
-// The most an axis allows along the path: min over axes of limit / |rate| (the index of that axis in `which`).
-double projected(const JointVector& limits, const JointVector& rate, int& which) {
-  double best = kInfinity;
+// The most an axis allows along the path: min over axes of limit / |rate|, from the limits' inverses (one
+// division, not five: it runs four times a piece); the index of that axis in `which`.
+double projected(const JointVector& inverseLimits, const JointVector& rate, int& which) {
+  double most = 0.0;
   which = -1;
   for (int i = 0; i < 5; ++i) {
     const double r = std::abs(rate[i]);
-    if (r > 1e-12 && limits[i] / r < best) {
-      best = limits[i] / r;
+    if (r > 1e-12 && r * inverseLimits[i] > most) {
+      most = r * inverseLimits[i];
       which = i;
     }
   }
-  return best;
+  return most > 0.0 ? 1.0 / most : kInfinity;
 }
 
 SpeedLimit axisLimit(const MachineModel& m, int joint) {
@@ -67,22 +74,22 @@ SpeedLimit axisLimit(const MachineModel& m, int joint) {
 }
 }  // namespace
 
-SpeedLimit Planner::slowestAxis(const JointVector& limits, const Eigen::Vector3d& tangent) const {
+SpeedLimit Planner::slowestAxis(const JointVector& inverseLimits, const Eigen::Vector3d& tangent) const {
   int which = -1;
   JointVector direction;
   direction << tangent, 0.0, 0.0;
-  projected(limits, direction, which);
+  projected(inverseLimits, direction, which);
   return which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
 }
 
 void Planner::jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
                           double& curvatureLimit) const {
   int which = -1, ignored = -1;
-  s.dynamics.acceleration = projected(jointAcceleration_, joint.rate, which);
+  s.dynamics.acceleration = projected(inverseAcceleration_, joint.rate, which);
   s.accelerationLimit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
-  s.dynamics.jerk = projected(jointJerk_, joint.rate, ignored);
-  velocity = projected(jointVelocity_, joint.rate, which);
-  rapidVelocity = projected(jointRapid_, joint.rate, ignored);
+  s.dynamics.jerk = projected(inverseJerk_, joint.rate, ignored);
+  velocity = projected(inverseVelocity_, joint.rate, which);
+  rapidVelocity = projected(inverseRapid_, joint.rate, ignored);
   s.limit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
   // Where an axis's rate changes along the path, at speed v it needs curvature·v² of acceleration.
   for (int i = 0; i < 5; ++i)
@@ -111,9 +118,16 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   double velocity, rapidVelocity, curvatureLimit = kInfinity;
   if (joint) {
     s.joint = std::make_shared<const JointMotion>(*joint);
-    // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
-    const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
-    if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+    if (m.rotaryPlanner == RotaryPlanner::LinuxCnc) {
+      // LinuxCNC's directions are the program's X Y Z; a turn of the rotary axes alone gets +X, as posemath
+      // gives a line of no length (pmCartLineInit), which its parabolic blends read.
+      const Eigen::Vector3d along = joint->rotaryOnly ? Eigen::Vector3d::UnitX() : Eigen::Vector3d(joint->rate.head<3>());
+      s.startTangent = s.endTangent = along.norm() > 1e-12 ? along.normalized() : Eigen::Vector3d::UnitX();
+    } else {
+      // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
+      const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
+      if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+    }
     jointLimits(s, *joint, velocity, rapidVelocity, curvatureLimit);
   } else if (block.isArc()) {
     // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
@@ -156,7 +170,7 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   } else if (s.cruise == curvatureLimit && !joint) {
     s.limit = SpeedLimit::Curvature;
   } else if (!joint) {  // the slowest axis along the block's start tangent
-    s.limit = slowestAxis(rapid ? jointRapid_ : jointVelocity_, s.startTangent);
+    s.limit = slowestAxis(rapid ? inverseRapid_ : inverseVelocity_, s.startTangent);
   }
   // Block-processing limit: a block lasts at least one interpolation cycle (an 840D compressed group: the
   // group does).
@@ -169,7 +183,20 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 }
 
 Planner::Junction Planner::junction(const Segment& before, const Segment& after) const {
-  return before.joint || after.joint ? jointJunction(before, after) : tipJunction(before, after);
+  // LinuxCNC never blends a rapid with a feed move: the segment before stops, at its full acceleration (tp.c
+  // handleModeChange).
+  if (machine_.controller == ControllerKind::LinuxCNC &&
+      (before.block.motion == Motion::Rapid) != (after.block.motion == Motion::Rapid))
+    return {};
+  if (!before.joint && !after.joint) return tipJunction(before, after);
+  if (machine_.rotaryPlanner == RotaryPlanner::LinuxCnc && before.source != after.source) {
+    // LinuxCNC makes neither a tangent junction nor a blend arc where a block turns a rotary axis, and its
+    // look-ahead stops there (tp.c: tcRotaryMotionCheck in tpSetupTangent and tpCheckBlendArcType).
+    Junction j;
+    j.rotaryStop = true;
+    return j;
+  }
+  return jointJunction(before, after);
 }
 
 // Between pieces of one block the axes' rates change smoothly (their curvature bounds the cruise); between
@@ -285,8 +312,7 @@ double Planner::linuxCncCorner(const Segment& before, const Segment& after, cons
   const double kink = limit * kLinuxCncKinkRatio / k;
   // No arc where the kink is faster, nor between blocks too short to last a servo cycle at the programmed
   // feed: the oracle shows LinuxCNC passing chains of such chords (G64 P… Q0) at the kink's speed.
-  const double cycleFeed = std::min(before.programmed, after.programmed) * m.interpolationCycle;
-  if (kink >= plan || std::min(before.block.length(), after.block.length()) < cycleFeed) {
+  if (kink >= plan) {
     j.parabolic = true;  // the blend stays parabolic: both blocks plan with half their acceleration
     return kink;
   }
@@ -312,6 +338,8 @@ double Planner::linuxCncKink(const Segment& before, const Segment& after, double
 // LinuxCNC's exact stop at a corner (G61): it rates the corner as a kink and takes a tenth of the
 // acceleration of both blocks for it (once per block), then stops there for one servo cycle.
 void Planner::linuxCncExactStop(Segment& before, Segment& after) const {
+  // Where a rotary axis turns no kink is rated, and the next block starts in the cycle this one stops in.
+  if (machine_.rotaryPlanner == RotaryPlanner::LinuxCnc && (before.joint || after.joint)) return;
   const double cosine = before.endTangent.dot(after.startTangent);
   if (cosine >= kTangentCosine) return;
   if (linuxCncKink(before, after, std::min(before.cruise, after.cruise)) < kLinuxCncKinkRatio) return;
@@ -331,6 +359,12 @@ void Planner::add(const Block& block, long source, const JointMotion* joint) {
     if (machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode == PathMode::ExactStop)
       linuxCncExactStop(pending_, segment);
     const Junction j = junction(pending_, segment);
+    if (j.rotaryStop && pending_.block.pathMode != PathMode::ExactStop) {
+      // The block before ends in a parabolic blend: half its acceleration (tc.c tcGetOverallMaxAccel).
+      if (!pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
+      pending_.parabolic = true;
+      segment.parabolicFromPrevious = true;
+    }
     pending_.dynamics.acceleration *= 1.0 - j.kinkShare;
     segment.dynamics.acceleration *= 1.0 - j.kinkShare;
     if (j.parabolic)
@@ -344,20 +378,30 @@ void Planner::add(const Block& block, long source, const JointMotion* joint) {
     pending_.junction = std::min(pending_.junction, pending_.cruise);
     segment.junction = std::min({j.speed, segment.cruise, pending_.cruise});
     if (j.trim > 0.0) {
-      // The arc takes the corner: both blocks end or start where it is tangent to them, and a block the
-      // arcs take whole is gone (LinuxCNC consumes it).
+      // The arc takes the corner: both blocks end or start where it is tangent to them. What is left of the
+      // block before lasts a servo cycle at least, or, shorter than the arc runs in ARC_BLEND_GAP_CYCLES,
+      // the arc takes it too (blendmath.c blendCheckConsume); the block after is timed once its end is known.
       pending_.length -= j.trim;
       segment.length -= j.trim;
+      segment.trimmed = true;
       Segment arc = blendArc(pending_, segment, j);
-      if (pending_.length > 1e-9) {
-        if (count_ == ring_.size()) commitOldest();
-        push(std::move(pending_));
+      const double cycle = machine_.interpolationCycle;
+      if (pending_.length < kLinuxCncGapCycles * cycle * j.speed && !pending_.parabolic) {
+        arc.length += pending_.length;
+        arc.block.start = pending_.block.end - (pending_.length + j.trim) * pending_.endTangent;
+        arc.cruise = std::min(j.speed, arc.length / (kLinuxCncSegmentCycles * cycle));
+        arc.junction = std::min(pending_.junction, arc.cruise);
+      } else {
+        lastsACycle(pending_);
+        arc.junction = std::min(arc.junction, pending_.cruise);
+        pushPending();
       }
       if (count_ == ring_.size()) commitOldest();
       push(std::move(arc));
     } else {
-      if (count_ == ring_.size()) commitOldest();
-      push(std::move(pending_));
+      if (pending_.trimmed) lastsACycle(pending_);
+      segment.junction = std::min(segment.junction, pending_.cruise);
+      pushPending();
     }
   }
   pending_ = std::move(segment);
@@ -374,11 +418,50 @@ Segment Planner::blendArc(const Segment& before, const Segment& after, const Jun
   arc.block.end = after.block.start + j.trim * after.startTangent;
   arc.startTangent = before.endTangent;
   arc.endTangent = after.startTangent;
+  arc.blendArc = true;
+  arc.programmedStart = before.block.start;
+  arc.programmedEnd = before.block.end;
   arc.dynamics = {j.arcAcceleration, kInfinity, false};
-  arc.cruise = std::min(j.speed, j.arcLength / machine_.interpolationCycle);
+  arc.cruise = std::min(j.speed, j.arcLength / (kLinuxCncSegmentCycles * machine_.interpolationCycle));
   arc.junction = std::min(j.speed, arc.cruise);
   arc.restAfter = 0.0;
   return arc;
+}
+
+// What blend arcs left of a block still lasts a servo cycle at least (tc.c tcClampVelocityByLength).
+void Planner::lastsACycle(Segment& s) const {
+  if (machine_.interpolationCycle > 0.0)
+    s.cruise = std::min(s.cruise, s.length / (kLinuxCncSegmentCycles * machine_.interpolationCycle));
+  s.junction = std::min(s.junction, s.cruise);
+}
+
+// The pending block's dynamics are final once its successor is known: its parabolic blend with the block
+// before (the newest in the ring, not committed yet) can be timed, then it joins the ring.
+void Planner::pushPending() {
+  if (pending_.parabolicFromPrevious && count_ > 0) overlapParabolic(at(count_ - 1), pending_);
+  if (count_ == ring_.size()) commitOldest();
+  push(std::move(pending_));
+}
+
+// LinuxCNC's parabolic blend between two blocks planned from rest to rest (tp.c tpComputeBlendVelocity, as the
+// oracle measured it): the next block starts once this one brakes below its blend speed, the speed either
+// would reach in the longer of their times to full speed, within the time to run half of the shorter, and,
+// under G64 P, the speed at which braking covers the tolerance across the corner. Both move together from
+// then on, so the next block starts blend / a before this one ends.
+void Planner::overlapParabolic(Segment& before, const Segment& after) const {
+  const double a1 = before.dynamics.acceleration, a2 = after.dynamics.acceleration;
+  const double v1 = std::min(std::sqrt(a1 * before.length), before.cruise);
+  const double v2 = std::min(std::sqrt(a2 * after.length), after.cruise);
+  if (!(v1 > 0.0 && v2 > 0.0)) return;
+  const double time = std::min({before.length / v1, after.length / v2, std::max(v1 / a1, v2 / a2)});
+  double blend = std::min(v1, time * a1);
+  if (before.block.pathMode == PathMode::Rounding && before.block.tolerance > 0.0) {
+    // cos of half the angle between the directions, taken as LinuxCNC's findIntersectionAngle takes it
+    const double dot = std::clamp(before.endTangent.dot(after.startTangent), -1.0, 1.0);
+    const double cosHalf = std::sqrt(0.5 * (1.0 - dot));
+    if (cosHalf > std::sin(1e-3)) blend = std::min(blend, 2.0 * std::sqrt(a1 * before.block.tolerance / cosHalf));
+  }
+  before.restAfter = -blend / a1;
 }
 
 Dynamics weakest(const Dynamics& a, const Dynamics& b) {
@@ -391,36 +474,36 @@ void Planner::push(Segment segment) {
   if (count_ == 0 && segment.position == 0.0) segment.entry = 0.0;  // the program starts from rest
   const size_t index = count_;
   at(count_++) = std::move(segment);
-  // Backward pass. A junction binds when its own limit is below what the machine could reach backwards
-  // from the next binding junction downstream (or from the end of the newest block, where it must be
-  // able to stop). A new block only moves the end further, so junctions stop binding from the back: each
-  // is dropped once, and a pass costs O(1) on average instead of a walk over the whole look-ahead.
+  // Backward pass. The junctions that may bind are kept in order, each one below what the machine could
+  // reach backwards from the next: a new junction drops those it dominates (it is slower than the machine can
+  // brake to from them), so a pass costs O(1) on average instead of a walk over the whole look-ahead. The stop
+  // at the end of the newest block is applied apart (plannedEntry): a junction it dominates now, behind a
+  // block too short to stop in, may bind once more blocks are known.
   const Segment& newest = at(index);
-  const double end = nextPosition_;
-  const bool newestBinds =
-      index > 0 && withinReach(newest.junction, 0.0, end - newest.position, newest.dynamics);
+  if (index == 0) return;
   while (!binding_.empty()) {
     const Segment& b = at(binding_.back() - committed_);
-    const double downstreamSpeed = newestBinds ? newest.junction : 0.0;
-    const double downstreamPosition = newestBinds ? newest.position : end;
-    if (withinReach(b.junction, downstreamSpeed, downstreamPosition - b.position, weakest(b.dynamics, newest.dynamics)))
+    if (withinReach(b.junction, newest.junction, newest.position - b.position, weakest(b.dynamics, newest.dynamics)))
       break;
     binding_.pop_back();
   }
-  if (newestBinds) binding_.push_back(committed_ + index);
+  binding_.push_back(committed_ + index);
 }
 
-// The planned entry of the block at ring index i (> 0): its junction's own limit if it binds, else what
-// the machine can reach backwards from the next binding junction (or the stop at the end).
+// The planned entry of the block at ring index i (> 0): its junction's own limit, or less where the machine
+// must brake for the next junction that binds downstream, or to stop at the end of the newest block.
 double Planner::plannedEntry(size_t i) {
   const long number = committed_ + static_cast<long>(i);
   while (!binding_.empty() && binding_.front() < number) binding_.pop_front();
   const Segment& s = at(i);
-  if (!binding_.empty() && binding_.front() == number) return s.junction;
-  const Segment& downstream = binding_.empty() ? at(count_ - 1) : at(binding_.front() - committed_);
-  const double speed = binding_.empty() ? 0.0 : downstream.junction;
-  const double position = binding_.empty() ? nextPosition_ : downstream.position;
-  return cappedReach(s.junction, speed, position - s.position, weakest(s.dynamics, downstream.dynamics));
+  const Segment& newest = at(count_ - 1);
+  double entry = s.junction;
+  if (!binding_.empty() && binding_.front() != number) {
+    const Segment& downstream = at(binding_.front() - committed_);
+    entry = cappedReach(entry, downstream.junction, downstream.position - s.position,
+                        weakest(s.dynamics, downstream.dynamics));
+  }
+  return cappedReach(entry, 0.0, nextPosition_ - s.position, weakest(s.dynamics, newest.dynamics));
 }
 
 void Planner::commitOldest() {
@@ -431,7 +514,10 @@ void Planner::commitOldest() {
   const double planned = hasNext ? plannedEntry(1) : 0.0;  // the machine stops at the end of the program
   const double cap = hasNext ? at(1).junction : 0.0;
   const double exit = cappedReach(planned, forwardSpeed_, end - forwardPosition_, forwardDynamics_);
-  const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12);
+  // LinuxCNC's trapezoids brake block by block where the braking binds: a run that crossed blocks of
+  // different accelerations (blend arcs brake at half) would brake at the weakest of them all the way.
+  const bool braking = machine_.controller == ControllerKind::LinuxCNC && exit >= planned * (1.0 - 1e-12);
+  const bool pinned = !hasNext || exit >= cap * (1.0 - 1e-12) || braking;
   if (pinned) {
     forwardSpeed_ = exit;
     forwardPosition_ = end;
@@ -451,8 +537,8 @@ void Planner::finish() {
     const bool parabolicEnd =
         machine_.controller == ControllerKind::LinuxCNC && pending_.block.pathMode != PathMode::ExactStop;
     if (parabolicEnd && !pending_.parabolic) pending_.dynamics.acceleration *= kLinuxCncTangentShare;
-    if (count_ == ring_.size()) commitOldest();
-    push(std::move(pending_));
+    if (pending_.trimmed) lastsACycle(pending_);
+    pushPending();
     havePending_ = false;
   }
   while (count_ > 0) commitOldest();

@@ -34,7 +34,15 @@ struct Segment {
   double entry = 0.0;       // entry speed, final once the block before it is committed
   bool kinkScaled = false;  // LinuxCNC G61: the acceleration already lost its kink share
   bool parabolic = false;   // LinuxCNC: a parabolic blend at one of its ends halved its acceleration
-  double restAfter = 0.0;   // s at rest after the block (LinuxCNC: a servo cycle at each exact stop)
+  // s after the block before the next starts: at rest (LinuxCNC: a servo cycle at each exact stop), or, when
+  // negative, the time the next block starts before this one ends (LinuxCNC's parabolic blend)
+  double restAfter = 0.0;
+  bool parabolicFromPrevious = false;  // LinuxCNC: overlapped with the block before it by a parabolic blend
+  bool trimmed = false;     // LinuxCNC: a blend arc took the start of the block
+  // LinuxCNC's blend arc, a segment of the block before the corner: `block` holds the arc's chord (traces),
+  // these the block's programmed ends (reports).
+  bool blendArc = false;
+  Eigen::Vector3d programmedStart = Eigen::Vector3d::Zero(), programmedEnd = Eigen::Vector3d::Zero();
   Eigen::Vector3d startTangent, endTangent;
   // 4- and 5-axis blocks: how the machine's axes move along it; none for a 3-axis block (shared, not held by
   // value: the segment is copied along the planner, and a 3-axis program must not pay for the 5-axis data).
@@ -75,12 +83,15 @@ private:
     double trim = 0.0, arcLength = 0.0, arcAcceleration = 0.0;
     double kinkShare = 0.0;  // LinuxCNC tangent kink: the share of acceleration both blocks give up for it
     bool parabolic = false;  // LinuxCNC: no arc could be made; a parabolic blend halves both accelerations
+    // LinuxCNC: a block turning a rotary axis meets the other: both run from rest to rest, the block before
+    // at half its acceleration, the next one starting as it brakes (G64; G61 stops at full acceleration)
+    bool rotaryStop = false;
   };
   Segment prepare(const Block& block, long source, const JointMotion* joint) const;
   // Limits of a piece of a 4- or 5-axis block from each axis's rate along the path (five_axis_motion.hpp).
   void jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
                    double& curvatureLimit) const;
-  SpeedLimit slowestAxis(const JointVector& limits, const Eigen::Vector3d& tangent) const;
+  SpeedLimit slowestAxis(const JointVector& inverseLimits, const Eigen::Vector3d& tangent) const;
   Junction junction(const Segment& before, const Segment& after) const;
   Junction tipJunction(const Segment& before, const Segment& after) const;
   Junction jointJunction(const Segment& before, const Segment& after) const;
@@ -89,6 +100,9 @@ private:
   double linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
                         double limit, Junction& j) const;
   void push(Segment segment);
+  void overlapParabolic(Segment& before, const Segment& after) const;
+  void pushPending();
+  void lastsACycle(Segment& s) const;
   Segment blendArc(const Segment& before, const Segment& after, const Junction& j) const;
   void commitOldest();
   double plannedEntry(size_t i);
@@ -96,6 +110,7 @@ private:
 
   const MachineModel& machine_;
   JointVector jointVelocity_, jointRapid_, jointAcceleration_, jointJerk_;  // X Y Z and the rotary axes
+  JointVector inverseVelocity_, inverseRapid_, inverseAcceleration_, inverseJerk_;  // 1 / each
   Commit commit_;
   std::vector<Segment> ring_;
   size_t head_ = 0, count_ = 0;

@@ -47,7 +47,7 @@ public:
       current_ = BlockResult{};
       current_.line = s.block.line;
       current_.motion = s.block.motion;
-      current_.start = s.block.start;
+      current_.start = s.blendArc ? s.programmedStart : s.block.start;
       current_.center = s.block.center;
       current_.normal = s.block.normal;
       current_.sweep = s.block.isArc() ? s.block.sweep : 0.0;
@@ -60,7 +60,7 @@ public:
         current_.machineStart = s.joint->start.head<3>();
         current_.rotaryStart = s.joint->start.tail<2>();
       } else {
-        current_.machineStart = s.block.start;
+        fixedAngles(s.block, current_.start, current_.machineStart, current_.rotaryStart);
       }
       naive_ = 0.0;
     }
@@ -71,12 +71,12 @@ public:
     }
     if (mixedLimits_) limitTimes_[label] += p.time;
     result_.summary.limitTime[label] += p.time;
-    current_.end = s.block.end;
+    current_.end = s.blendArc ? s.programmedEnd : s.block.end;  // the block's end, not its blend arc's
     if (s.joint) {
       current_.machineEnd = s.joint->end.head<3>();
       current_.rotaryEnd = s.joint->end.tail<2>();
     } else {
-      current_.machineEnd = s.block.end;
+      fixedAngles(s.block, current_.end, current_.machineEnd, current_.rotaryEnd);
     }
     current_.length += s.joint ? s.joint->tipLength : s.length;
     current_.exitFeed = p.exit;
@@ -165,6 +165,21 @@ private:
   bool mixedLimits_ = false;
   bool open_ = false;
 
+  // A block planned as a 3-axis one at `point` of the program: X Y Z of the machine, and on a 4- or 5-axis
+  // program (LinuxCNC's planner: the rotary axes stay where the program left them) the angles, the machine's
+  // X Y Z where the program gives the tip, and the tip (`point` becomes it) where it gives the machine's axes.
+  void fixedAngles(const Block& b, Eigen::Vector3d& point, Eigen::Vector3d& linear, Eigen::Vector2d& rotary) const {
+    linear = point;
+    if (!b.rotary || !machine_.hasRotaryAxes()) return;
+    RotaryAngles angles{0.0, 0.0};
+    for (size_t i = 0; i < machine_.rotaryAxes.size(); ++i) angles[i] = b.rotaryEnd[machine_.rotaryAxes[i].name - 'A'];
+    rotary = {angles[0], angles[1]};
+    if (b.toolTip || machine_.toolTipProgrammed)
+      linear = linearAxesFor(machine_, point, angles);
+    else
+      point = forwardKinematics(machine_, {linear, angles}).tip;
+  }
+
   // What held a piece's speed: what set its cruise if it reached it, else the axis whose acceleration bounds it.
   SpeedLimit limitOf(const detail::Segment& s, const detail::BlockTiming& p) const {
     if (p.peak >= 0.95 * s.cruise) return s.limit;
@@ -189,7 +204,8 @@ private:
 template <class Sink>
 void feed(detail::Planner& planner, const MachineModel& machine, const Block& block, long source,
           FiveAxisCutter& cutter, Sink&&) {
-  if (block.rotary) {
+  // LinuxCNC plans a block that leaves the rotary axes where they are as a 3-axis block of the program.
+  if (block.rotary && (machine.rotaryPlanner != RotaryPlanner::LinuxCnc || cutter.turns(block))) {
     cutter.cut(block, [&](const Block& piece, const JointMotion& joint) { planner.add(piece, source, &joint); });
     return;
   }

@@ -3,85 +3,18 @@
 #include "common/error.hpp"
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
+#include "roughing/triangle_grid.hpp"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace hsm::roughing {
 
 namespace {
 constexpr long kMaxPositions = 2000000;  // about 1 ms each on the impeller: bounded work
-
-// Triangles bucketed in a uniform grid of cubes, for the ones near a tool position.
-class TriangleGrid {
-public:
-  TriangleGrid(const geometry::TriangleMesh& mesh, double cell) : mesh_(mesh), cell_(cell) {
-    centres_.reserve(mesh.triangles.size());
-    radii_.reserve(mesh.triangles.size());
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-      Eigen::AlignedBox3d box;
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) {
-        box.extend(mesh.vertices[mesh.triangles[t][k]]);
-        centre += mesh.vertices[mesh.triangles[t][k]] / 3.0;
-      }
-      double radius = 0.0;
-      for (int k = 0; k < 3; ++k) radius = std::max(radius, (mesh.vertices[mesh.triangles[t][k]] - centre).norm());
-      centres_.push_back(centre);
-      radii_.push_back(radius);
-      forCells(box, [&](long key, const Eigen::Vector3d&) { cells_[key].push_back(static_cast<int>(t)); });
-    }
-  }
-
-  // Every triangle within `radius` of the segment a–b (by its cell, then by its bounding sphere), each once
-  // (`seen` is scratch space of the mesh's size).
-  template <class Visit>
-  void near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius, std::vector<int>& seen, int stamp,
-            Visit&& visit) const {
-    Eigen::AlignedBox3d box(a.cwiseMin(b), a.cwiseMax(b));
-    box.min().array() -= radius;
-    box.max().array() += radius;
-    const double cellReach = radius + 0.5 * std::sqrt(3.0) * cell_;
-    forCells(box, [&](long key, const Eigen::Vector3d& centre) {
-      if (segmentDistance(centre, a, b) > cellReach) return;
-      const auto it = cells_.find(key);
-      if (it == cells_.end()) return;
-      for (int t : it->second)
-        if (seen[t] != stamp) {
-          seen[t] = stamp;
-          if (segmentDistance(centres_[t], a, b) <= radius + radii_[t]) visit(t);
-        }
-    });
-  }
-
-private:
-  static double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d d = b - a;
-    const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
-    return (a + t * d - p).norm();
-  }
-  template <class Each>
-  void forCells(const Eigen::AlignedBox3d& box, Each&& each) const {
-    const Eigen::Vector3i lo = (box.min() / cell_).array().floor().cast<int>();
-    const Eigen::Vector3i hi = (box.max() / cell_).array().floor().cast<int>();
-    for (int i = lo.x(); i <= hi.x(); ++i)
-      for (int j = lo.y(); j <= hi.y(); ++j)
-        for (int k = lo.z(); k <= hi.z(); ++k) each(key(i, j, k), Eigen::Vector3d((i + 0.5) * cell_, (j + 0.5) * cell_, (k + 0.5) * cell_));
-  }
-  static long key(int i, int j, int k) {
-    return (static_cast<long>(i) & 0x1FFFFF) | ((static_cast<long>(j) & 0x1FFFFF) << 21) |
-           ((static_cast<long>(k) & 0x1FFFFF) << 42);
-  }
-  const geometry::TriangleMesh& mesh_;
-  double cell_;
-  std::unordered_map<long, std::vector<int>> cells_;
-  std::vector<Eigen::Vector3d> centres_;  // per triangle: the centroid and the radius that holds it
-  std::vector<double> radii_;
-};
 
 // Plan distance (across the axis) from the axis point to a convex polygon of the plane: 0 when it contains it.
 // A polygon seen edge-on (a wall along the axis) has no inside: only its edges count.
@@ -216,27 +149,32 @@ ClearanceReport ClearanceChecker::check(const std::vector<ToolMove>& moves, cons
   }
   const geometry::TriangleMesh& mesh = impl_->mesh;
   const double deflection = impl_->deflection;
-  const double r = cutter.radius(), length = cutter.stickOut;
+  // The cutter is its core — a cylinder of radius R − r standing r above the tip, up to the stick-out — grown
+  // by a ball of its corner radius r (a torus end mill; a ball for r = R, a flat end for r = 0): the distance
+  // to it is the distance to the core less r, exactly.
+  const double corner = cutter.corner(), r = cutter.radius() - corner, length = cutter.stickOut - corner;
   const double reach = std::max(limit, 0.0) + 2.0;  // triangles farther than this from the tool do not matter
   std::vector<int> seen(mesh.triangles.size(), -1);
   int stamp = 0;
   ClearanceReport report;
   report.minimum = std::numeric_limits<double>::infinity();
+  report.moveMinimum.assign(moves.size(), reach);
   std::vector<Eigen::Vector3d> local(3);
   auto checkAt = [&](const Eigen::Vector3d& tip, const Eigen::Vector3d& axis, int move) {
     const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
     double least = reach;
-    impl_->grid.near(tip - axis * reach, tip + axis * length, r + reach, seen, stamp++, [&](int t) {
+    impl_->grid.near(tip - axis * reach, tip + axis * cutter.stickOut, cutter.radius() + reach, seen, stamp++, [&](int t) {
       for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3d d = mesh.vertices[mesh.triangles[t][k]] - tip;
-        local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d));
+        local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d) - corner);  // from the core's bottom
       }
       // Quick rejections: wholly above the stick-out, or farther across than the reach.
       if (std::min({local[0].z(), local[1].z(), local[2].z()}) > length) return;
-      if (std::max({local[0].z(), local[1].z(), local[2].z()}) < -least) return;
-      least = std::min(least, toolDistance(local, r, length));
+      if (std::max({local[0].z(), local[1].z(), local[2].z()}) < -least - corner) return;
+      least = std::min(least, toolDistance(local, r, length) - corner);
     });
     least -= deflection;
+    report.moveMinimum[move] = std::min(report.moveMinimum[move], least);
     ++report.positions;
     if (least < limit) ++report.tooClose;
     if (least < report.minimum) {

@@ -1,12 +1,12 @@
 // An independent clearance check of a roughing toolpath against the finished part: how close the tool comes,
 // everywhere along the moves, measured on the part's own triangles (not on the sweep's shadows and offsets).
 //
-// The tool is taken as a cylinder of the cutter's radius from its tip up the axis over the stick-out: it holds
-// a torus, ball or flat cutter of that radius, so the check errs on the safe side by at most the corner's
-// (0.29 mm for a corner radius of 1 where a floor and a wall meet under the corner). The distance from it to a
-// triangle, exact: the triangle is cut at the tip's plane and at the stick-out; the part between is as far as
-// its plan distance to the axis less the radius; the part below the tip as far as its nearest point to the
-// tool's bottom disk (a convex problem: the plane's foot if inside the polygon, else along its edges).
+// The tool is the cutter as it is, up its axis over the stick-out: a torus end mill (a ball, a flat end) is the
+// Minkowski sum of its core — a cylinder of radius R − r from r above the tip — and a ball of its corner
+// radius r, so its distance to a triangle is the core's less r, exactly. The distance from the core to a
+// triangle, exact: the triangle is cut at the core's bottom plane and at the stick-out; the part between is
+// as far as its plan distance to the axis less the core's radius; the part below as far as its nearest point
+// to the core's bottom disk (a convex problem: the plane's foot if inside the polygon, else along its edges).
 // The part's triangles are within `deflection` of its surfaces: the report subtracts it.
 #pragma once
 
@@ -25,6 +25,8 @@ struct ClearanceReport {
   long tooClose = 0;              // positions closer than the limit asked
   int worstMove = -1;             // index of the move where the least distance is
   Eigen::Vector3d worstTip = Eigen::Vector3d::Zero();
+  // Per move, the least distance along it (capped at the limit + 2 mm: farther triangles are not looked at).
+  std::vector<double> moveMinimum;
 };
 
 // The part's triangles (within `deflection`) in a grid, built once for any number of toolpaths.

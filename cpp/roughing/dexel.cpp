@@ -118,6 +118,15 @@ void TriDexel::rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, 
   j0 = first(box.min()[v], v, 1), j1 = last(box.max()[v], v, 1, n_[k][1]);
 }
 
+bool TriDexel::inside(const Eigen::Vector3d& p) const {
+  const int i = static_cast<int>(std::lround((p.x() - low_.x() - jitter_[2][0]) / h_));
+  const int j = static_cast<int>(std::lround((p.y() - low_.y() - jitter_[2][1]) / h_));
+  if (i < 0 || j < 0 || i >= n_[2][0] || j >= n_[2][1]) return false;
+  for (const Interval& s : at(2, i, j))
+    if (p.z() >= s.from && p.z() < s.to) return true;
+  return false;
+}
+
 void TriDexel::fill(const geometry::TriangleMesh& mesh, int threads) {
   // Bands of rows filled side by side; each ray sees the triangles in the mesh's order, as on one thread.
   struct Band {

@@ -68,6 +68,8 @@ public:
   // intervals), its top and bottom, and its sides where the neighbouring column has no material. Its volume
   // is the columns' (Σ length × (stride·resolution)²).
   geometry::TriangleMesh blocks(int stride) const;
+  // Whether p lies in the material of the Z ray nearest it (false outside the grid).
+  bool inside(const Eigen::Vector3d& p) const;
   // The index range [first, last] of rays of direction k whose (u, v) lies in the box's projection.
   void rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const;
 

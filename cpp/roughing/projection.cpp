@@ -18,6 +18,13 @@ namespace hsm::roughing {
 
 namespace {
 
+// Two straight lines at an angle θ that meet L away: a point at distance D = L·sin θ from one, on the other,
+// is L·θ away measured along the arc; x / asin x (x = D / L) is the scale that holds out to D.
+double chordFactor(double x) {
+  x = std::min(0.99, x);
+  return x > 1e-9 ? x / std::asin(x) : 1.0;
+}
+
 cl::IntPoint toInt(double x, double y) {
   return {static_cast<cl::cInt>(std::llround(x * kScale)), static_cast<cl::cInt>(std::llround(y * kScale))};
 }
@@ -79,7 +86,14 @@ constexpr double kBendSpan = 2.0 * M_PI / 180.0;
 class CylinderProjection : public Projection {
 public:
   explicit CylinderProjection(const Angles& angles) : angles_(angles) {}
-  void setLevel(double tipHeight, const geometry::TriangleMesh&) override { r_ = tipHeight; }
+  void setLevel(double tipHeight, const geometry::TriangleMesh& slice) override {
+    r_ = tipHeight;
+    largest_ = smallest_ = 1.0;
+    for (const Eigen::Vector3d& p : slice.vertices) {
+      const double scale = height(p) / r_;
+      largest_ = std::max(largest_, scale), smallest_ = std::min(smallest_, scale);
+    }
+  }
   double height(const Eigen::Vector3d& p) const override { return angles_.radial(p).norm(); }
   cl::IntPoint plane(const Eigen::Vector3d& p) const override { return toInt(r_ * angles_.angle(p), angles_.along(p)); }
   Eigen::Vector3d point(const cl::IntPoint& q, double h) const override {
@@ -96,10 +110,19 @@ public:
     return std::abs(angles_.angle(a) - angles_.angle(b)) > kBendSpan;
   }
   bool skip(const Eigen::Vector3d (&p)[3]) const override { return angles_.span(p) >= M_PI; }
+  // Round the axis a flat millimetre at the level's radius is ρ/r true millimetres at radius ρ along the arc;
+  // across to a radial tool axis Δθ away the distance is ρ·sin Δθ, shorter: out to the reach, the scale
+  // that holds at its end (x / asin x of the reach over ρ).
+  Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
+    const double rho = height(p);
+    return {rho / r_ * chordFactor(reach_ / std::max(rho, 1e-6)), 1.0};
+  }
+  double largestScale() const override { return largest_; }
+  double smallestScale() const override { return smallest_; }
 
 private:
   Angles angles_;
-  double r_ = 1.0;
+  double r_ = 1.0, largest_ = 1.0, smallest_ = 1.0;
 };
 
 class RevolutionProjection : public Projection {
@@ -178,7 +201,18 @@ public:
   Eigen::Vector2d scalesAt(const Eigen::Vector3d& p) const override {
     const auto place = placeOf(p);
     if (!place) return {1.0, 1.0};
-    return {meridian_->plane(p).x() / rhoRef_, meridian_->stretch(place->s, place->d)};
+    // The normal lines converge on the axis round it and on the meridian's centre of curvature along it: over
+    // the sweep's reach a point's distance from another line is the sine of their angle, not the angle.
+    const double rho = std::max(meridian_->plane(p).x(), 1e-6), h = 1e-2;
+    const double stretch = meridian_->stretch(place->s, place->d);
+    const double bend = std::abs(meridian_->stretch(place->s, place->d + h) - meridian_->stretch(place->s, place->d - h)) / (2.0 * h);
+    // And a point b round the axis and a along the meridian from a tool's line (a² + b² = D²) is
+    // a² + b²·(1 − a·t/ρ) squared away where the line stands a·t nearer the axis (t: the meridian's radial
+    // share): at worst D²·(1 − 2·D·t/(3√3·ρ)), a scale taken both ways.
+    const double t = std::abs(meridian_->normal(place->s).y());
+    const double near = std::sqrt(std::max(0.01, 1.0 - 2.0 * reach_ * t / (3.0 * std::sqrt(3.0) * rho)));
+    return near * Eigen::Vector2d(rho / rhoRef_ * chordFactor(reach_ / rho),
+                                  stretch * chordFactor(reach_ * bend / std::max(stretch, 1e-6)));
   }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }

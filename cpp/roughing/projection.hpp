@@ -63,6 +63,12 @@ public:
   // How far (1/mm) the level's tip surface curves up towards the tool: a disk of radius r on it has its rim
   // r²·concavity/2 nearer the surface than its centre.
   virtual double concavity() const { return 0.0; }
+  // The farthest (true mm) the sweep keeps the part from the tool's axis: scales that hold only nearby (the
+  // angle round a cylinder's axis against its sine) are taken on the safe side over that distance.
+  void setReach(double mm) { reach_ = mm; }
+
+protected:
+  double reach_ = 0.0;
 };
 
 // The projection of a partition's slicing surfaces. InputError for surfaces the sweep does not lay flat (a

@@ -6,6 +6,7 @@
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
 #include "roughing/dexel.hpp"
+#include "roughing/triangle_grid.hpp"
 
 #include <Eigen/Geometry>
 
@@ -420,35 +421,44 @@ std::array<geometry::TriangleMesh, 2> meshesOf(const TopoDS_Shape& stock, const 
 
 class Simulation {
 public:
-  Simulation(const Cutter& cutter, const TopoDS_Shape& stock, const TopoDS_Shape& part, const RemovalSettings& settings)
-      : Simulation(cutter, settings, meshesOf(stock, part, deflection(settings.resolution), threadCount(settings.threads))) {}
+  Simulation(const TopoDS_Shape& stock, const TopoDS_Shape& part, const RemovalSettings& settings)
+      : Simulation(settings, meshesOf(stock, part, deflection(settings.resolution), threadCount(settings.threads))) {}
 
   ~Simulation() {  // a few million rays to free: side by side too
     for (TriDexel* model : {&material_, &part_, &uncut_}) model->release(threads_);
   }
 
-  RemovalResult run(const std::vector<ToolMove>& moves) {
+  RemovalResult run(const std::vector<ToolRun>& runs) {
     RemovalResult r;
     r.resolution = settings_.resolution;
     r.rays = material_.rays();
     r.volumeToRemove = material_.volume();
     const std::vector<std::vector<Sample>> samples = samplesOf(partMesh_, part_, material_, threads_);
     const double h = settings_.resolution;
-    const std::vector<Position> positions = positionsOf(moves, shape_, sampleStep(cutter_, h));
-    r.positions = static_cast<long>(positions.size());
-    for (size_t i = 1; i < moves.size(); ++i) {
-      const double length = (moves[i].tip - moves[i - 1].tip).norm();
-      r.pathLength += length;
-      if (moves[i].kind != MoveKind::Rapid) r.feedLength += length;
+    std::vector<std::vector<Position>> positionsOfRuns;
+    long total = 0;
+    int offset = 0;  // the runs' moves count on through all of them
+    for (const ToolRun& run : runs) {
+      positionsOfRuns.push_back(positionsOf(run.moves, shapeOf(run.cutter), sampleStep(run.cutter, h)));
+      for (Position& p : positionsOfRuns.back()) p.move += offset;
+      offset += static_cast<int>(run.moves.size());
+      total += static_cast<long>(positionsOfRuns.back().size());
+      if (total > kMaxPositions)
+        throw InputError("material removal: the moves need more than " + std::to_string(kMaxPositions) +
+                         " tool positions at this resolution: use a coarser resolution");
+      for (size_t i = 1; i < run.moves.size(); ++i) {
+        const double length = (run.moves[i].tip - run.moves[i - 1].tip).norm();
+        r.pathLength += length;
+        if (run.moves[i].kind != MoveKind::Rapid) r.feedLength += length;
+      }
     }
+    r.positions = total;
     ProgressReporter report(settings_.progress, "material removal");
-    const std::vector<size_t> ends = batchEnds(positions);
-    for (size_t first = 0; first < ends.size();) {
-      const size_t start = first ? ends[first - 1] : 0;
-      size_t last = first + 1;
-      while (last < ends.size() && ends[last] - start <= kRoundPositions) ++last;
-      cutRound(positions, ends, first, last, r, report);
-      first = last;
+    long before = 0;  // positions of the runs done
+    for (size_t k = 0; k < runs.size(); ++k) {
+      shape_ = shapeOf(runs[k].cutter), cutter_ = runs[k].cutter;
+      cutRun(positionsOfRuns[k], r, [&](size_t done) { report(double(before + long(done)) / double(std::max(1L, total))); });
+      before += static_cast<long>(positionsOfRuns[k].size());
     }
     r.remainingVolume = material_.volume();
     r.remainingShare = r.volumeToRemove > 0.0 ? 100.0 * r.remainingVolume / r.volumeToRemove : 0.0;
@@ -460,12 +470,27 @@ public:
     r.beyondAllowanceVolume = std::max(0.0, r.remainingVolume - layer);
     r.beyondAllowanceShare = r.volumeToRemove > 0.0 ? 100.0 * r.beyondAllowanceVolume / r.volumeToRemove : 0.0;
     if (settings_.stockMeshStride > 0) r.stockMesh = material_.blocks(settings_.stockMeshStride);
+    if (settings_.restSpacing > 0.0) r.rest = restOf();
     return r;
   }
 
 private:
-  Simulation(const Cutter& cutter, const RemovalSettings& settings, std::array<geometry::TriangleMesh, 2>&& meshes)
-      : settings_(settings), shape_(shapeOf(cutter)), cutter_(cutter), threads_(threadCount(settings.threads)),
+  // One tool's positions through the model, in rounds of batches (a batch ends where the stick-out is measured
+  // next); `report` is told how many of them are done.
+  template <class Report>
+  void cutRun(const std::vector<Position>& positions, RemovalResult& r, Report&& report) {
+    const std::vector<size_t> ends = batchEnds(positions);
+    for (size_t first = 0; first < ends.size();) {
+      const size_t start = first ? ends[first - 1] : 0;
+      size_t last = first + 1;
+      while (last < ends.size() && ends[last] - start <= kRoundPositions) ++last;
+      cutRound(positions, ends, first, last, r, report);
+      first = last;
+    }
+  }
+
+  Simulation(const RemovalSettings& settings, std::array<geometry::TriangleMesh, 2>&& meshes)
+      : settings_(settings), threads_(threadCount(settings.threads)),
         lanes_(std::max(kLanes, 2 * threads_)),
         stockMesh_(std::move(meshes[0])), partMesh_(std::move(meshes[1])), stockBox_(stockMesh_.bounds()),
         material_(stockBox_, settings.resolution, kMaxRays / 2), part_(stockBox_, settings.resolution, kMaxRays / 2),
@@ -475,6 +500,32 @@ private:
     part_.fill(partMesh_, threads_);
     material_.subtract(part_, threads_);
     uncut_.assign(part_, threads_);
+  }
+
+  // The stock left farther from the part than the allowance and half a spacing, at points of every
+  // stride-th Z ray each way, `stride` resolutions apart along it.
+  RestStock restOf() const {
+    constexpr long kMaxRestPoints = 5'000'000;
+    const int stride = std::max(1, static_cast<int>(std::lround(settings_.restSpacing / material_.resolution())));
+    RestStock rest;
+    rest.spacing = stride * material_.resolution();
+    const TriangleGrid grid(partMesh_, 2.0);
+    std::vector<int> seen(partMesh_.triangles.size(), -1);
+    int stamp = 0;
+    const double keep = settings_.allowance + 0.5 * rest.spacing;
+    for (int j = stride / 2; j < material_.count(2, 1); j += stride)
+      for (int i = stride / 2; i < material_.count(2, 0); i += stride)
+        for (const Interval& s : material_.at(2, i, j))
+          for (double z = s.from + 0.5 * rest.spacing; z < s.to; z += rest.spacing) {
+            Eigen::Vector3d p = material_.origin(2, i, j);
+            p.z() = z;
+            if (distanceToMesh(grid, partMesh_, p, keep, seen, stamp++) < keep) continue;
+            rest.points.push_back(p);
+            if (static_cast<long>(rest.points.size()) > kMaxRestPoints)
+              throw InputError("material removal: more than " + std::to_string(kMaxRestPoints) + " points of stock left " +
+                               "at a rest spacing of " + number(rest.spacing) + " mm: use a larger spacing");
+          }
+    return rest;
   }
 
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
@@ -518,9 +569,10 @@ private:
   }
 
   // Batches [first, last) of the positions through the model, each lane on its rows, then the chips, gouges,
-  // rapid faults and stick-outs added up in the positions' order.
+  // rapid faults and stick-outs added up in the positions' order; `report` told the positions done.
+  template <class Report>
   void cutRound(const std::vector<Position>& positions, const std::vector<size_t>& ends, size_t first, size_t last,
-                RemovalResult& r, ProgressReporter& report) {
+                RemovalResult& r, Report& report) {
     const size_t start = first ? ends[first - 1] : 0, n = ends[last - 1] - start;
     std::vector<Tally> tallies(static_cast<size_t>(lanes_));
     for (Tally& t : tallies) t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
@@ -532,7 +584,7 @@ private:
           cutBatch(positions, from, to, lane, t, start);
           t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane);
         },
-        [&](long done) { report(double(ends[first + done - 1]) / double(positions.size())); });
+        [&](long done) { report(ends[first + done - 1]); });
     const double cell = material_.resolution() * material_.resolution();
     for (size_t p = 0; p < n; ++p) {
       double volume = 0.0, gouge = 0.0;
@@ -740,7 +792,7 @@ private:
   }
 
   const RemovalSettings& settings_;
-  Shape shape_;
+  Shape shape_;  // the cutter of the run going on
   Cutter cutter_;
   int threads_ = 1;
   int lanes_ = 1;  // of rows each, taken by the threads in turn
@@ -788,10 +840,20 @@ std::vector<ToolMove> feedThroughStock(const std::vector<ToolMove>& moves, const
 }
 
 RapidsMended keepRapidsOutOfStock(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
-                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin) {
+                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin,
+                                  const std::vector<ToolRun>& before) {
   RemovalSettings quick = settings;
   quick.stockMeshStride = 0;
-  const RemovalResult r = simulateRemoval(moves, cutter, stock, part, quick);
+  quick.restSpacing = 0.0;
+  std::vector<ToolRun> runs = before;
+  runs.push_back({moves, cutter});
+  RemovalResult r = simulateRemoval(runs, stock, part, quick);
+  int offset = 0;
+  for (const ToolRun& run : before) offset += static_cast<int>(run.moves.size());
+  std::vector<RapidFault> own;  // the faults of these moves, numbered in them
+  for (RapidFault f : r.rapidFaults)
+    if (f.move >= offset) f.move -= offset, own.push_back(f);
+  r.rapidFaults = std::move(own);
   // The first position that cut may be a sampling step past where the tool met the stock; and the stock's
   // skin is known to a ray spacing.
   const double skin = sampleStep(cutter, settings.resolution) + std::sqrt(2.0) * settings.resolution;
@@ -800,7 +862,12 @@ RapidsMended keepRapidsOutOfStock(const std::vector<ToolMove>& moves, const Cutt
 
 RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
                               const TopoDS_Shape& part, const RemovalSettings& settings) {
-  checkCutter(cutter);
+  return simulateRemoval(std::vector<ToolRun>{{moves, cutter}}, stock, part, settings);
+}
+
+RemovalResult simulateRemoval(const std::vector<ToolRun>& runs, const TopoDS_Shape& stock, const TopoDS_Shape& part,
+                              const RemovalSettings& settings) {
+  for (const ToolRun& run : runs) checkCutter(run.cutter);
   if (!(settings.resolution >= 0.005 && settings.resolution <= 50.0))  // before anything is meshed at it
     throw InputError("material-removal resolution " + number(settings.resolution) +
                      " mm is outside [0.005, 50] mm (default 0.2)");
@@ -816,10 +883,14 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
                      " is outside [0, 100] rays (0: no mesh)");
   checkThreads(settings.threads, "material removal");
   if (stock.IsNull()) throw InputError("material removal: no stock");
-  for (const ToolMove& m : moves)
-    if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))
-      throw InputError("material removal: a move has a tip or an axis that is not a finite point and direction");
-  return Simulation(cutter, stock, part, settings).run(moves);
+  if (settings.restSpacing != 0.0 && !(settings.restSpacing >= settings.resolution && settings.restSpacing <= 20.0))
+    throw InputError("material removal: rest spacing " + number(settings.restSpacing) + " mm is outside [" +
+                     number(settings.resolution) + " (the resolution), 20] mm, or 0 for no rest stock");
+  for (const ToolRun& run : runs)
+    for (const ToolMove& m : run.moves)
+      if (!m.tip.allFinite() || !m.axis.allFinite() || !(m.axis.norm() > 1e-9))
+        throw InputError("material removal: a move has a tip or an axis that is not a finite point and direction");
+  return Simulation(stock, part, settings).run(runs);
 }
 
 }  // namespace hsm::roughing

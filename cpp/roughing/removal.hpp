@@ -54,6 +54,7 @@ struct RemovalSettings {
   double stickOutSpacing = 5.0;  // mm of path between stick-out measures
   double allowance = 0.5;        // mm of stock meant to stay on the part: V_r is also given without it
   int stockMeshStride = 0;       // > 0: the stock left as a mesh of blocks of stride × stride Z rays (0: none)
+  double restSpacing = 0.0;      // > 0: the stock left beyond the allowance as points about this far apart (mm)
   int threads = 0;               // 0: all cores
   ProgressCallback progress;
 };
@@ -91,6 +92,16 @@ struct RemovalResult {
   long rays = 0, positions = 0;
   // The stock left (stockMeshStride > 0): closed, blocks of stride × resolution a side; for FreeCAD and STL.
   geometry::TriangleMesh stockMesh;
+  // The stock left farther from the part than the allowance and half a spacing (restSpacing > 0), on Z rays a
+  // whole number of resolutions apart: what a rest-roughing operation is to take out.
+  RestStock rest;
+};
+
+// One tool's moves: a program of several operations runs them in turn, each with its own cutter, on the same
+// stock (roughing, then rest roughing with a smaller tool). Move indices in a result count through them all.
+struct ToolRun {
+  std::vector<ToolMove> moves;
+  Cutter cutter;
 };
 
 // The moves swept through stock − part. InputError for a resolution outside [0.005, 50] mm or one that needs
@@ -98,6 +109,10 @@ struct RemovalResult {
 // more than 10 million tool positions, an empty stock; Cancelled when `progress` says stop.
 RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
                               const TopoDS_Shape& part, const RemovalSettings& settings = {});
+// The operations in turn; the stick-out is the largest any of them needs. InputError for a rest spacing
+// outside 0 (none) or [resolution, 20] mm, or one that gives more than 5 million points.
+RemovalResult simulateRemoval(const std::vector<ToolRun>& runs, const TopoDS_Shape& stock, const TopoDS_Shape& part,
+                              const RemovalSettings& settings = {});
 
 // The moves with every rapid of `faults` split where it meets the stock left: a rapid to `margin` mm (and the
 // simulation's sampling step) before the first position that cut, then the rest of the move as a plunge (the
@@ -106,13 +121,15 @@ RemovalResult simulateRemoval(const std::vector<ToolMove>& moves, const Cutter& 
 std::vector<ToolMove> feedThroughStock(const std::vector<ToolMove>& moves, const std::vector<RapidFault>& faults,
                                        double margin);
 
-// The moves simulated at settings.resolution and fed through the stock left where a rapid would cut it
-// (feedThroughStock, `margin` mm): the program whose rapids keep out of the stock, and the faults it mended.
+// The moves simulated at settings.resolution — after the operations `before`, on the stock they left — and fed
+// through the stock left where a rapid would cut it (feedThroughStock, `margin` mm): the program whose rapids
+// keep out of the stock, and the faults it mended (move indices of these moves).
 struct RapidsMended {
   std::vector<ToolMove> moves;
   std::vector<RapidFault> mended;
 };
 RapidsMended keepRapidsOutOfStock(const std::vector<ToolMove>& moves, const Cutter& cutter, const TopoDS_Shape& stock,
-                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin = 1.0);
+                                  const TopoDS_Shape& part, const RemovalSettings& settings, double margin = 1.0,
+                                  const std::vector<ToolRun>& before = {});
 
 }  // namespace hsm::roughing

@@ -101,11 +101,20 @@ enum class Strategy {
 };
 std::string strategyName(Strategy strategy);
 
+// Stock a previous operation left, for rest roughing: points of it `spacing` mm apart (each stands for a cube
+// of that side), farther from the part than the allowance. Empty: the whole volume is to be cut.
+struct RestStock {
+  std::vector<Eigen::Vector3d> points;
+  double spacing = 0.0;
+};
+
 struct PartitionSettings {
   double step = 8.0;                    // mm between slicing surfaces (axial engagement)
   double setupResolutionDeg = 5.0;      // S3: directions searched every … degrees
   double setupGrid = 2.0;               // S3: spacing of the points of the volume, mm
   int threads = 0;                      // S3's search: threads (0: all cores)
+  RestStock rest;                       // S3: the direction that reaches the most of this stock (rest roughing)
+                                        // that lies in the volume, instead of the whole volume
   ProgressCallback progress;
 };
 

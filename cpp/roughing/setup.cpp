@@ -3,6 +3,7 @@
 // volume is reachable when nothing of the part lies above it (the highest part surface over its cell of the
 // plane normal to d is below it).
 #include "roughing/roughing.hpp"
+#include "roughing/dexel.hpp"
 #include "geometry/bounds.hpp"
 
 #include "common/error.hpp"
@@ -171,11 +172,28 @@ struct ReachProblem {
   geometry::TriangleMesh mesh;
 };
 
+// The points of the rest stock inside the solid (on its tri-dexel model at the grid's spacing), every k-th
+// where there are more than the search may take.
+std::vector<Eigen::Vector3d> restPointsIn(const TopoDS_Shape& solid, const RestStock& rest, double spacing) {
+  const geometry::TriangleMesh mesh = geometry::meshFacesAfresh(solid, std::min(0.05, 0.25 * spacing));
+  TriDexel model(mesh.bounds(), std::min(spacing, 0.5), kMaxPoints * 20);
+  model.fill(mesh);
+  std::vector<Eigen::Vector3d> inside;
+  for (const Eigen::Vector3d& p : rest.points)
+    if (model.inside(p)) inside.push_back(p);
+  const size_t every = 1 + inside.size() / static_cast<size_t>(kMaxPoints);
+  std::vector<Eigen::Vector3d> kept;
+  for (size_t i = 0; i < inside.size(); i += every) kept.push_back(inside[i]);
+  return kept;
+}
+
 ReachProblem reachProblem(const RemovalSolid& solid, const TopoDS_Shape& part, const PartitionSettings& settings) {
   if (!(settings.setupGrid > 0.0) || !std::isfinite(settings.setupGrid))
     throw InputError("the setup grid " + number(settings.setupGrid) + " mm must be positive, e.g. 2 mm");
   ReachProblem problem;
-  problem.points = gridPoints(solid.solid, settings.setupGrid);
+  // Rest roughing: what the operations before left in this volume; where they left nothing, the volume.
+  if (!settings.rest.points.empty()) problem.points = restPointsIn(solid.solid, settings.rest, settings.setupGrid);
+  if (problem.points.empty()) problem.points = gridPoints(solid.solid, settings.setupGrid);
   if (problem.points.empty())
     throw InputError("the setup grid of " + number(settings.setupGrid) + " mm puts no point inside the volume: use a finer grid");
   Bnd_Box box = geometry::exactBounds(part);

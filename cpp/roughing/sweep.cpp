@@ -6,13 +6,17 @@
 #include "common/error.hpp"
 #include "common/text.hpp"
 #include "geometry/mesh.hpp"
+#include "roughing/flat.hpp"
+#include "roughing/grown_cutter.hpp"
 #include "roughing/projection.hpp"
+#include "roughing/step_up.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
+#include <utility>
 
 namespace hsm::roughing {
 
@@ -20,229 +24,34 @@ namespace {
 constexpr int kMaxRings = 10000;
 constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
 constexpr double kFloorSlack = 0.005;  // mm
+constexpr int kHeightBands = 8;  // layers of the part under the corner radius, each kept out by its own width
 
-cl::Paths offset(const cl::Paths& paths, double mm, double tolerance) {
-  cl::ClipperOffset offsetter(2.0, std::max(1.0, tolerance * kScale));
-  offsetter.AddPaths(paths, cl::jtRound, cl::etClosedPolygon);
-  cl::Paths result;
-  offsetter.Execute(result, mm * kScale);
-  return result;
-}
-
-cl::Paths boolean(cl::ClipType type, const cl::Paths& a, const cl::Paths& b) {
-  cl::Clipper clipper;
-  clipper.AddPaths(a, cl::ptSubject, true);
-  clipper.AddPaths(b, cl::ptClip, true);
-  cl::Paths result;
-  clipper.Execute(type, result, cl::pftNonZero, cl::pftNonZero);
-  return result;
-}
-
-// A rectangle of the plane, in Clipper units: what is outside it does not matter for a level.
-struct Window {
-  double x0 = -std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  bool misses(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) const {
-    return std::max({a.X, b.X, c.X}) < x0 || std::min({a.X, b.X, c.X}) > x1 || std::max({a.Y, b.Y, c.Y}) < y0 ||
-           std::min({a.Y, b.Y, c.Y}) > y1;
-  }
+// A slice as its levels see it: its main level (the tip on its far side), its near side, its region laid
+// flat and where the tool's centre may go in it before the part is kept out.
+// A point of the stock a previous operation left, as a slice sees it: its height, where it lies flat, and
+// the plane's scales there.
+struct RestPoint {
+  double height;
+  cl::IntPoint flat;
+  Eigen::Vector2d scales;
 };
 
-Window windowAround(const cl::Paths& paths, double margin) {
-  Window w;
-  if (paths.empty()) return w;
-  const cl::IntRect r = [&] {
-    cl::Clipper c;
-    c.AddPaths(paths, cl::ptSubject, true);
-    return c.GetBounds();
-  }();
-  w.x0 = double(r.left) - margin * kScale, w.x1 = double(r.right) + margin * kScale;
-  w.y0 = double(r.top) - margin * kScale, w.y1 = double(r.bottom) + margin * kScale;
-  return w;
-}
-
-// The straight edge a–b laid flat, from a (included) towards b (excluded): points added at midpoints while the
-// projection bows it.
-void addFlatEdge(const Projection& projection, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int depth,
-                 cl::Path& path) {
-  if (depth < 6 && projection.bends(a, b)) {
-    const Eigen::Vector3d m = 0.5 * (a + b);
-    addFlatEdge(projection, a, m, depth + 1, path);
-    addFlatEdge(projection, m, b, depth + 1, path);
-    return;
-  }
-  path.push_back(projection.plane(a));
-}
-
-// The triangle p laid flat, cut to its part at or above `fromHeight`, added to `pieces`: the polygon of its
-// edges' images (bowed where the projection bends straight edges).
-void addProjected(const Projection& projection, const Eigen::Vector3d (&p)[3], double fromHeight,
-                  const Window& window, cl::Paths& pieces) {
-  if (projection.skip(p) || window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2])))
-    return;
-  const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
-  if (std::max({h[0], h[1], h[2]}) < fromHeight) return;
-  std::vector<Eigen::Vector3d> kept;  // the triangle cut by the half-space height ≥ fromHeight
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    if (h[i] >= fromHeight) kept.push_back(p[i]);
-    if ((h[i] >= fromHeight) != (h[j] >= fromHeight))
-      kept.push_back(p[i] + (p[j] - p[i]) * ((fromHeight - h[i]) / (h[j] - h[i])));
-  }
-  cl::Path path;
-  for (size_t i = 0; i < kept.size(); ++i) addFlatEdge(projection, kept[i], kept[(i + 1) % kept.size()], 0, path);
-  if (path.size() < 3) return;
-  if (!cl::Orientation(path)) cl::ReversePath(path);  // all counter-clockwise: their union is non-zero
-  if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
-}
-
-// The mesh's triangles laid flat, each cut to its part at or above `fromHeight` (−∞: whole), leaving out those
-// outside `window`, gathered in bins by `binOf(triangle)`: what stands over the surface, seen along the tool
-// axis. The mesh is of closed solids, its triangles facing out: on planes only those facing the spindle are
-// needed (a ray along the tool axis from any point of the solid leaves it through one of them), half the
-// union's work. (Unrolled cylinders keep every triangle: culled there, S2's levels lost part of their region,
-// 121 against 150 mm of cutting on an impeller channel, for a reason not found yet.)
-template <class BinOf>
-std::map<int, cl::Paths> projectedPieces(const geometry::TriangleMesh& mesh, const Projection& projection,
-                                         double fromHeight, const Window& window, BinOf&& binOf) {
-  std::map<int, cl::Paths> bins;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
-    if (std::max({projection.height(p[0]), projection.height(p[1]), projection.height(p[2])}) < fromHeight) continue;
-    const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
-    if (projection.cullsBackFaces() && normal.dot(projection.axisAt((p[0] + p[1] + p[2]) / 3.0)) <= 0.0) continue;
-    addProjected(projection, p, fromHeight, window, bins[binOf(p)]);
-  }
-  return bins;
-}
-
-cl::Paths united(const cl::Paths& pieces) {
-  cl::Clipper clipper;
-  clipper.AddPaths(pieces, cl::ptSubject, true);
-  cl::Paths result;
-  clipper.Execute(cl::ctUnion, result, cl::pftNonZero, cl::pftNonZero);
-  return result;
-}
-
-// The union of the mesh's triangles laid flat (projectedPieces).
-cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
-                         const Window& window = {}) {
-  return united(projectedPieces(mesh, projection, fromHeight, window, [](const Eigen::Vector3d(&)[3]) { return 0; })[0]);
-}
-
-// Clipper paths with x scaled by `factor`.
-cl::Paths scaledX(cl::Paths paths, double factor) {
-  for (cl::Path& path : paths)
-    for (cl::IntPoint& q : path) q.X = static_cast<cl::cInt>(std::llround(double(q.X) * factor));
-  return paths;
-}
-
-// Where the tool's centre may not go (as paths to fill non-zero): the part's triangles at or above `fromHeight` laid flat, each grown by
-// `clearance` true mm, that is by the clearance over the plane's scale along x and along y where the triangle
-// is (an ellipse's growth: bins of scales 5 % apart, each bin's union stretched along x to its y scale, grown
-// by the clearance over the bin's least y scale, and stretched back).
-cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
-                    const Window& window, double clearance, double tolerance, const cl::Paths& within) {
-  // Only what falls on `within` matters (the tool's centre is kept there): each bin's growth is cut to its
-  // bounding rectangle before the difference unites them all. Where the centre goes nowhere (a level the
-  // tool fits nowhere in), nothing is kept out: the window of no path is unbounded, not a rectangle.
-  if (within.empty()) return {};
-  const Window box = windowAround(within, 1.0);
-  const cl::Paths rectangle = {{{cl::cInt(box.x0), cl::cInt(box.y0)}, {cl::cInt(box.x1), cl::cInt(box.y0)},
-                                {cl::cInt(box.x1), cl::cInt(box.y1)}, {cl::cInt(box.x0), cl::cInt(box.y1)}}};
-  const double ratio = 1.05;
-  auto level = [&](double scale) {
-    return static_cast<int>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(ratio)));
-  };
-  const auto bins = projectedPieces(mesh, projection, fromHeight, window, [&](const Eigen::Vector3d(&p)[3]) {
-    const Eigen::Vector2d s = projection.scalesAt(p[0]).cwiseMin(projection.scalesAt(p[1])).cwiseMin(projection.scalesAt(p[2]));
-    return level(s.x()) * 4096 + level(s.y());  // both levels within ±142: one key
-  });
-  cl::Paths grown;
-  for (const auto& [key, pieces] : bins) {
-    const int ix = static_cast<int>(std::lround(double(key) / 4096.0)), iy = key - ix * 4096;
-    const double sx = std::pow(ratio, ix), sy = std::pow(ratio, iy);
-    // The least scales of the bin (its lower edges): x stretched by sx/sy makes the plane's metric sy both ways.
-    const cl::Paths part = boolean(cl::ctIntersection,
-                                   scaledX(offset(scaledX(united(pieces), sx / sy), clearance / sy, tolerance), sy / sx),
-                                   rectangle);
-    grown.insert(grown.end(), part.begin(), part.end());
-  }
-  // Not united: each bin's paths wind once round what they cover (holes cancel their own outline), so their
-  // sum is non-zero exactly where some bin covers; the difference that uses them unites them on the way.
-  return grown;
-}
-
-// Points added along each edge longer than `longest` (mm; ∞: none): straight in the flat passes, the moves
-// between them stay within the tolerance of the surface.
-void densify(cl::Paths& paths, double longest) {
-  if (!std::isfinite(longest)) return;
-  for (cl::Path& path : paths) {
-    cl::Path dense;
-    for (size_t i = 0; i < path.size(); ++i) {
-      const cl::IntPoint& a = path[i];
-      const cl::IntPoint& b = path[(i + 1) % path.size()];
-      dense.push_back(a);
-      const double length = std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kScale;
-      const int pieces = static_cast<int>(std::ceil(length / longest));
-      for (int k = 1; k < pieces; ++k)
-        dense.push_back({static_cast<cl::cInt>(a.X + (b.X - a.X) * double(k) / pieces),
-                         static_cast<cl::cInt>(a.Y + (b.Y - a.Y) * double(k) / pieces)});
-    }
-    path = std::move(dense);
-  }
-}
-
-double pathLength(const cl::Path& path) {
-  double length = 0.0;
-  for (size_t i = 1; i < path.size(); ++i)
-    length += std::hypot(double(path[i].X - path[i - 1].X), double(path[i].Y - path[i - 1].Y));
-  return length / kScale;
-}
-
-// Whether the straight segment a–b lies in the domain (within the tolerance).
-bool segmentInside(const cl::IntPoint& a, const cl::IntPoint& b, const cl::Paths& domain, double tolerance) {
-  cl::Clipper clipper;
-  clipper.AddPath(cl::Path{a, b}, cl::ptSubject, false);
-  clipper.AddPaths(domain, cl::ptClip, true);
-  cl::PolyTree tree;
-  clipper.Execute(cl::ctIntersection, tree, cl::pftNonZero, cl::pftNonZero);
-  cl::Paths open;
-  cl::OpenPathsFromPolyTree(tree, open);
-  double inside = 0.0;
-  for (const cl::Path& p : open) inside += pathLength(p);
-  return inside >= pathLength(cl::Path{a, b}) - tolerance;
-}
-
-// Distance (mm) from q to the nearest point of the paths' boundaries, and whether q is inside them.
-double distanceToBoundary(const cl::IntPoint& q, const cl::Paths& paths) {
-  double best = std::numeric_limits<double>::infinity();
-  const Eigen::Vector2d p(double(q.X), double(q.Y));
-  for (const cl::Path& path : paths)
-    for (size_t i = 0; i < path.size(); ++i) {
-      const Eigen::Vector2d a(double(path[i].X), double(path[i].Y));
-      const cl::IntPoint& nb = path[(i + 1) % path.size()];
-      const Eigen::Vector2d b(double(nb.X), double(nb.Y));
-      const Eigen::Vector2d d = b - a;
-      const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      best = std::min(best, (a + t * d - p).norm());
-    }
-  return best / kScale;
-}
-
-bool insidePaths(const cl::IntPoint& q, const cl::Paths& paths) {
-  int winding = 0;
-  for (const cl::Path& path : paths) {
-    const int in = cl::PointInPolygon(q, path);
-    if (in != 0) winding += cl::Orientation(path) ? 1 : -1;
-  }
-  return winding > 0;
-}
+struct Slice {
+  int subVolume = 0;
+  double tip = 0.0, top = 0.0;  // heights along the axis: the main level's tip and the slice's near side
+  std::vector<Band> bands;      // of the part's heights relative to the tip, each with its keep-out (grown_cutter)
+  cl::Paths region, inner;
+  Window window;
+  std::vector<RestPoint> rest;  // rest roughing: the stock left within the slice's heights
+};
 
 struct Level {
   int subVolume = 0;
-  double tip = 0.0, top = 0.0;  // heights along the axis: the tip's plane and the slice's near side
+  double tip = 0.0, top = 0.0;  // heights along the axis: the tip's surface and the slice's near side
   cl::Paths region, domain;
-  std::vector<cl::Paths> rings;
+  cl::Paths cleared;             // the slice's main domain, cut: clear from its tip to the slice's near side
+  std::vector<FlatPass> passes;  // outside in
+  bool intermediate = false;     // between a slice's main level and its near side: cuts what that left
 };
 
 class Sweeper {
@@ -255,6 +64,8 @@ public:
     double high = -std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, projection_->height(p));
     safeHeight_ = high + settings.clearance;
+    projection_->setReach(settings.cutter.radius() + settings.allowance + settings.meshDeflection + settings.tolerance);
+    for (const Eigen::Vector3d& p : settings.rest.points) restHeights_.push_back(projection_->height(p));
   }
 
   SweepResult run() {
@@ -264,13 +75,7 @@ public:
     for (int k = 0; k < count; ++k) {
       if (settings_.progress && !settings_.progress(double(k) / count)) throw Cancelled("sweep");
       const int i = fromLast ? count - 1 - k : k;
-      Level level = makeLevel(i);
-      if (level.rings.empty()) {
-        result_.warnings.push_back("slice " + std::to_string(partition_.subVolumes[i].slice) +
-                                   ": the tool fits nowhere in it (narrower than the tool, or under the part)");
-        continue;
-      }
-      sweepLevel(level);
+      sweepSlice(makeSlice(i));
     }
     if (!result_.moves.empty()) retract();
     if (settings_.progress) settings_.progress(1.0);
@@ -278,6 +83,98 @@ public:
   }
 
 private:
+  // The main level, then the intermediate ones from the near side down: each cuts, between its height and the
+  // level above it, what the main level's domain left (the domain grows with the height).
+  void sweepSlice(const Slice& slice) {
+    std::map<double, cl::Paths> domains;
+    const DomainAt domainAt = [&](double h) -> const cl::Paths& {
+      auto found = domains.find(h);
+      if (found == domains.end()) found = domains.emplace(h, domainOf(slice, h)).first;
+      return found->second;
+    };
+    const cl::Paths& main = domainAt(slice.tip);
+    const std::vector<double> heights =
+        stepUpHeights(slice.tip, slice.top, domainAt, settings_.stepUpMinimum, settings_.stepUpScallop, settings_.tolerance);
+    if (main.empty() && heights.empty()) {
+      result_.warnings.push_back("slice " + std::to_string(partition_.subVolumes[slice.subVolume].slice) +
+                                 ": the tool fits nowhere in it (narrower than the tool, or under the part)");
+      return;
+    }
+    // Rest roughing cuts only where the tool reaches the stock left, entering and leaving outside it.
+    const bool rest = !settings_.rest.points.empty();
+    const double lead = 0.5 * settings_.cutter.radius();
+    Level level = levelOf(slice, slice.tip, main, main);
+    const cl::Paths wanted = rest ? restWithin(slice, slice.tip, slice.top) : cl::Paths{};
+    level.passes = passesBeyond(ringsOf(main, slice.tip), {}, 0.0, lead, 0.5, settings_.tolerance, rest ? &wanted : nullptr);
+    bool down = false;  // the tool is at a cut inside the slice, not retracted
+    if (!level.passes.empty()) sweepLevel(level, down);
+    double above = slice.top;
+    for (double h : heights) {
+      Level up = levelOf(slice, h, domainAt(h), main);
+      // The level above cut its whole domain, which holds this one's: entries come down from there.
+      up.top = std::exchange(above, h);
+      up.intermediate = true;
+      // Only where the band beyond the main domain is wider than the staircase allowed: a narrower one leaves
+      // no thicker step across the wall.
+      const cl::Paths wantedHere = rest ? restWithin(slice, h, up.top) : cl::Paths{};
+      up.passes = passesBeyond(ringsOf(up.domain, h), main, settings_.stepUpScallop, lead, 0.5, settings_.tolerance,
+                               rest ? &wantedHere : nullptr);
+      if (!up.passes.empty()) sweepLevel(up, down);
+    }
+    if (down) retract();
+  }
+
+  // Where the tool's centre at a level reaches the rest stock that lies between heights `from` and `to`: each
+  // point's cube grown by the tool's radius, laid flat (a square over the plane's scales there), united.
+  cl::Paths restWithin(const Slice& slice, double from, double to) const {
+    const double s = settings_.rest.spacing, reach = settings_.cutter.radius() + 0.5 * s;
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    for (const RestPoint& p : slice.rest)
+      if (p.height >= from - 0.5 * s && p.height <= to + 0.5 * s) {
+        x0 = std::min(x0, double(p.flat.X)), x1 = std::max(x1, double(p.flat.X));
+        y0 = std::min(y0, double(p.flat.Y)), y1 = std::max(y1, double(p.flat.Y));
+      }
+    if (!(x1 >= x0)) return {};
+    // Cells of the spacing where the plane is most stretched; the points' squares marked on them.
+    const double cell = s / projection_->largestScale() * kScale;
+    const double margin = reach / std::max(projection_->smallestScale(), 0.05) * kScale + cell;
+    x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
+    const long nx = static_cast<long>((x1 - x0) / cell) + 1, ny = static_cast<long>((y1 - y0) / cell) + 1;
+    if (nx * ny > 50'000'000)
+      throw InputError("rest roughing: the stock left spans " + std::to_string(nx * ny) + " cells of " +
+                       number(s) + " mm laid flat: use a larger rest spacing");
+    std::vector<char> marked(static_cast<size_t>(nx * ny), 0);
+    for (const RestPoint& p : slice.rest) {
+      if (!(p.height >= from - 0.5 * s && p.height <= to + 0.5 * s)) continue;
+      const double hx = reach / std::max(p.scales.x(), 0.05) * kScale, hy = reach / std::max(p.scales.y(), 0.05) * kScale;
+      const long i0 = std::max(0L, long((double(p.flat.X) - hx - x0) / cell)), i1 = std::min(nx - 1, long((double(p.flat.X) + hx - x0) / cell));
+      const long j0 = std::max(0L, long((double(p.flat.Y) - hy - y0) / cell)), j1 = std::min(ny - 1, long((double(p.flat.Y) + hy - y0) / cell));
+      for (long j = j0; j <= j1; ++j) std::fill(marked.begin() + j * nx + i0, marked.begin() + j * nx + i1 + 1, 1);
+    }
+    cl::Paths rectangles;  // each row's runs of marked cells
+    for (long j = 0; j < ny; ++j)
+      for (long i = 0; i < nx; ++i) {
+        if (!marked[static_cast<size_t>(j * nx + i)]) continue;
+        long k = i;
+        while (k + 1 < nx && marked[static_cast<size_t>(j * nx + k + 1)]) ++k;
+        const cl::cInt a = cl::cInt(x0 + i * cell), b = cl::cInt(x0 + (k + 1) * cell);
+        const cl::cInt c = cl::cInt(y0 + j * cell), d = cl::cInt(y0 + (j + 1) * cell);
+        rectangles.push_back({{a, c}, {b, c}, {b, d}, {a, d}});
+        i = k;
+      }
+    return united(rectangles);
+  }
+
+  Level levelOf(const Slice& slice, double tip, const cl::Paths& domain, const cl::Paths& cleared) const {
+    Level level;
+    level.subVolume = slice.subVolume;
+    level.tip = tip, level.top = slice.top;
+    level.region = slice.region;
+    level.domain = domain;
+    level.cleared = cleared;
+    return level;
+  }
+
   // The height of the slice's slicing surface (sweep.hpp: the near side, or S5's far side).
   double surfaceHeight(const SubVolume& sub) const {
     if (sub.surface.kind == SurfaceKind::Cylinder) return sub.surface.radius;
@@ -286,10 +183,10 @@ private:
     return projection_->height(sub.axisPoints.front());
   }
 
-  Level makeLevel(int index) {
+  Slice makeSlice(int index) {
     const SubVolume& sub = partition_.subVolumes[index];
-    Level level;
-    level.subVolume = index;
+    Slice slice;
+    slice.subVolume = index;
     const geometry::TriangleMesh mesh = geometry::meshFacesAfresh(sub.shape, settings_.meshDeflection);
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (const Eigen::Vector3d& p : mesh.vertices) {
@@ -300,65 +197,101 @@ private:
     const double surface = surfaceHeight(sub);
     if (partition_.strategy == Strategy::HubOffsets) {
       // The slicing surface is the slice's far side; the reference (the hub, a floor) is part of the part: the
-      // tip stays the allowance above it, and the lift of the tool's rim over a concave hub.
+      // tip stays the allowance above it, and as much more as a concave hub rises under the tool's bottom.
       projection_->setLevel(surface, mesh);
-      const double lift = rimLift();
-      level.top = std::min(surface + partition_.step, high);
-      level.tip = std::max(surface, surface - sub.surface.offset + settings_.allowance + lift + settings_.meshDeflection);
-      level.top = std::max(level.top, level.tip + settings_.tolerance);
+      slice.top = std::min(surface + partition_.step, high);
+      slice.tip = std::max(surface, surface - sub.surface.offset + settings_.allowance + grown().floorLift() +
+                                        settings_.meshDeflection);
+      slice.top = std::max(slice.top, slice.tip + settings_.tolerance);
     } else {
-      level.top = surface;
-      level.tip = std::max(level.top - partition_.step, low);
-      projection_->setLevel(level.tip, mesh);
-      raiseOverFloor(level);
+      slice.top = surface;
+      slice.tip = std::max(slice.top - partition_.step, low);
+      projection_->setLevel(slice.tip, mesh);
+      raiseOverFloor(slice);
     }
-    projection_->setLevel(level.tip, mesh);
-    const double lift = rimLift();
-    level.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
+    // One plane for all the slice's levels (the intermediate ones compare their domains with the main one's):
+    // its scales are the main level's, the tip surface that has the least room.
+    projection_->setLevel(slice.tip, mesh);
+    slice.bands = grown().bands(kHeightBands, kFloorSlack, settings_.meshDeflection + settings_.tolerance);
+    slice.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
     const double margin = (radius + settings_.allowance + settings_.meshDeflection + 1.0) / projection_->smallestScale();
-    const double scale = projection_->largestScale();
-    const cl::Paths inner = offset(level.region, -(radius - kOverhang * settings_.cutter.diameter) / scale, settings_.tolerance);
-    // Grown by the mesh's deflection and the offsets' arc tolerance too (their chords cut inside the arcs).
-    // The part from the allowance under the tip up, less 5 µm: a floor the tip was raised onto lies exactly the
-    // allowance under it, and rounding (a shape read back from BREP text, or not) must not decide whether it
-    // shadows the whole level (half the 0.01 mm the clearance check grants).
-    const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, level.tip - settings_.allowance - lift + kFloorSlack,
-                                        windowAround(level.region, 1.5 * margin),
-                                        radius + settings_.allowance + settings_.meshDeflection + settings_.tolerance,
-                                        settings_.tolerance, inner);
-    level.domain = boolean(cl::ctDifference, inner, keepOut);
-    // Passes never farther apart than the engagement asked, where the plane is most stretched.
-    const double step = settings_.radialEngagement * settings_.cutter.diameter / scale;
-    for (int k = 0; k < kMaxRings; ++k) {
-      cl::Paths ring = k == 0 ? level.domain : offset(level.domain, -k * step, settings_.tolerance);
-      cl::CleanPolygons(ring, settings_.tolerance * kScale);
-      if (ring.empty()) break;
-      densify(ring, projection_->maxSegment(level.tip, settings_.tolerance));
-      level.rings.push_back(std::move(ring));
+    slice.window = windowAround(slice.region, 1.5 * margin);
+    slice.inner = offset(slice.region, -(radius - kOverhang * settings_.cutter.diameter) / projection_->largestScale(),
+                         settings_.tolerance);
+    const double spacing = settings_.rest.spacing;
+    for (size_t k = 0; k < restHeights_.size(); ++k) {
+      const double h = restHeights_[k];
+      if (!(h >= slice.tip - radius - spacing && h <= slice.top + spacing)) continue;
+      const Eigen::Vector3d& p = settings_.rest.points[k];
+      slice.rest.push_back({h, projection_->plane(p), projection_->scalesAt(p)});
     }
-    return level;
+    return slice;
   }
 
-  // How much nearer the surface the rim of the tool's disk (grown by the allowance) is than its centre.
-  double rimLift() const {
-    const double r = settings_.cutter.radius() + settings_.allowance;
-    return 0.5 * r * r * projection_->concavity();
+  // Where the tool's centre may go with its tip at `tip`: the slice's inner region less the part's keep-out,
+  // layer by layer above the tip (the slice's bands): the part from the allowance under the tip up is kept as
+  // far from the centre as the tool, grown by the allowance, is wide there (a torus's corner is narrower than
+  // its flutes; on a concave surface a point off the axis stands higher along it), and the mesh's deflection
+  // and the offsets' arc tolerance (their chords cut inside the arcs) more.
+  cl::Paths domainOf(const Slice& slice, double tip) const {
+    std::vector<Band> bands = slice.bands;
+    for (Band& band : bands) band.from += tip, band.to += tip;
+    const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, bands, slice.window, settings_.tolerance, slice.inner);
+    return boolean(cl::ctDifference, slice.inner, keepOut);
   }
 
-  // A face of the part parallel to the plane within the allowance under the tip (a floor): the tip stays the
-  // allowance above it, or the whole floor would be out of reach.
-  void raiseOverFloor(Level& level) const {
+  // The domain's boundary, then its offsets inwards every radial step, never farther apart than the engagement
+  // asked where the plane is most stretched; then, while the middle of the last ring lies beyond the reach of
+  // the tool's bottom from it (an island the rings would leave), rings between.
+  Rings ringsOf(const cl::Paths& domain, double tip) const {
+    Rings rings;
+    const double scale = projection_->largestScale();
+    const double step = settings_.radialEngagement * settings_.cutter.diameter / scale;
+    const double reach = (settings_.cutter.radius() - 0.5 * settings_.cutter.corner()) / scale;
+    auto add = [&](cl::Paths ring, double depth) {
+      cl::CleanPolygons(ring, settings_.tolerance * kScale);
+      if (ring.empty()) return false;
+      densify(ring, projection_->maxSegment(tip, settings_.tolerance));
+      rings.loops.push_back(std::move(ring));
+      rings.depths.push_back(depth);
+      return true;
+    };
+    for (int k = 0; k < kMaxRings && add(k == 0 ? domain : offset(domain, -k * step, settings_.tolerance), k * step); ++k) {
+    }
+    for (int extra = 0; !rings.loops.empty() && extra < 4; ++extra) {
+      const double depth = rings.depths.back();
+      if (offset(domain, -(depth + reach), settings_.tolerance).empty()) break;
+      double more = step;
+      while (more > 0.05 && offset(domain, -(depth + more), settings_.tolerance).empty()) more *= 0.5;
+      if (!add(offset(domain, -(depth + more), settings_.tolerance), depth + more)) break;
+    }
+    return rings;
+  }
+
+  // The cutter grown by the allowance on the level the projection is set to.
+  GrownCutter grown() const { return GrownCutter(settings_.cutter, settings_.allowance, projection_->concavity()); }
+
+  // A face of the part parallel to the slicing surface within the allowance under the tip (a floor: a plane
+  // parallel to S1's, the hub under S4's offsets of a skin that follows it): the tip stays the allowance above
+  // it, or the whole floor would be out of reach. Parallel within 2°: a curved floor's facets are tilted from
+  // its normal by the mesh's deflection.
+  void raiseOverFloor(Slice& slice) const {
+    const double parallel = std::cos(2.0 * M_PI / 180.0);
     double floor = -std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3i& t : partMesh_.triangles) {
       const Eigen::Vector3d& p0 = partMesh_.vertices[t[0]];
       const Eigen::Vector3d n = (partMesh_.vertices[t[1]] - p0).cross(partMesh_.vertices[t[2]] - p0);
-      if (!(n.norm() > 0.0) || n.normalized().dot(projection_->axisAt(p0)) < 1.0 - 1e-6) continue;
-      const double h = projection_->height(p0);
-      if (h > level.tip - settings_.allowance - 1e-9 && h < level.tip + settings_.allowance) floor = std::max(floor, h);
+      if (!(n.norm() > 0.0) || n.normalized().dot(projection_->axisAt(p0)) < parallel) continue;
+      double h = -std::numeric_limits<double>::infinity();
+      for (int k = 0; k < 3; ++k) h = std::max(h, projection_->height(partMesh_.vertices[t[k]]));
+      if (h > slice.tip - settings_.allowance - 1e-9 && h < slice.tip + settings_.allowance) floor = std::max(floor, h);
     }
-    const double raised = floor + settings_.allowance + rimLift();
-    if (std::isfinite(floor) && raised < level.top) level.tip = raised;
+    // As S5's tip over its hub: a curved floor's mesh is within its deflection of it, and the lift is of second
+    // order in the distance from the axis (a plane's facets lie on it).
+    const double lift = grown().floorLift();
+    const double raised = floor + settings_.allowance + (lift > 0.0 ? lift + settings_.meshDeflection : 0.0);
+    if (std::isfinite(floor) && raised < slice.top) slice.tip = raised;
   }
 
   void add(MoveKind kind, const Eigen::Vector3d& tip, int subVolume) {
@@ -399,15 +332,16 @@ private:
     cl::IntPoint point;
   };
 
-  // Down to the loop's start: a plunge where the tool's disk is clear of the slice's material, else a ramp
-  // along the loop from the slice's near side. The full loop is then cut from where the tool reaches the level.
-  Arrival enter(const Level& level, const cl::Path& loop, size_t start) {
+  // Down to the loop's start: a plunge where the tool's disk is clear of the slice's material (or `cleared`
+  // says the levels below took it out), else a ramp along the loop from the slice's near side. The full loop
+  // is then cut from where the tool reaches the level.
+  Arrival enter(const Level& level, const cl::Path& loop, size_t start, bool cleared) {
     const Eigen::Vector3d first = projection_->point(loop[start], level.top + 1.0);
     if (result_.moves.empty()) add(MoveKind::Rapid, projection_->point(loop[start], safeHeight_), -1);
     else if (projection_->height(result_.moves.back().tip) > safeHeight_ - 1e-9) travel(loop[start]);
     add(MoveKind::Rapid, first, level.subVolume);
-    const bool clear = !insidePaths(loop[start], level.region) &&
-                       distanceToBoundary(loop[start], level.region) >= settings_.cutter.radius();
+    const bool clear = cleared || (!insidePaths(loop[start], level.region) &&
+                                   distanceToBoundary(loop[start], level.region) >= settings_.cutter.radius());
     if (clear) {
       add(MoveKind::Plunge, projection_->point(loop[start], level.tip), level.subVolume);
       ++result_.plunges;
@@ -442,10 +376,8 @@ private:
   }
 
   // The whole loop at the level from `from` (on the segment after point `from.index`) round to it again.
-  void cutLoop(const Level& level, const cl::Path& loop, const Arrival& from, int ring) {
-    Pass pass;
-    pass.subVolume = level.subVolume;
-    pass.ring = ring;
+  void cutLoop(const Level& level, const cl::Path& loop, const Arrival& from, int ring, double depth) {
+    Pass pass{level.subVolume, ring, {}, true, level.intermediate, depth};
     for (size_t k = 1; k <= loop.size(); ++k) {
       const Eigen::Vector3d p = projection_->point(loop[(from.index + k) % loop.size()], level.tip);
       add(MoveKind::Cut, p, level.subVolume);
@@ -455,55 +387,79 @@ private:
     result_.passes.push_back(std::move(pass));
   }
 
-  void sweepLevel(const Level& level) {
-    bool entered = false;
-    for (size_t k = 0; k < level.rings.size(); ++k) {
-      std::vector<bool> done(level.rings[k].size(), false);
-      for (size_t n = 0; n < level.rings[k].size(); ++n) {
-        // The nearest loop to where the tool is, and its nearest point.
-        const cl::IntPoint here = entered ? projection_->plane(result_.moves.back().tip) : level.rings[k][0][0];
-        size_t best = 0, bestPoint = 0;
-        double bestDistance = std::numeric_limits<double>::infinity();
-        for (size_t l = 0; l < level.rings[k].size(); ++l) {
-          if (done[l]) continue;
-          const cl::Path& loop = level.rings[k][l];
-          for (size_t p = 0; p < loop.size(); ++p) {
-            const double d = std::hypot(double(loop[p].X - here.X), double(loop[p].Y - here.Y));
-            if (d < bestDistance) bestDistance = d, best = l, bestPoint = p;
-          }
-        }
-        done[best] = true;
-        const cl::Path& loop = level.rings[k][best];
-        if (loop.size() < 3) continue;
-        Arrival from{bestPoint, loop[bestPoint]};
-        if (entered && segmentInside(here, loop[bestPoint], level.domain, settings_.tolerance)) {
-          link(here, loop[bestPoint], level);
-        } else {
-          if (entered) retract();
-          from = enter(level, loop, bestPoint);
-        }
-        entered = true;
-        cutLoop(level, loop, from, static_cast<int>(k));
-      }
+  // An open pass from its first point (where the tool is) to its last.
+  void cutOpen(const Level& level, const cl::Path& path, int ring, double depth) {
+    Pass pass{level.subVolume, ring, {projection_->point(path.front(), level.tip)}, false, level.intermediate, depth};
+    for (size_t k = 1; k < path.size(); ++k) {
+      const Eigen::Vector3d p = projection_->point(path[k], level.tip);
+      add(MoveKind::Cut, p, level.subVolume);
+      pass.points.push_back(p);
     }
-    retract();
+    result_.passes.push_back(std::move(pass));
   }
 
-  // A straight move at the level in the flat passes (points added where the surface bends).
-  void link(const cl::IntPoint& from, const cl::IntPoint& to, const Level& level) {
+  // The passes ring by ring from the outside in, each time the nearest one to the tool (a loop from its nearest
+  // point, an open pass from its start), linked at the level where the straight move stays in the domain, or
+  // from another level of the slice where it stays in what the main level cleared; else the tool retracts.
+  // `down`: the tool is at a cut of this slice (it stays so at the end).
+  void sweepLevel(const Level& level, bool& down) {
+    bool entered = down;
+    std::vector<bool> done(level.passes.size(), false);
+    for (size_t n = 0; n < level.passes.size(); ++n) {
+      int ring = std::numeric_limits<int>::max();
+      for (size_t l = 0; l < level.passes.size(); ++l)
+        if (!done[l]) ring = std::min(ring, level.passes[l].ring);
+      size_t best = 0, bestPoint = 0;
+      double bestDistance = std::numeric_limits<double>::infinity();
+      cl::IntPoint here;
+      bool placed = entered;
+      if (entered) here = projection_->plane(result_.moves.back().tip);
+      for (size_t l = 0; l < level.passes.size(); ++l) {
+        if (done[l] || level.passes[l].ring != ring) continue;
+        const FlatPass& candidate = level.passes[l];
+        if (!placed) here = candidate.points.front(), placed = true;
+        for (size_t p = 0; p < (candidate.closed ? candidate.points.size() : 1); ++p) {
+          const double d = std::hypot(double(candidate.points[p].X - here.X), double(candidate.points[p].Y - here.Y));
+          if (d < bestDistance) bestDistance = d, best = l, bestPoint = p;
+        }
+      }
+      done[best] = true;
+      const FlatPass& pass = level.passes[best];
+      if (pass.points.size() < (pass.closed ? 3u : 2u)) continue;
+      Arrival from{bestPoint, pass.points[bestPoint]};
+      const double height = entered ? projection_->height(result_.moves.back().tip) : level.tip;
+      const bool atLevel = std::abs(height - level.tip) < 1e-9;
+      if (entered && segmentInside(here, from.point, atLevel ? level.domain : level.cleared, settings_.tolerance)) {
+        link(here, height, from.point, level.tip, level.subVolume);
+      } else {
+        if (entered) retract();
+        from = enter(level, pass.points, bestPoint, !pass.closed);
+      }
+      entered = true;
+      if (pass.closed) cutLoop(level, pass.points, from, pass.ring, pass.depth);
+      else cutOpen(level, pass.points, pass.ring, pass.depth);
+    }
+    down = entered;
+  }
+
+  // A straight move in the flat passes from one height to another (points added where the surface bends).
+  void link(const cl::IntPoint& from, double fromHeight, const cl::IntPoint& to, double toHeight, int subVolume) {
     const double length = std::hypot(double(to.X - from.X), double(to.Y - from.Y)) / kScale;
-    const double longest = projection_->maxSegment(level.tip, settings_.tolerance);
+    const double longest = projection_->maxSegment(std::min(fromHeight, toHeight), settings_.tolerance);
     const int pieces = std::isfinite(longest) ? std::max(1, static_cast<int>(std::ceil(length / longest))) : 1;
-    for (int k = 1; k <= pieces; ++k)
-      add(MoveKind::Link, projection_->point({static_cast<cl::cInt>(from.X + (to.X - from.X) * double(k) / pieces),
-                                              static_cast<cl::cInt>(from.Y + (to.Y - from.Y) * double(k) / pieces)},
-                                             level.tip), level.subVolume);
+    for (int k = 1; k <= pieces; ++k) {
+      const double f = double(k) / pieces;
+      add(MoveKind::Link, projection_->point({static_cast<cl::cInt>(from.X + (to.X - from.X) * f),
+                                              static_cast<cl::cInt>(from.Y + (to.Y - from.Y) * f)},
+                                             fromHeight + (toHeight - fromHeight) * f), subVolume);
+    }
   }
 
   const Partition& partition_;
   const SweepSettings& settings_;
   std::unique_ptr<Projection> projection_;
   geometry::TriangleMesh partMesh_;
+  std::vector<double> restHeights_;  // of the rest stock's points (NaN where the projection has none)
   double safeHeight_ = 0.0;
   SweepResult result_;
 };
@@ -523,11 +479,32 @@ void checkSettings(const SweepSettings& s) {
   check(s.rampAngleDeg, 0.5, 90.0, "ramp angle", "degrees (default 3)");
   check(s.clearance, 0.0, 1000.0, "clearance", "mm above the stock for links (default 5)");
   check(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "mm (default 0.02)");
+  if (s.stepUpMinimum != 0.0) check(s.stepUpMinimum, 0.1, 100.0, "step-up minimum", "mm between levels, or 0 for none (default 1)");
+  check(s.stepUpScallop, 0.01, 10.0, "step-up scallop", "mm of the staircase left across a wall (default 0.25)");
+  if (!s.rest.points.empty()) {
+    check(s.rest.spacing, 0.01, 20.0, "rest stock spacing", "mm between its points (the removal simulation's)");
+    for (const Eigen::Vector3d& p : s.rest.points)
+      if (!p.allFinite()) throw InputError("rest stock: a point is not finite (NaN or infinite coordinates)");
+  }
+}
+
+// Each slice's intermediate levels are bounded by the minimum step between them.
+void checkStepUp(const SweepSettings& s, const Partition& partition) {
+  constexpr double kMaxLevelsPerSlice = 64.0;
+  if (s.stepUpMinimum > 0.0 && partition.step / s.stepUpMinimum > kMaxLevelsPerSlice)
+    throw InputError("step-up minimum " + number(s.stepUpMinimum) + " mm would allow " +
+                     number(std::floor(partition.step / s.stepUpMinimum)) + " levels in a slice of " +
+                     number(partition.step) + " mm, more than " + number(kMaxLevelsPerSlice) +
+                     ": use a minimum of at least " + number(partition.step / kMaxLevelsPerSlice) + " mm");
 }
 }  // namespace
 
+double Cutter::corner() const {
+  return kind == CutterKind::Flat ? 0.0 : kind == CutterKind::Ball ? radius() : cornerRadius;
+}
+
 double Cutter::profileRadius(double h) const {
-  const double r = kind == CutterKind::Flat ? 0.0 : kind == CutterKind::Ball ? radius() : cornerRadius;
+  const double r = corner();
   if (h <= 0.0) return radius() - r;
   if (h >= r) return h <= stickOut ? radius() : 0.5 * holderDiameter;
   return radius() - r + std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
@@ -579,6 +556,7 @@ SweepResult sweep(const Partition& partition, const RemovalSolid& solid, const T
                   const TopoDS_Shape& stock, const SweepSettings& settings) {
   checkSettings(settings);
   if (partition.subVolumes.empty()) throw InputError("the partition has no sub-volumes to sweep");
+  checkStepUp(settings, partition);
   return Sweeper(partition, solid, part, stock, settings).run();
 }
 

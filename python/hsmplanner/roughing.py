@@ -49,10 +49,10 @@ def volume_to_remove(stock, part, progress=None):
     return _core.roughing.volume_to_remove(as_brep(stock), as_brep(part), progress)
 
 
-def _settings(step=None, setup_resolution_deg=None, setup_grid=None):
+def _settings(step=None, setup_resolution_deg=None, setup_grid=None, rest=None):
     return core_settings(_core.roughing.PartitionSettings, step=None if step is None else float(step),
                          setup_resolution_deg=None if setup_resolution_deg is None else float(setup_resolution_deg),
-                         setup_grid=None if setup_grid is None else float(setup_grid))
+                         setup_grid=None if setup_grid is None else float(setup_grid), rest=rest)
 
 
 def _solid(volume):
@@ -68,13 +68,14 @@ def _solid(volume):
 
 
 def partition(volume, part, strategy_name="S5", step=None, setup_resolution_deg=None, setup_grid=None,
-              progress=None):
+              rest=None, progress=None):
     """The solid (a RemovalSolid, or a VolumeToRemove's largest) cut by one of the five slicings, `step` mm
     apart (default: the core's 8 mm, 100 % of a Ø8 tool): a Partition whose sub_volumes carry their volume,
-    BREP, slicing surface and tool axis field. ValueError for a step ≤ 0 or beyond the volume, or a strategy
-    whose reference face this volume lacks."""
+    BREP, slicing surface and tool axis field. S3 with `rest` (a RestStock): the setup direction that reaches
+    the most of the stock a previous operation left in this volume. ValueError for a step ≤ 0 or beyond the
+    volume, or a strategy whose reference face this volume lacks."""
     return _core.roughing.partition(_solid(volume), as_brep(part), strategy(strategy_name),
-                                    _settings(step, setup_resolution_deg, setup_grid), progress)
+                                    _settings(step, setup_resolution_deg, setup_grid, rest), progress)
 
 
 def setup_direction(volume, part, resolution_deg=None, grid=None, progress=None):
@@ -124,14 +125,19 @@ def cutter(kind="torus", diameter=None, corner_radius=None, flute_length=None, s
 
 
 def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=None, allowance=None, tolerance=None,
-          ramp_angle_deg=None, clearance=None, progress=None):
+          ramp_angle_deg=None, clearance=None, step_up_minimum=None, step_up_scallop=None, rest=None, progress=None):
     """The sub-volumes of a Partition swept by contour-parallel passes (S1–S5; S4 and S5 on offsets of planes,
     cylinders and surfaces of revolution, not of free-form faces): a
     SweepResult whose `moves` are arrays (tip, axis, kind, sub_volume), with its passes and lengths. `volume`
-    is the RemovalSolid the partition came from; `part` and `stock` the shapes. ValueError for bad settings."""
+    is the RemovalSolid the partition came from; `part` and `stock` the shapes. Intermediate levels inside each
+    slice where the part leans (step-up): no nearer than `step_up_minimum` mm to each other (0: none, one level
+    per slice as the paper), added while the staircase left across a wall exceeds `step_up_scallop` mm.
+    Rest roughing: with `rest` (a RestStock: simulate_removal(..., rest_spacing=…).rest of the operations
+    before), each level cuts only where its tool reaches that stock. ValueError for bad settings."""
     settings = core_settings(_core.roughing.SweepSettings, cutter=tool, radial_engagement=radial_engagement,
                              allowance=allowance, tolerance=tolerance, ramp_angle_deg=ramp_angle_deg,
-                             clearance=clearance)
+                             clearance=clearance, step_up_minimum=step_up_minimum, step_up_scallop=step_up_scallop,
+                             rest=rest)
     return _core.roughing.sweep(partition_result, _solid(volume), as_brep(part), as_brep(stock), settings, progress)
 
 
@@ -155,37 +161,66 @@ def join_paths(paths, stock, clearance=None):
     return _core.roughing.join_sweeps(regions, as_brep(stock), 5.0 if clearance is None else float(clearance))
 
 
+def _moves_of(paths):
+    return paths.moves if hasattr(paths, "moves") else paths
+
+
+def _runs(paths, tool, then):
+    """[(moves dict, Cutter)]: `paths` with `tool`, then each (paths, tool) of `then`."""
+    runs = [(_moves_of(paths), tool if tool is not None else _core.roughing.Cutter())]
+    for later_paths, later_tool in then or ():
+        runs.append((_moves_of(later_paths), later_tool if later_tool is not None else _core.roughing.Cutter()))
+    return runs
+
+
 def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_section=None, stick_out_spacing=None,
-                     threads=None, allowance=None, stock_mesh_stride=None, progress=None):
+                     threads=None, allowance=None, stock_mesh_stride=None, rest_spacing=None, then=None,
+                     progress=None):
     """The moves of `paths` (a SweepResult, or a dict of (N, 3) `tip` and `axis` and (N,) `kind` arrays) swept
     through stock − part by the cutter `tool` (default the paper's Ø8 r1 torus) on a tri-dexel model
     `resolution` mm fine (default 0.2; cpp/roughing/removal.hpp): a RemovalResult with V_r (remaining_share,
     %; beyond_allowance_share without the `allowance` layer left on the part, default 0.5 mm), the path, feed and in-material lengths, the least stick-out for the holder, any gouge (volume, first
     move, where) and the stock left on the part (thickness at surface_points, its weighted mean, max and
     standard deviation), every rapid that cuts the stock left (rapid_faults: move, where, volume; a fault) and, with `stock_mesh_stride` k > 0, the stock left as a closed mesh of blocks of k × k
-    rays (stock_mesh: points, triangles; save_stl writes it). ValueError for bad settings or moves; Cancelled
-    when `progress` returns False."""
-    moves = paths.moves if hasattr(paths, "moves") else paths
+    rays (stock_mesh: points, triangles; save_stl writes it). With `rest_spacing` (mm), the stock left beyond
+    the allowance as points that far apart (rest: a RestStock for sweep's rest roughing). `then`: operations run
+    after these on the same stock, [(paths, tool)] (rest roughing with a smaller tool); move indices count
+    through them all. ValueError for bad settings or moves; Cancelled when `progress` returns False."""
     settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, chip_section=chip_section,
                              stick_out_spacing=stick_out_spacing, threads=threads, allowance=allowance,
-                             stock_mesh_stride=stock_mesh_stride)
+                             stock_mesh_stride=stock_mesh_stride, rest_spacing=rest_spacing)
+    return _core.roughing.simulate_removal_runs(_runs(paths, tool, then), as_brep(stock), as_brep(part), settings,
+                                                progress)
+
+
+def split_what_is_left(partition_result, volume, part, paths, tool=None, allowance=None, resolution=0.25,
+                       threads=0):
+    """What the moves of `paths` (one region's sweep of `partition_result`, before joining) leave, by cause,
+    measured apart from the sweep on a grid of `resolution` mm (cpp/roughing/reach.hpp): a LeftSplit with the
+    region's material (volume), what no tool along the path's own axes reaches without coming nearer the part
+    than the allowance (unreachable) and what it reaches only from heights between the path's levels
+    (between_levels), mm³; the rest of a removal simulation's stock left is the path's own."""
+    moves = _moves_of(paths)
     tool = tool if tool is not None else _core.roughing.Cutter()
-    return _core.roughing.simulate_removal(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
-                                           as_brep(part), settings, progress)
+    allowance = _core.roughing.SweepSettings().allowance if allowance is None else float(allowance)
+    return _core.roughing.split_what_is_left(partition_result, _solid(volume), as_brep(part), tool, allowance,
+                                             moves["tip"], moves["axis"], moves["kind"], float(resolution),
+                                             int(threads))
 
 
 def keep_rapids_out_of_stock(paths, stock, part, tool=None, resolution=0.2, margin=1.0, threads=None,
-                             progress=None):
+                             after=None, progress=None):
     """The moves of `paths` (a SweepResult or a moves dict, e.g. join_paths') simulated through the stock at
-    `resolution` mm, every rapid that would cut the stock left at its time split: a rapid to `margin` mm (and
-    the sampling) before the stock, then the rest as a plunge at the entry feed. (moves dict, [RapidFault]
-    mended: the move, where, the volume the rapid would have taken out). A final simulate_removal of the moves
-    returned reports no rapid fault (rapid_faults)."""
-    moves = paths.moves if hasattr(paths, "moves") else paths
+    `resolution` mm — after the operations `after`, [(paths, tool)], on what they left — every rapid that would
+    cut the stock left at its time split: a rapid to `margin` mm (and the sampling) before the stock, then the
+    rest as a plunge at the entry feed. (moves dict, [RapidFault] mended: the move, where, the volume the rapid
+    would have taken out). A final simulate_removal of the moves returned reports no rapid fault."""
+    moves = _moves_of(paths)
     settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, threads=threads)
     tool = tool if tool is not None else _core.roughing.Cutter()
+    before = _runs(after[0][0], after[0][1], after[1:]) if after else []
     return _core.roughing.keep_rapids_out_of_stock(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
-                                                   as_brep(part), settings, float(margin), progress)
+                                                   as_brep(part), settings, float(margin), progress, before)
 
 
 def rapid_note(fed):

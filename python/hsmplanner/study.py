@@ -571,15 +571,16 @@ def rank(rows, by="time"):
     raise ValueError("rank by %r: use 'time', 'slowdown' or 'pareto'" % (by,))
 
 
-def pareto_front(rows):
-    """The rows that ran and that no other beats on both time and slowdown share, fastest first."""
-    ran = [r for r in rows if not r.get("error")]
-    return sorted((r for r in ran if not any(_dominates(o, r) for o in ran)), key=lambda r: r["time_s"])
+def pareto_front(rows, objectives=("time_s", "slowdown_share")):
+    """The rows that ran (no error, every objective a number) and that no other beats on both objectives (lower
+    is better: time and slowdown share, or a roughing's time and the stock it leaves), fastest first."""
+    ran = [r for r in rows if not r.get("error") and all(isinstance(r.get(k), (int, float)) for k in objectives)]
+    return sorted((r for r in ran if not any(_dominates(o, r, objectives) for o in ran)), key=lambda r: r[objectives[0]])
 
 
-def _dominates(a, b):
-    no_worse = a["time_s"] <= b["time_s"] and a["slowdown_share"] <= b["slowdown_share"]
-    return no_worse and (a["time_s"] < b["time_s"] or a["slowdown_share"] < b["slowdown_share"])
+def _dominates(a, b, objectives):
+    no_worse = all(a[k] <= b[k] for k in objectives)
+    return no_worse and any(a[k] < b[k] for k in objectives)
 
 
 def write_csv(rows, path):

@@ -435,6 +435,8 @@ def roughing_study_panel_runs_and_applies(run):
         return
     for name, box in study.form.strategies.items():
         box.setChecked(name in ("S1", "S3"))
+    for key, box in study.form.variants.items():
+        box.setChecked(key == "step-up")
     study.form.resolution.setValue(1.0)
     study.run()
     table = study.form.table
@@ -447,10 +449,11 @@ def roughing_study_panel_runs_and_applies(run):
     rows = shown_rows()
     vr = {name: shown[1] for name, shown in rows.items()}
     run.notes["roughing study"] = {"rows": list(rows), "V_r %": vr, "status": study.form.status.text()}
-    run.check("the table has S1 and S3 with their V_r", sorted(rows) == ["S1", "S3"] and all(0 < v < 100 for v in vr.values()),
+    run.check("the table has S1 and S3 with step-up and their V_r", sorted(rows) == ["S1+su", "S3+su"] and
+              all(0 < v < 100 for v in vr.values()),
               str(run.notes["roughing study"]))
-    run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3", 100) < vr.get("S1", 0), str(vr))
-    measured = {r.row["strategy"]: (r.row["vr"], r.row["feed_mm"]) for r in study.results}
+    run.check("S3 along the slot leaves less than Z-level S1", vr.get("S3+su", 100) < vr.get("S1+su", 0), str(vr))
+    measured = {r.row["strategy"] + "+su": (r.row["vr"], r.row["feed_mm"]) for r in study.results}
     for column, order in ((1, QtCore.Qt.AscendingOrder), (1, QtCore.Qt.DescendingOrder), (3, QtCore.Qt.AscendingOrder)):
         table.sortItems(column, order)
         shown = shown_rows()
@@ -462,8 +465,8 @@ def roughing_study_panel_runs_and_applies(run):
     run.check_table_reads("Roughing study table", table, roughing_study_panel.KEY_COLUMNS)
     check_study_maps(study)
     run.screenshot("roughing_study_panel")
-    table.selectRow(shown_rows()["S3"][0])
-    run.check("the row labelled S3 is the one selected", study.selected() == "S3", str(study.selected()))
+    table.selectRow(shown_rows()["S3+su"][0])
+    run.check("the row labelled S3 is the one selected", study.selected() == "S3|step-up", str(study.selected()))
     node = getattr(study, "map_node", None)
     cloud = node.getChild(3) if node is not None else None
     count = cloud.vertexProperty.getValue().vertex.getNum() if cloud is not None else 0
@@ -472,16 +475,16 @@ def roughing_study_panel_runs_and_applies(run):
     Gui.SendMsgToActiveView("ViewFit")
     run.screenshot("roughing_study_stock_map")
     if node is not None:
-        check_stock_map_legend(node.getChild(node.getNumChildren() - 1), study.result_of("S3").stock_map[2])
+        check_stock_map_legend(node.getChild(node.getNumChildren() - 1), study.result_of("S3|step-up").stock_map[2])
     op = study.apply()
     status = study.form.status.text()
     run.notes["roughing study"]["applied"] = status
-    run.check("Apply says S3 and sets S3 on every region", op is not None and status.startswith("S3 applied")
+    run.check("Apply says S3 and sets S3 on every region", op is not None and status.startswith("S3 step-up applied")
               and slot.Strategy.startswith("S3") and slot.Region == 0, status)
     if op is not None:
         run.wait_until(lambda: run.valid(op) and op.Passes > 0, 60.0, "the applied operation computed")
         run.check("the applied operation has passes on the regions the row measured",
-                  op.Passes > 0 and op.RegionsSwept == study.result_of("S3").row["regions"], status)
+                  op.Passes > 0 and op.RegionsSwept == study.result_of("S3|step-up").row["regions"], status)
     study.reject()
     run.wait_until(lambda: not run.task_dialog_open(), 20.0, "the panel closed")
 

@@ -64,8 +64,9 @@ def slot_with_a_job_without_a_roughing_tool(run):
 
 @run.step
 def study_apply_is_undone_in_one_step(run):
-    """Apply adds the operation, the paper's torus controller and its ToolBit (with the ToolBit's body, copied
-    from its shape file); one undo of FreeCAD takes all of them away."""
+    """Apply of a rest row adds the operation, the paper's torus controller and its ToolBit (with the ToolBit's
+    body, copied from its shape file), and the rest roughing after it (its own Roughing volume, a Ø4 torus
+    controller, RestFrom the first); one undo of FreeCAD takes all of them away."""
     from hsmplanner.gui import roughing_study_panel
 
     document = FreeCAD.ActiveDocument
@@ -77,6 +78,8 @@ def study_apply_is_undone_in_one_step(run):
     study = roughing_study_panel.RoughingStudyPanel.active
     for name, box in study.form.strategies.items():
         box.setChecked(name == "S1")
+    for key, box in study.form.variants.items():
+        box.setChecked(key == roughing_study_panel.VARIANTS[2][3])  # step-up, then the rest roughing
     study.form.resolution.setValue(2.0)  # coarse: only Apply is tested here
     study.run()
     study.form.table.selectRow(0)
@@ -91,9 +94,19 @@ def study_apply_is_undone_in_one_step(run):
     run.notes["apply added"] = added
     run.check("Apply added the operation, a tool controller and its ToolBit", op.Name in added and
               op.ToolController.Name in added and op.ToolController.Tool.Name in added, str(added))
+    rest = [o for o in job.Operations.Group if getattr(o, "RestFrom", None) == op]
+    run.check("and the rest roughing after it, on its own S3 volume with the Ø4 torus", len(rest) == 1 and
+              rest[0].Name in added and rest[0].Volume.Name in added and rest[0].Volume.Strategy.startswith("S3")
+              and abs(rest[0].ToolController.Tool.Diameter.Value - 4.0) < 1e-9, str(added))
+    if rest:
+        run.wait_until(lambda: run.valid(rest[0]) and "Invalid" not in rest[0].State, 60.0, "the rest roughing computed")
+        run.notes["rest roughing"] = {"passes": rest[0].Passes, "cut mm": rest[0].CuttingLength.Value,
+                                      "closest mm": rest[0].ClosestApproach.Value}
+        run.check("the rest roughing computed, clear of the part", rest[0].ClosestApproach.Value >= 0.49 or
+                  rest[0].Passes == 0, str(run.notes["rest roughing"]))
     run.notes["undo names"] = list(document.UndoNames[:3])
-    run.check("Apply is the last undo step", document.UndoNames[:1] == ["Apply roughing strategy S1"],
-              str(document.UndoNames[:3]))
+    run.check("Apply is the last undo step",
+              document.UndoNames[:1] == ["Apply roughing strategy S1 step-up + rest S3 Ø4"], str(document.UndoNames[:3]))
     Gui.runCommand("Std_Undo")
     left = sorted(set(names(document)) - set(before))
     gone = sorted(set(before) - set(names(document)))
@@ -103,6 +116,10 @@ def study_apply_is_undone_in_one_step(run):
               str([c.Label for c in job.Tools.Group]))
     run.check("the Job's operations as before", not job.Operations.Group, str([o.Label for o in job.Operations.Group]))
     run.screenshot("roughing_paths_apply_undone")
+    for key, box in study.form.variants.items():  # the next step draws the step-up operation alone
+        box.setChecked(key == roughing_study_panel.VARIANTS[1][3])
+    study.run()
+    study.form.table.selectRow(0)
     state["slot_op"] = study.apply()  # again: the operation the next step draws
     run.wait_until(lambda: run.valid(state["slot_op"]) and state["slot_op"].Passes > 0, 60.0,
                    "the operation applied again")

@@ -18,9 +18,9 @@ def fmt(value):
     return "0" if text in ("-0", "") else text
 
 
-def move(code, x=None, y=None, z=None, **words):
+def move(code, x=None, y=None, z=None, a=None, b=None, c=None, **words):
     parts = [code]
-    for name, value in (("X", x), ("Y", y), ("Z", z)):
+    for name, value in (("X", x), ("Y", y), ("Z", z), ("A", a), ("B", b), ("C", c)):
         if value is not None:
             parts.append(name + fmt(value))
     for name, value in words.items():
@@ -124,6 +124,67 @@ def sine(chord=0.5, length=100.0, amplitude=5.0, wavelength=25.0):
     return body
 
 
+def rotary_chain(centre, radius=30.0, chords=200, turn=360.0, tilt=None):
+    """A circle of the tool tip (workpiece frame) as straight chords, C turning with it by turn/chords per chord
+    (1.8 degrees and 0.94 mm on R 30: the chains of short 5-axis blocks a post writes for a turned part);
+    `centre` on the C axis (0, 0) or off it. Starts with a move to the circle's first point (at +X from the
+    centre), with the tilting axis `tilt` = (letter, degrees) set there."""
+    cx, cy = centre
+    first = {"b" if tilt and tilt[0] == "B" else "a": tilt[1]} if tilt else {}
+    body = [move("G1", x=cx + radius, y=cy, **first)]
+    for i in range(1, chords + 1):
+        angle = 2 * math.pi * i / chords
+        body.append(move("G1", x=cx + radius * math.cos(angle), y=cy + radius * math.sin(angle), c=turn * i / chords))
+    return body
+
+
+def pole_line():
+    """A line of the tip beside the pole: A at 0.5 degrees, C swinging 180 degrees over 40 mm, as a post writes
+    a tool axis passing 0.5 degrees from C's axis."""
+    return [move("G1", x=-20, y=2, a=0.5), move("G1", x=20, y=2, a=0.5, c=180)]
+
+
+def xyzac_programs():
+    """The 5-axis programs on the table A/C trunnion (xyzac-trt-kins, TCP: X Y Z are the tool tip)."""
+    return {
+        "ac_01_c_turn_fixed_tip": program("C turns 90 degrees about a fixed tip 50 mm off its axis", "G64", 3000,
+                                          [move("G1", x=50), move("G1", c=90, F=3600)]),
+        "ac_02_c_turn_fast": program("C turns 360 degrees at F60000 deg/min, above its speed limit", "G64", 3000,
+                                     [move("G1", x=50), move("G1", c=360, F=60000)]),
+        "ac_03_a_tilt": program("A tilts 60 degrees about a fixed tip", "G64", 3000,
+                                [move("G1", y=30, z=20), move("G1", a=60, F=1800)]),
+        "ac_04_line_c": program("a 100 mm line turning C 90 degrees", "G64", 3000, [move("G1", x=100, c=90)]),
+        "ac_05_line_a_c": program("a line in X Y Z turning A and C", "G64", 3000,
+                                  [move("G1", x=60, y=20, z=-10, a=30, c=45)]),
+        "ac_06_pole_f2000": program("tip line beside the pole, C swings 180 degrees", "G64", 2000, pole_line()),
+        "ac_07_pole_f6000": program("tip line beside the pole, C swings 180 degrees", "G64", 6000, pole_line()),
+        "ac_08_chain_c_axis_f2000": program("200 chords of R 30 about C's axis, C turning with them", "G64", 2000,
+                                            rotary_chain((0, 0))),
+        "ac_09_chain_c_axis_f6000": program("200 chords of R 30 about C's axis, C turning with them", "G64", 6000,
+                                            rotary_chain((0, 0))),
+        "ac_10_chain_offset_f2000": program("200 chords of R 30 about X40 Y0, C turning with them", "G64", 2000,
+                                            rotary_chain((40, 0))),
+        "ac_11_chain_offset_f6000": program("200 chords of R 30 about X40 Y0, C turning with them", "G64", 6000,
+                                            rotary_chain((40, 0))),
+        "ac_12_chain_c_axis_g61": program("200 chords of R 30 about C's axis, C turning, exact stop", "G61", 2000,
+                                          rotary_chain((0, 0))),
+        "ac_13_chain_tilted_p001": program("200 chords of R 30 at A 30, C turning, G64 P0.01 as the posts write",
+                                           "G64 P0.01", 3000, rotary_chain((0, 0), tilt=("A", 30))),
+    }
+
+
+def xyzbc_programs():
+    """The 5-axis programs on the table B/C trunnion (xyzbc-trt-kins, TCP)."""
+    return {
+        "bc_01_b_tilt": program("B tilts 45 degrees about a fixed tip", "G64", 3000,
+                                [move("G1", x=30, z=20), move("G1", b=45, F=1800)]),
+        "bc_02_line_b_c": program("a line in X Y Z turning B and C", "G64", 3000,
+                                  [move("G1", x=50, y=30, z=-5, b=-30, c=60)]),
+        "bc_03_chain_tilted": program("200 chords of R 30 about C's axis at B 30, C turning with them", "G64", 3000,
+                                      rotary_chain((0, 0), tilt=("B", 30))),
+    }
+
+
 def all_programs():
     pocket_title = "pocket 60 x 30 mm zig-zag, 2 mm step-overs at 135 degrees"
     return {
@@ -149,12 +210,14 @@ def all_programs():
 
 
 def main():
-    os.makedirs(PROGRAMS, exist_ok=True)
-    for name, lines in all_programs().items():
-        path = os.path.join(PROGRAMS, name + ".ngc")
-        with open(path, "w") as f:
-            f.write("\n".join(lines) + "\n")
-        print(f"{path}: {len(lines)} lines")
+    for folder, programs in ((PROGRAMS, all_programs()), (PROGRAMS + "_xyzac", xyzac_programs()),
+                             (PROGRAMS + "_xyzbc", xyzbc_programs())):
+        os.makedirs(folder, exist_ok=True)
+        for name, lines in programs.items():
+            path = os.path.join(folder, name + ".ngc")
+            with open(path, "w") as f:
+                f.write("\n".join(lines) + "\n")
+            print(f"{path}: {len(lines)} lines")
     return 0
 
 

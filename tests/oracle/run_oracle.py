@@ -2,7 +2,8 @@
 """LinuxCNC 2.9 as an oracle for the feed-rate simulator (docs/oracle.md).
 
 For each G-code program: runs LinuxCNC headless in simulation (a configuration written into a temporary
-folder from tests/oracle/machine.json: trivkins, 3 joints, 1 ms servo thread, joint commands looped back to
+folder from the program's machine file by oracle_config.py: trivkins and 3 joints, or a table trunnion's
+xyzac-trt-kins / xyzbc-trt-kins and 5 joints in TCP mode; 1 ms servo thread, joint commands looped back to
 feedback, our DISPLAY program lcnc_display.py driving it through the `linuxcnc` Python module), measures
 its motion time by counting servo cycles in HAL (the `sampler` component samples motion.current-vel and the
 joint positions on the servo thread; halsampler writes them to a file), runs hsm-feedsim on the same program
@@ -10,13 +11,15 @@ with the same machine file, and prints and writes the table program, LinuxCNC s,
 
     /usr/bin/python3 tests/oracle/run_oracle.py [PROGRAM ...] [--out build/oracle] [--max-error 2]
 
-Without programs: tests/oracle/programs/*.ngc and tests/golden/linuxcnc_fixed.ngc. Writes OUT/oracle.md,
+Without programs: tests/oracle/programs/*.ngc and tests/golden/linuxcnc_fixed.ngc on machine.json,
+programs_xyzac/*.ngc on machine_xyzac.json, programs_xyzbc/*.ngc on machine_xyzbc.json. Writes OUT/oracle.md,
 OUT/oracle.csv and per program OUT/<name>/ (LinuxCNC's sampled trace and per-line speeds, hsm-feedsim's
 summary, blocks and trace). Exit code: 0 (the table is a measurement), 2 if LinuxCNC failed on a program
 (its log tail is printed), 3 if hsm-feedsim failed on one, 1 with --max-error when an |error| exceeds it.
 Standard library only.
 """
 import argparse
+import collections
 import csv
 import fcntl
 import json
@@ -32,17 +35,18 @@ import tempfile
 import time
 import uuid
 
+from oracle_config import Machine, write_config
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
-DEFAULT_PROGRAMS = os.path.join(HERE, "programs")
+# the default set: each folder of programs with the machine it runs on (3 axes on trivkins; the table trunnions
+# on xyzac-trt-kins and xyzbc-trt-kins in TCP mode), and programs from elsewhere run on the 3-axis machine
+SETS = [("programs", "machine.json"), ("programs_xyzac", "machine_xyzac.json"), ("programs_xyzbc", "machine_xyzbc.json")]
 EXTRA_PROGRAMS = [os.path.join(REPO, "tests", "golden", "linuxcnc_fixed.ngc")]
 RUN_LOCK = "/tmp/hsm-oracle.lock"
 MARGIN_S = 90.0  # LinuxCNC's start and shutdown, on top of the program's length bound
 LINUXCNC_LOCK = "/tmp/linuxcnc.lock"
 LINUXCNC_PROCESSES = ("rtapi_app", "milltask", "linuxcncsvr", "io", "halsampler", "linuxcnc", "lcnc_display.py")
-# sampler columns (after halsampler's sample number): motion.current-vel, joint 0..2 motor-pos-cmd,
-# motion.program-line, motion.in-position, motion.motion-type, motion.servo.last-period
-SAMPLER_CFG = "ffffsbsu"
 
 
 class RunFailed(Exception):
@@ -128,108 +132,6 @@ def kill_marked(marker):
     return killed
 
 
-# ---------------------------------------------------------------------------------------------------------
-# The configuration
-
-def load_machine(path):
-    with open(path) as f:
-        machine = json.load(f)
-    if machine.get("controller") != "linuxcnc":
-        sys.exit(f"error: {path}: controller must be 'linuxcnc' for the LinuxCNC oracle")
-    axes = {}
-    for name in "XYZ":
-        axis = machine["axes"][name]
-        if axis["rapid_velocity_mm_min"] != axis["max_velocity_mm_min"]:
-            sys.exit(f"error: {path}: axes.{name}: LinuxCNC rapids at MAX_VELOCITY, so rapid_velocity_mm_min "
-                     f"must equal max_velocity_mm_min")
-        axes[name] = (axis["max_velocity_mm_min"] / 60.0, axis["max_acceleration_m_s2"] * 1000.0)
-    period_ms = machine["interpolation_cycle_ms"]
-    if not period_ms > 0:
-        sys.exit(f"error: {path}: interpolation_cycle_ms must be > 0 (it is LinuxCNC's servo period)")
-    return machine, axes, period_ms / 1000.0
-
-
-def write_config(folder, program, axes, period, depth, run_timeout, fallback_uid):
-    """INI, HAL, the DISPLAY wrapper and an empty tool table in folder; returns the INI's path."""
-    vmax = math.sqrt(sum(v * v for v, _ in axes.values()))
-    amax = math.sqrt(sum(a * a for _, a in axes.values()))
-    ini = [
-        "# Written by tests/oracle/run_oracle.py: a headless LinuxCNC 2.9 simulation for the oracle (docs/oracle.md)",
-        "[EMC]", "VERSION = 1.1", "MACHINE = hsm-oracle", "DEBUG = 0",
-        "[DISPLAY]", f"DISPLAY = {folder}/display", "CYCLE_TIME = 0.100",
-        "# the planner sizes blend arcs for F x MAX_FEED_OVERRIDE: 1.0, so that it plans for F itself",
-        "MAX_FEED_OVERRIDE = 1.0",
-        "[ORACLE]", f"PROGRAM = {program}", f"SAMPLES = {folder}/samples.txt", f"STATUS = {folder}/status.json",
-        f"RUN_TIMEOUT = {run_timeout:.0f}",
-        "[TASK]", "TASK = milltask", "CYCLE_TIME = 0.001",
-        "[RS274NGC]", f"PARAMETER_FILE = {folder}/oracle.var",
-        "[EMCMOT]", "EMCMOT = motmod", "COMM_TIMEOUT = 1.0", "BASE_PERIOD = 0",
-        f"SERVO_PERIOD = {round(period * 1e9)}",
-        "[EMCIO]", "EMCIO = io", "CYCLE_TIME = 0.100", f"TOOL_TABLE = {folder}/tool.tbl",
-        "[HAL]", f"HALFILE = {folder}/oracle.hal",
-        "[TRAJ]", "COORDINATES = X Y Z", "LINEAR_UNITS = mm", "ANGULAR_UNITS = degree",
-        "# the vector limits are the norms of the axis limits: they never bind, the axis limits do",
-        f"DEFAULT_LINEAR_VELOCITY = {axes['X'][0]:.6g}", f"MAX_LINEAR_VELOCITY = {vmax:.6g}",
-        f"DEFAULT_LINEAR_ACCELERATION = {amax:.6g}", f"MAX_LINEAR_ACCELERATION = {amax:.6g}",
-        "# LinuxCNC 2.9's defaults, written out; the optimization depth is the machine file's look-ahead",
-        "ARC_BLEND_ENABLE = 1", "ARC_BLEND_FALLBACK_ENABLE = 0",
-        f"ARC_BLEND_OPTIMIZATION_DEPTH = {depth}", "ARC_BLEND_GAP_CYCLES = 4", "ARC_BLEND_RAMP_FREQ = 100",
-        "ARC_BLEND_KINK_RATIO = 0.1",
-        "[KINS]", "KINEMATICS = trivkins", "JOINTS = 3",
-    ]
-    for name, (v, a) in axes.items():
-        ini += [f"[AXIS_{name}]", f"MAX_VELOCITY = {v:.6g}", f"MAX_ACCELERATION = {a:.6g}",
-                "MIN_LIMIT = -10000", "MAX_LIMIT = 10000"]
-    for joint, (v, a) in enumerate(axes.values()):
-        ini += [f"[JOINT_{joint}]", "TYPE = LINEAR", "HOME = 0", f"MAX_VELOCITY = {v:.6g}",
-                f"MAX_ACCELERATION = {a:.6g}", "MIN_LIMIT = -10000", "MAX_LIMIT = 10000",
-                "FERROR = 1000", "MIN_FERROR = 1000",
-                "# homes in place at once: no search, no latch, no index",
-                "HOME_OFFSET = 0", "HOME_SEARCH_VEL = 0", "HOME_LATCH_VEL = 0", "HOME_USE_INDEX = NO",
-                "HOME_SEQUENCE = 0"]
-    hal = [
-        "# Written by tests/oracle/run_oracle.py (docs/oracle.md)",
-        "loadrt trivkins",
-        "loadrt [EMCMOT]EMCMOT base_period_nsec=[EMCMOT]BASE_PERIOD servo_period_nsec=[EMCMOT]SERVO_PERIOD "
-        "num_joints=[KINS]JOINTS",
-        f"loadrt sampler depth=16384 cfg={SAMPLER_CFG}",
-        "addf motion-command-handler servo-thread",
-        "addf motion-controller servo-thread",
-        "addf sampler.0 servo-thread",
-        "# sampling starts when the DISPLAY program runs the G-code and stops after it",
-        "setp sampler.0.enable 0",
-        "# position commands loop back to feedback, as in the sim configurations",
-        "net x-pos joint.0.motor-pos-cmd => joint.0.motor-pos-fb sampler.0.pin.1",
-        "net y-pos joint.1.motor-pos-cmd => joint.1.motor-pos-fb sampler.0.pin.2",
-        "net z-pos joint.2.motor-pos-cmd => joint.2.motor-pos-fb sampler.0.pin.3",
-        "net current-vel motion.current-vel => sampler.0.pin.0",
-        "net program-line motion.program-line => sampler.0.pin.4",
-        "net in-position motion.in-position => sampler.0.pin.5",
-        "net motion-type motion.motion-type => sampler.0.pin.6",
-        "net servo-period motion.servo.last-period => sampler.0.pin.7",
-        "net estop-loop iocontrol.0.user-enable-out iocontrol.0.emc-enable-in",
-        "net tool-prep-loop iocontrol.0.tool-prepare iocontrol.0.tool-prepared",
-        "net tool-change-loop iocontrol.0.tool-change iocontrol.0.tool-changed",
-    ]
-    with open(os.path.join(folder, "oracle.ini"), "w") as f:
-        f.write("\n".join(ini) + "\n")
-    with open(os.path.join(folder, "oracle.hal"), "w") as f:
-        f.write("\n".join(hal) + "\n")
-    with open(os.path.join(folder, "tool.tbl"), "w") as f:
-        f.write("")
-    wrapper = os.path.join(folder, "display")
-    with open(wrapper, "w") as f:
-        f.write(f"#!/bin/sh\nexec /usr/bin/python3 {os.path.join(HERE, 'lcnc_display.py')} \"$@\"\n")
-    os.chmod(wrapper, 0o755)
-    # rtapi_app (running as fallback_uid when we are root) makes its socket RTAPI_FIFO_PATH in here
-    rtapi = os.path.join(folder, "rtapi")
-    os.mkdir(rtapi)
-    if fallback_uid is not None:
-        os.chown(rtapi, fallback_uid, -1)
-    os.chmod(folder, 0o755)
-    return os.path.join(folder, "oracle.ini")
-
-
 def fallback_uid():
     """rtapi_app refuses to run as root unless RTAPI_UID names the user it drops to."""
     if os.geteuid() != 0:
@@ -249,7 +151,7 @@ WORD = re.compile(r"([A-Za-z])\s*([-+]?\d*\.?\d+)")
 def naive_time(path):
     """Σ length / F + dwells over the program (arcs counted as full circles, rapids at 1000 mm/min): a generous
     upper bound of the motion time of any sane program, for the timeout only."""
-    pos, feed, motion, total = [0.0, 0.0, 0.0], 1000.0, 0, 0.0
+    pos, angles, feed, motion, total = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], 1000.0, 0, 0.0
     with open(path, errors="replace") as f:
         for raw in f:
             text = re.sub(r"\(.*?\)", "", raw.split(";")[0])
@@ -262,7 +164,7 @@ def naive_time(path):
                     if g in (0, 1, 2, 3):
                         motion = int(g)
                     dwell = dwell or g == 4
-                elif letter in "XYZFRIJKP":
+                elif letter in "XYZABCFRIJKP":
                     values[letter] = float(number)
             if dwell:
                 total += abs(values.get("P", 0.0))
@@ -270,6 +172,10 @@ def naive_time(path):
             if "F" in values and values["F"] > 0:
                 feed = values["F"]
             target = [values.get(a, p) for a, p in zip("XYZ", pos)]
+            turned = [values.get(a, p) for a, p in zip("ABC", angles)]
+            if target == pos and turned != angles:  # the rotary axes alone: F in deg/min
+                total += math.dist(turned, angles) / (1000.0 if motion == 0 else feed) * 60.0
+            angles = turned
             if target != pos:
                 length = math.dist(target, pos)
                 if motion in (2, 3):
@@ -293,13 +199,13 @@ def tail(path, lines=40):
         return ""
 
 
-def run_linuxcnc(program, axes, period, depth):
+def run_linuxcnc(program, machine):
     """Runs the program in LinuxCNC; returns (samples path, status dict, folder, log text). Raises RunFailed
     (with the log's tail) when LinuxCNC fails, after ending whatever of it is left."""
     limit = 30.0 + 10.0 * naive_time(program)
     folder = tempfile.mkdtemp(prefix="hsm-oracle-")
     uid = fallback_uid()
-    ini = write_config(folder, program, axes, period, depth, limit, uid)
+    ini = write_config(machine, folder, program, limit, uid)
     marker = uuid.uuid4().hex
     env = {
         "PATH": "/usr/bin:/bin:/usr/sbin:/sbin", "HOME": folder, "LANG": "C.UTF-8",
@@ -366,6 +272,11 @@ def run_linuxcnc(program, axes, period, depth):
 # ---------------------------------------------------------------------------------------------------------
 # Reading the samples
 
+# one servo cycle: the planner's path speed (mm/s, or deg/s on a move of the rotary axes alone), the joints'
+# position commands (mm, deg), the program line, in-position, the motion type and the cycle's real period
+Sample = collections.namedtuple("Sample", "v joints line inpos mtype period")
+
+
 def read_samples(path):
     rows, overrun_lines, gaps, previous = [], 0, 0, None
     with open(path) as f:
@@ -380,14 +291,15 @@ def read_samples(path):
             if previous is not None and tag != previous + 1:
                 gaps += 1
             previous = tag
-            rows.append((float(fields[1]), float(fields[2]), float(fields[3]), float(fields[4]), int(fields[5]),
-                         int(fields[6]), int(fields[7]), int(fields[8])))
+            joints = len(fields) - 6
+            rows.append(Sample(float(fields[1]), tuple(float(x) for x in fields[2:2 + joints]), int(fields[-4]),
+                               int(fields[-3]), int(fields[-2]), int(fields[-1])))
     return rows, overrun_lines, gaps
 
 
 def analyse(rows, period):
     """Motion time and what the sampled servo cycles show (speeds in mm/s, accelerations in mm/s²)."""
-    vel = [r[0] for r in rows]
+    vel = [r.v for r in rows]
     moving = [i for i, v in enumerate(vel) if v > 0.0]
     if not moving:
         raise RunFailed("LinuxCNC did not move (motion.current-vel stayed 0)")
@@ -412,14 +324,14 @@ def analyse(rows, period):
     # axis speeds and accelerations from the joint position commands (after the cubic interpolator)
     lo, hi = max(first - 5, 1), min(last + 10, len(rows) - 1)
     for axis in range(3):
-        p = [r[1 + axis] for r in rows]
+        p = [r.joints[axis] for r in rows]
         vmax = max(abs(p[i] - p[i - 1]) for i in range(lo, hi + 1)) / period
         amax = max(abs(p[i + 1] - 2 * p[i] + p[i - 1]) for i in range(lo, hi)) / period ** 2
         result["axis_vel_max_mm_s_" + "xyz"[axis]] = vmax
         result["axis_acc_max_mm_s2_" + "xyz"[axis]] = amax
     # the servo thread's real periods (motion.servo.last-period, in CPU clock ticks; the median is taken as
     # the nominal period): late cycles (> 1.5 periods) and the catch-up cycles that follow them (< 0.5)
-    periods = sorted(r[7] for r in rows[first:last + 1])
+    periods = sorted(r.period for r in rows[first:last + 1])
     median = periods[len(periods) // 2] if periods else 0
     result["late_cycles"] = sum(1 for q in periods if median and q > 1.5 * median)
     result["catch_up_cycles"] = sum(1 for q in periods if median and q < 0.5 * median)
@@ -427,7 +339,7 @@ def analyse(rows, period):
     # per program line (motion.program-line)
     lines, order = {}, []
     for i in range(first, last + 1):
-        line = rows[i][4]
+        line = rows[i].line
         if line not in lines:
             lines[line] = []
             order.append(line)
@@ -437,14 +349,16 @@ def analyse(rows, period):
     return result, first, last
 
 
-def write_trace(path, rows, first, last, period):
+def write_trace(path, rows, first, last, period, axes):
+    """Every servo cycle: t, the joints' positions (X Y Z in mm, rotary in deg), feed, line, in-position, type."""
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["t_s", "x_mm", "y_mm", "z_mm", "feed_mm_min", "line", "in_position", "motion_type"])
+        out.writerow(["t_s"] + [f"{a.lower()}_{'mm' if a in 'XYZ' else 'deg'}" for a in axes]
+                     + ["feed_mm_min", "line", "in_position", "motion_type"])
         for i in range(max(first - 1, 0), min(last + 20, len(rows))):
-            v, x, y, z, line, inpos, mtype, _ = rows[i]
-            out.writerow([f"{(i - first + 1) * period:.4f}", f"{x:.6f}", f"{y:.6f}", f"{z:.6f}", f"{v * 60:.1f}",
-                          line, inpos, mtype])
+            r = rows[i]
+            out.writerow([f"{(i - first + 1) * period:.4f}"] + [f"{q:.6f}" for q in r.joints]
+                         + [f"{r.v * 60:.1f}", r.line, r.inpos, r.mtype])
 
 
 def write_per_line(path, per_line, period):
@@ -493,6 +407,14 @@ def fmt(value, digits=3):
     return "—" if value is None else f"{value:.{digits}f}"
 
 
+def by_machine(results):
+    """(machine file, its results) in the order the machines first appear."""
+    groups = {}
+    for r in results:
+        groups.setdefault(r["machine"], []).append(r)
+    return list(groups.items())
+
+
 def markdown_table(results):
     lines = ["| program | LinuxCNC s | ours s | error % |", "|---|---:|---:|---:|"]
     for r in results:
@@ -519,29 +441,52 @@ def markdown_details(results):
     return "\n".join(lines)
 
 
+def default_programs():
+    found = []
+    for folder, _ in SETS:
+        path = os.path.join(HERE, folder)
+        if os.path.isdir(path):
+            found += sorted(os.path.join(path, name) for name in os.listdir(path) if name.endswith(".ngc"))
+        if folder == "programs":
+            found += [p for p in EXTRA_PROGRAMS if os.path.exists(p)]
+    return found
+
+
+def machine_of(program):
+    """The machine file of the set whose folder holds the program; the 3-axis machine for any other."""
+    folder = os.path.dirname(os.path.abspath(program))
+    for name, machine in SETS:
+        if folder == os.path.join(HERE, name):
+            return os.path.join(HERE, machine)
+    return os.path.join(HERE, SETS[0][1])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("programs", nargs="*", help="G-code files (default: tests/oracle/programs/*.ngc and "
+    parser.add_argument("programs", nargs="*", help="G-code files (default: tests/oracle/programs*/*.ngc and "
                         "tests/golden/linuxcnc_fixed.ngc)")
     parser.add_argument("--out", default=os.path.join(REPO, "build", "oracle"), help="output folder")
-    parser.add_argument("--machine", default=os.path.join(HERE, "machine.json"), help="machine JSON (linuxcnc)")
+    parser.add_argument("--machine", default=None, help="machine JSON (linuxcnc) for every program (default: the "
+                        "machine of the program's folder, tests/oracle/machine*.json)")
     parser.add_argument("--feedsim", default=os.path.join(REPO, "build", "bin", "hsm-feedsim"))
     parser.add_argument("--max-error", type=float, default=None,
                         help="exit 1 when a program's |error| exceeds this many percent")
     parser.add_argument("--keep", action="store_true", help="keep the temporary LinuxCNC configurations")
     args = parser.parse_args()
 
-    programs = [os.path.abspath(p) for p in args.programs] or (
-        sorted(os.path.join(DEFAULT_PROGRAMS, name) for name in os.listdir(DEFAULT_PROGRAMS)
-               if name.endswith(".ngc")) + [p for p in EXTRA_PROGRAMS if os.path.exists(p)])
+    programs = [os.path.abspath(p) for p in args.programs] or default_programs()
     for program in programs:
         if not os.path.isfile(program):
             sys.exit(f"error: no such program: {program}")
-    machine, axes, period = load_machine(args.machine)
-    ensure_linuxcnc()
     os.makedirs(args.out, exist_ok=True)
-    machine_file = os.path.join(os.path.abspath(args.out), "machine.json")
-    shutil.copyfile(args.machine, machine_file)
+    machines = {}  # machine file -> (Machine, its copy in --out that hsm-feedsim reads)
+    for program in programs:
+        path = args.machine or machine_of(program)
+        if path not in machines:
+            copy = os.path.join(os.path.abspath(args.out), os.path.basename(path))
+            shutil.copyfile(path, copy)
+            machines[path] = (Machine(path), copy)
+    ensure_linuxcnc()
 
     lock = open(RUN_LOCK, "a")
     try:
@@ -555,19 +500,21 @@ def main():
     started = time.monotonic()
     results, linuxcnc_failed, feedsim_failed = [], [], []
     for program in programs:
+        machine, machine_file = machines[args.machine or machine_of(program)]
+        period = machine.period
         name = os.path.splitext(os.path.basename(program))[0]
         folder = os.path.join(args.out, name)
         os.makedirs(folder, exist_ok=True)
         print(f"{name}: ", end="", flush=True)
         result = {"program": name, "path": program, "linuxcnc_s": None, "ours_s": None, "error_pct": None,
-                  "programmed_mm": None}
+                  "programmed_mm": None, "machine": os.path.basename(machine.path)}
         results.append(result)
         t0 = time.monotonic()
         try:
             running = foreign_linuxcnc()
             if running:
                 raise RunFailed("LinuxCNC processes of the previous run are still running: " + ", ".join(running))
-            samples, status, tmp, _ = run_linuxcnc(program, axes, period, machine["look_ahead_blocks"])
+            samples, status, tmp, _ = run_linuxcnc(program, machine)
             rows, overrun_lines, gaps = read_samples(samples)
             if overrun_lines or gaps or status.get("sampler_overruns"):
                 raise RunFailed(f"the sampler lost samples ({overrun_lines} overrun marks, {gaps} gaps, "
@@ -578,7 +525,7 @@ def main():
             detail["wall_run_s"] = status.get("wall_run_s")
             detail["realtime_delay_reported"] = status.get("realtime_delay_reported")
             detail["messages"] = status.get("messages", [])
-            write_trace(os.path.join(folder, "linuxcnc_trace.csv"), rows, first, last, period)
+            write_trace(os.path.join(folder, "linuxcnc_trace.csv"), rows, first, last, period, machine.axes)
             write_per_line(os.path.join(folder, "linuxcnc_lines.csv"), detail["per_line"], period)
             with open(os.path.join(folder, "linuxcnc.json"), "w") as f:
                 json.dump({k: v for k, v in detail.items() if k != "per_line"}, f, indent=1)
@@ -605,22 +552,24 @@ def main():
               f"({time.monotonic() - t0:.1f} s wall)", flush=True)
 
     wall = time.monotonic() - started
-    table = markdown_table(results)
-    details = markdown_details(results)
+    table = "\n\n".join(f"{name}:\n\n{markdown_table(group)}" for name, group in by_machine(results))
+    details = "\n\n".join(f"{name}:\n\n{markdown_details(group)}" for name, group in by_machine(results))
     built = (time.strftime("%Y-%m-%d %H:%M", time.localtime(os.path.getmtime(args.feedsim)))
              if os.path.exists(args.feedsim) else "missing")
-    header = (f"LinuxCNC oracle: {len(results)} programs on {os.path.relpath(args.machine, REPO)} "
-              f"(servo period {period * 1000:g} ms), {wall:.0f} s wall time; hsm-feedsim built {built}")
+    version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "linuxcnc-uspace"], capture_output=True,
+                             text=True).stdout.strip()
+    header = (f"LinuxCNC oracle: {len(results)} programs on {', '.join(m.kinematics for m, _ in machines.values())} "
+              f"(LinuxCNC {version or 'unknown'}), {wall:.0f} s wall time; hsm-feedsim built {built}")
     with open(os.path.join(args.out, "oracle.md"), "w") as f:
         f.write(f"{header}\n\n{table}\n\nWhat LinuxCNC did (from the sampled servo cycles):\n\n{details}\n")
     with open(os.path.join(args.out, "oracle.csv"), "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["program", "linuxcnc_s", "ours_s", "error_pct", "linuxcnc_cycles", "stop_cycles",
+        out.writerow(["program", "machine", "linuxcnc_s", "ours_s", "error_pct", "linuxcnc_cycles", "stop_cycles",
                       "programmed_mm", "path_mm", "peak_mm_min", "mean_mm_min", "late_servo_cycles",
                       "longest_servo_period_ms"])
         for r in results:
             d = r.get("detail") or {}
-            out.writerow([r["program"], fmt(r["linuxcnc_s"]), fmt(r["ours_s"]),
+            out.writerow([r["program"], r["machine"], fmt(r["linuxcnc_s"]), fmt(r["ours_s"]),
                           "" if r["error_pct"] is None else f"{r['error_pct']:.2f}", d.get("cycles", ""),
                           d.get("stop_cycles", ""), fmt(r.get("programmed_mm")),
                           f"{d['length_mm']:.3f}" if d else "",

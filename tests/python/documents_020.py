@@ -239,60 +239,23 @@ def same_head_comment(obj, saved, now):
     return [] if head == [wanted] else ["head comment %s, expected %s" % (head, wanted)]
 
 
-def same_tool_path(tolerance_mm, angle_tolerance_deg, count_share):
-    """A rule: the recomputed moves and the saved ones lie on each other's path, every tool tip within
-    `tolerance_mm` of the other polyline and its A/C within `angle_tolerance_deg` of the other's there, with a
-    command count within `count_share` of the saved one (a pass's points thinned at other places)."""
+def rebuilt_sweep(passes, saved_cutting_mm):
+    """A rule for a roughing whose sweep is built otherwise today: the head comment as saved, the same number
+    of passes, every move clear of the part by the operation's allowance, and at least the saved cutting
+    length (a better sweep cuts no less)."""
 
     def rule(obj, saved, now):
-        import numpy
-
         problems = [] if [c.Name for c in saved[:1]] == [c.Name for c in now[:1]] else ["head comment changed"]
-        if abs(len(now) - len(saved)) > count_share * len(saved):
-            problems.append("%d commands, %d saved: more than %g %% apart" % (len(now), len(saved),
-                                                                               100 * count_share))
-        old, new = _tips(saved, numpy), _tips(now, numpy)
-        for what, points, polyline in (("recomputed", new, old), ("saved", old, new)):
-            distance, angles = _nearest_on_polyline(points, polyline, numpy)
-            worst = int(numpy.argmax(distance))
-            if distance[worst] > tolerance_mm:
-                problems.append("%s tool tip %d at %s is %.4f mm from the other path (> %g mm)"
-                                % (what, worst, points[worst, :3].round(4).tolist(), distance[worst], tolerance_mm))
-            turned = numpy.abs(points[:, 3:] - angles).max()
-            if turned > angle_tolerance_deg:
-                problems.append("%s A/C differ by %.4f° from the other path's there (> %g°)"
-                                % (what, turned, angle_tolerance_deg))
+        if obj.Passes != passes:
+            problems.append("%d passes, %d saved" % (obj.Passes, passes))
+        allowance, closest = obj.Allowance.Value, obj.ClosestApproach.Value
+        if not closest >= allowance - 0.01:
+            problems.append("closest approach %.4f mm under the allowance %.3f mm" % (closest, allowance))
+        if not obj.CuttingLength.Value >= saved_cutting_mm - 0.01:
+            problems.append("cutting length %.3f mm, %.3f mm saved" % (obj.CuttingLength.Value, saved_cutting_mm))
         return problems
 
     return rule
-
-
-def _tips(commands, numpy):
-    """(x, y, z, a, c) after each motion command (modal: an axis not written keeps its value)."""
-    state, rows = dict(X=0.0, Y=0.0, Z=0.0, A=0.0, C=0.0), []
-    for command in commands:
-        if command.Name in ("G0", "G1", "G2", "G3"):
-            state.update({k: v for k, v in command.Parameters.items() if k in state})
-            rows.append([state[k] for k in "XYZAC"])
-    return numpy.array(rows)
-
-
-def _nearest_on_polyline(points, polyline, numpy, chunk=256):
-    """For each (x, y, z, a, c) of `points`: the distance of its tip to the tool-tip polyline of `polyline`, and
-    the polyline's A/C interpolated at the nearest point (a controller interpolates them along the move)."""
-    start, step = polyline[:-1], polyline[1:] - polyline[:-1]
-    length2 = numpy.maximum((step[:, :3] ** 2).sum(axis=1), 1e-300)
-    distances, angles = numpy.empty(len(points)), numpy.empty((len(points), 2))
-    for first in range(0, len(points), chunk):
-        tips = points[first:first + chunk, None, :3]
-        t = numpy.clip(((tips - start[:, :3]) * step[:, :3]).sum(axis=2) / length2, 0.0, 1.0)
-        nearest = start + t[..., None] * step
-        d = numpy.sqrt(((nearest[..., :3] - tips) ** 2).sum(axis=2))
-        best = d.argmin(axis=1)
-        rows = numpy.arange(len(best))
-        distances[first:first + chunk] = d[rows, best]
-        angles[first:first + chunk] = nearest[rows, best, 3:]
-    return distances, angles
 
 
 class Difference:
@@ -312,13 +275,12 @@ EXPECTED_DIFFERENCES = {
         "'[study]' (0.20 dropped the inner '(' and left 'study))')",
         only_retract_heights(4.01171, 4.0), commands=1502, length_mm=5220.472),
     ("impeller_job.FCStd", "VolumeRoughing"): Difference(
-        "OCCT 7.8: the volume to remove (stock − part, 7 channels) comes out 4e-5 mm³ smaller (of 102840.6 mm³), "
-        "its sub-volumes shift by 1e-5 mm and the passes' points with them, and the passes' chords (0.01 mm "
-        "tolerance) fall at other places: 2 points more. The same 7 passes; every tool tip within 0.0105 mm "
-        "and 0.023° of the saved path (allowed: twice the chord tolerance, 0.1°). One command more since: an "
-        "approach that went down into stock still left as a G0 is split, G0 to just above the stock then a feed",
-        same_tool_path(tolerance_mm=0.02, angle_tolerance_deg=0.1, count_share=0.01), commands=1818,
-        length_mm=1103.760),
+        "our code: the sweep keeps the part out by the cutter grown by the allowance point by point (its corner "
+        "narrower than its flutes, the hub curving up under it taken per point, not as one lift of every band), "
+        "and its flat scales hold over the tool's reach where the hub's normal lines converge: S5 cuts more of "
+        "each channel with fewer links. The same 7 passes, clear of the part by the allowance (0.532 mm "
+        "closest), cutting 605.5 mm where 594.6 mm were saved, 57 s of cycle where 66 s were",
+        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1564, length_mm=958.185),
 }
 
 

@@ -32,3 +32,24 @@ def check_golden(test_case, text, golden):
         test_case.skipTest("golden file %s regenerated (HSM_REGENERATE_GOLDEN=1): not compared" % golden)
     with open(path) as stream:
         test_case.assertEqual(text, stream.read(), "regenerate with HSM_REGENERATE_GOLDEN=1 if the change is meant")
+
+
+def slot_roughing_job(name, strategy, **slot):
+    """A document with the slanted slot block (its properties `slot`), a Roughing volume of `strategy`, a Job
+    with the paper's torus and a Volume roughing of that volume: (document, part, stock, job, controller, op).
+    Not recomputed."""
+    import FreeCAD
+    from hsmplanner.app import roughing_object, roughing_op, roughing_parts
+    from hsmplanner.app.compat import create_job
+
+    document = FreeCAD.newDocument(name)
+    part, stock = roughing_parts.create_slanted_slot_block(document)
+    for key, value in slot.items():
+        setattr(part, key, value)
+    document.recompute()
+    volume = roughing_object.create(part, stock, Strategy=strategy)
+    job = create_job([part])
+    controller = roughing_op.torus_controller(job)
+    op = roughing_op.CreateVolumeRoughing("Roughing", parentJob=job)
+    op.Volume = volume
+    return document, part, stock, job, controller, op

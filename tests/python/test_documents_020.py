@@ -94,18 +94,25 @@ class TheRulesRefuseOtherDifferences(unittest.TestCase):
     def test_no_change_at_all_says_the_entry_is_stale(self):
         self.assertRegex(" ".join(self.retracts([command("(guide [study])")] + self.saved[1:])), "drop it")
 
-    def test_the_tool_path_rule_catches_a_tip_off_the_path(self):
-        rule = documents.same_tool_path(tolerance_mm=0.01, angle_tolerance_deg=0.2, count_share=0.01)
-        saved = [command("(op)")] + [command("G1 X%d Y0 Z0 A0 C0 F5" % x) for x in range(200)]
-        close = [command("(op)")] + [command("G1 X%g Y0.005 Z0 A0.1 C0 F5" % x) for x in [0] + [x + 0.5 for x in range(199)] + [199]]
-        off = close[:101] + [command("G1 X100 Y0.05 Z0 A0 C0 F5")] + close[102:]
-        tilted = close[:101] + [command("G1 X100 Y0 Z0 A1 C0 F5")] + close[102:]
-        self.assertEqual(rule(_Op(), saved, close), [])
-        self.assertRegex(" ".join(rule(_Op(), saved, off)), "recomputed tool tip 100 .* 0.05.. mm from the other path")
-        self.assertRegex(" ".join(rule(_Op(), saved, tilted)), "A/C differ")
-        shortened = close[:150]
-        self.assertRegex(" ".join(rule(_Op(), saved, shortened)), "more than 1 %")
-        self.assertRegex(" ".join(rule(_Op(), saved, shortened)), "saved tool tip .* from the other path")
+    def test_the_rebuilt_sweep_rule_catches_fewer_passes_a_gouge_or_less_cutting(self):
+        rule = documents.rebuilt_sweep(passes=7, saved_cutting_mm=100.0)
+        saved = [command("(op)"), command("G1 X0 Y0 Z0 F5")]
+        now = [command("(op)"), command("G1 X1 Y0 Z0 F5")]
+
+        def op(passes=7, closest=0.53, cutting=101.0):
+            return _Sweep(passes, FreeCAD.Units.Quantity(0.5, "mm"), FreeCAD.Units.Quantity(closest, "mm"),
+                          FreeCAD.Units.Quantity(cutting, "mm"))
+
+        self.assertEqual(rule(op(), saved, now), [])
+        self.assertRegex(" ".join(rule(op(passes=6), saved, now)), "6 passes, 7 saved")
+        self.assertRegex(" ".join(rule(op(closest=0.45), saved, now)), "closest approach 0.4500 mm under")
+        self.assertRegex(" ".join(rule(op(cutting=90.0), saved, now)), "cutting length 90.000 mm, 100.000 mm saved")
+        self.assertRegex(" ".join(rule(op(), saved, [command("(other)")] + now[1:])), "head comment")
+
+
+class _Sweep:
+    def __init__(self, passes, allowance, closest, cutting):
+        self.Passes, self.Allowance, self.ClosestApproach, self.CuttingLength = passes, allowance, closest, cutting
 
 
 class TheDataIsThere(unittest.TestCase):

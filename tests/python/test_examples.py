@@ -113,38 +113,55 @@ if __name__ == "__main__":
 
 
 class RoughingStudyExample(unittest.TestCase):
-    def test_five_strategies_simulated_beside_the_papers_table(self):
+    def test_strategies_as_the_paper_with_step_up_and_rest_roughing_simulated(self):
+        # The example's own quick options: two channels of the impeller, S1 and S5, at 0.4 mm (make demo runs
+        # every channel and strategy at 0.2 mm).
         out = temporary_directory(self)
-        result = run(["freecadcmd", os.path.join(REPO, "examples", "roughing_study.py"), out])
+        result = run(["freecadcmd", os.path.join(REPO, "examples", "roughing_study.py"), out, "channels=2",
+                      "strategies=S1,S5", "resolution=0.4"])
         self.assertEqual(result.returncode, 0, result.stdout[-2000:] + result.stderr[-2000:])
         import csv
         with open(os.path.join(out, "roughing_study.csv")) as stream:
             rows = list(csv.DictReader(stream))
-        self.assertEqual([r["strategy"] for r in rows], ["S1", "S2", "S3", "S4", "S5"])
+        rest = "step-up + rest S3 Ø4"
+        self.assertEqual([(r["strategy"], r["variant"]) for r in rows],
+                         [(s, v) for s in ("S1", "S5") for v in ("paper", "step-up", rest)])
         for row in rows:
             self.assertEqual(float(row["gouge_mm3"]), 0.0, row)
-            self.assertEqual(float(row["resolution_mm"]), 0.2, row)
+            self.assertEqual(float(row["resolution_mm"]), 0.4, row)
             self.assertTrue(0.0 < float(row["vr_beyond_allowance"]) < float(row["vr"]) < 100.0, row)
             self.assertGreater(float(row["stick_out_mm"]), 0.0, row)
             self.assertTrue(0.0 < float(row["in_material"]) <= 100.0, row)
             self.assertTrue(0.0 < float(row["in_material_path"]) < float(row["in_material"]), row)
             self.assertGreater(float(row["time_s"]), float(row["length_over_feed_s"]) * 0.99, row)
             self.assertGreaterEqual(float(row["stock_mean_mm"]), 0.45, row)
-            # No rapid of the joined program takes material out of the stock left (the approaches that would
-            # have are fed in), on all seven channels.
+            # No rapid of the joined programs takes material out of the stock left (the approaches that would
+            # have are fed in), the rest roughing's on what the first left.
             self.assertEqual(int(row["rapid_faults"]), 0, row)
-            self.assertEqual(int(row["regions"]), 7, row)
-        # The continuous 5-axis strategies need the least stick-out (the paper's S4 and S5: 39 and 44 mm).
-        stick = {r["strategy"]: float(r["stick_out_mm"]) for r in rows}
-        self.assertLess(max(stick["S4"], stick["S5"]), min(stick["S1"], stick["S2"], stick["S3"]))
+            self.assertEqual(int(row["regions"]), 2, row)
+        for strategy in ("S1", "S5"):
+            paper, stepped, rested = [r for r in rows if r["strategy"] == strategy]
+            # Each variant leaves less beyond the allowance than the one before, and costs more time.
+            self.assertLess(float(stepped["vr_beyond_allowance"]), float(paper["vr_beyond_allowance"]), strategy)
+            self.assertLess(float(rested["vr_beyond_allowance"]), float(stepped["vr_beyond_allowance"]), strategy)
+            self.assertGreater(float(stepped["time_s"]), float(paper["time_s"]), strategy)
+            self.assertGreater(float(rested["rest_time_s"]), 0.0, strategy)
+            self.assertAlmostEqual(float(rested["time_s"]) - float(rested["rest_time_s"]), float(stepped["time_s"]),
+                                   delta=0.15, msg=strategy)
+        # The continuous 5-axis strategy needs less stick-out than Z-level roughing (the paper's S5: 44 mm, S1 57).
+        stick = {(r["strategy"], r["variant"]): float(r["stick_out_mm"]) for r in rows}
+        self.assertLess(stick[("S5", "paper")], stick[("S1", "paper")])
         import Mesh
         left = Mesh.Mesh(os.path.join(out, "roughing_study_S5_stock.stl"))
         self.assertGreater(left.CountFacets, 1000)
         self.assertGreater(left.Volume, 0.0)
         self.assertTrue(os.path.getsize(os.path.join(out, "roughing_study.FCStd")) > 10000)
-        for picture in ("roughing_study_stock.png", "roughing_study_bars.png"):
+        for picture in ("roughing_study_stock.png", "roughing_study_bars.png", "roughing_study_pareto.png"):
             with open(os.path.join(out, picture), "rb") as stream:
                 self.assertEqual(stream.read(8), b"\x89PNG\r\n\x1a\n")
+        bad = run(["freecadcmd", os.path.join(REPO, "examples", "roughing_study.py"), out, "chanels=2"])
+        self.assertNotEqual(bad.returncode, 0)
+        self.assertIn("unknown option chanels", bad.stdout + bad.stderr)
 
 
 class RoughingPathsExample(unittest.TestCase):

@@ -170,6 +170,10 @@ class Posts(unittest.TestCase):
         self.assertIn("G64 P0.01", text)
         result = self.simulated(text, "linuxcnc-2.9-xyzac-trt")
         np.testing.assert_allclose(result.blocks["rotary_end"][-2], [-15.0, 60.0], atol=1e-9)
+        # LinuxCNC refuses a comment with a '(' inside; the header names the kinematics in brackets
+        for line in text.splitlines():
+            self.assertLessEqual(line.count("("), 1, line)
+        self.assertIn("[table-table, tool tip programmed]", text.splitlines()[0])
         check_golden(self, text, "linuxcnc_5axis_trt.ngc")
 
     def test_feed_rate_analysis_of_a_five_axis_operation(self):

@@ -13,22 +13,15 @@ from hsmplanner.app import roughing_object, roughing_op, roughing_parts
 from hsmplanner.app.compat import create_job, post_module
 from hsmplanner.app.roughing_commands import sweep_commands
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
-from helpers import check_golden, temporary_directory
+from helpers import check_golden, slot_roughing_job, temporary_directory
 
 
 class VolumeRoughing(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.document = FreeCAD.newDocument("VolumeRoughing")
-        part, stock = roughing_parts.create_slanted_slot_block(cls.document)
-        part.SlotWidth = 30.0
-        part.Length = 100.0
-        cls.document.recompute()
-        cls.volume = roughing_object.create(part, stock, Strategy="S3")
-        cls.job = create_job([part])
-        cls.controller = roughing_op.torus_controller(cls.job)
-        cls.op = roughing_op.CreateVolumeRoughing("Roughing", parentJob=cls.job)
-        cls.op.Volume = cls.volume
+        cls.document, _, _, cls.job, cls.controller, cls.op = slot_roughing_job("VolumeRoughing", "S3", SlotWidth=30.0,
+                                                                                Length=100.0)
+        cls.volume = cls.op.Volume
         cls.document.recompute()
 
     @classmethod

@@ -22,7 +22,9 @@ PathOp = cam_module("op")
 _DEFAULTS = roughing._core.roughing.SweepSettings()  # each default written once, in C++
 DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
 MEND_RESOLUTION = 0.2  # mm: the removal model that finds the rapids that would cut the stock left
-LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0)}
+LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0),
+          "StepUpMinimum": (0.0, 100.0), "StepUpScallop": (0.01, 10.0)}
+REST_SPACING = 0.4  # mm between the points of the stock a rest roughing reads (the removal model's at 0.2 mm)
 
 
 def cutter_of(tool):
@@ -133,7 +135,21 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         obj.Allowance = _DEFAULTS.allowance
         obj.addProperty("App::PropertyAngle", "RampAngle", "Roughing", "entries into material ramp at most this steep")
         obj.RampAngle = _DEFAULTS.ramp_angle_deg
+        self.add_step_up_and_rest(obj, _DEFAULTS.step_up_minimum)
         self.add_results(obj)
+
+    def add_step_up_and_rest(self, obj, minimum):
+        """StepUpMinimum (`minimum` where the property is new), StepUpScallop and RestFrom."""
+        if "StepUpMinimum" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyLength", "StepUpMinimum", "Roughing", "intermediate levels inside each "
+                            "slice where the part leans (step-up), no nearer to each other; 0: one level per slice")
+            obj.StepUpMinimum = minimum
+            obj.addProperty("App::PropertyLength", "StepUpScallop", "Roughing", "step-up levels are added while the "
+                            "staircase a leaning wall keeps is thicker than this across it")
+            obj.StepUpScallop = _DEFAULTS.step_up_scallop
+        if "RestFrom" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyLink", "RestFrom", "Roughing", "rest roughing: a Volume roughing before this "
+                            "one; this cuts only the stock it (and its own RestFrom) left")
 
     def add_results(self, obj):
         """The Result properties, those a document saved before them lacks too."""
@@ -144,6 +160,8 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
 
     def opOnDocumentRestored(self, obj):
         self.add_results(obj)
+        # A document saved before step-up keeps the program it was saved with: one level per slice.
+        self.add_step_up_and_rest(obj, 0.0)
 
     def opSetDefaultValues(self, obj, job):
         obj.ToolController = roughing_controller(job, obj.ToolController)
@@ -158,29 +176,13 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, error))
 
     def roughing(self, obj):
-        if obj.Volume is None:
-            raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
-        cutter = check_controller(obj.ToolController)
-        volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
-        if not partitions:
-            raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
+        program = volume_roughing_program(obj)
+        for warning in program.warnings:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
+        if program.fed:
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, roughing.rapid_note(program.fed)))
         machine = feedsim.load_machine(obj.Machine)
-        passes, length, swept = 0, 0.0, []
-        for index, partition in partitions:
-            paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
-                                   radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
-                                   ramp_angle_deg=obj.RampAngle.Value)
-            for warning in paths.warnings:
-                FreeCAD.Console.PrintWarning("%s: region %d: %s\n" % (obj.Label, index + 1, warning))
-            passes += len(paths.passes)
-            length += paths.cutting_length
-            swept.append(paths)
-        # The regions as one program, linked through the air; rapids kept out of the stock the program leaves
-        # at their time; checked whole against the part, links included.
-        moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
-                                                       tool=cutter, resolution=MEND_RESOLUTION)
-        if fed:
-            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, roughing.rapid_note(fed)))
+        moves, cutter, part_brep = program.moves, program.cutter, program.part_brep
         commands = sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed)
         report = self.clearance(commands, moves, machine, part_brep, cutter, obj.Allowance.Value - 0.01)
         if report.too_close:
@@ -188,11 +190,11 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
         mend_leading_comments(self.commandlist, obj)
         self.commandlist.extend(commands)
-        obj.Passes = passes
-        obj.CuttingLength = length
+        obj.Passes = program.passes
+        obj.CuttingLength = program.cutting_length
         obj.ClosestApproach = max(0.0, report.minimum)
-        obj.RegionsSwept = len(partitions)
-        obj.RapidsFed = len(fed)
+        obj.RegionsSwept = program.regions
+        obj.RapidsFed = len(program.fed)
 
     @staticmethod
     def clearance(commands, moves, machine, part_brep, cutter, limit):
@@ -203,8 +205,86 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         return roughing.check_clearance(moves, part_brep, cutter, limit)
 
 
+class Program:
+    """What a Volume roughing operation cuts, before posting: its moves (the regions joined, rapids fed where
+    they would cut the stock left), its cutter, the part's BREP, and what it says."""
+
+    def __init__(self, moves, cutter, part_brep, fed, warnings, passes, cutting_length, regions):
+        self.moves, self.cutter, self.part_brep, self.fed, self.warnings = moves, cutter, part_brep, fed, warnings
+        self.passes, self.cutting_length, self.regions = passes, cutting_length, regions
+
+
+def is_volume_roughing(obj):
+    return obj is not None and type(getattr(obj, "Proxy", None)).__name__ == "ObjectVolumeRoughing"
+
+
+def operations_before(obj):
+    """The chain of RestFrom links of `obj`, first operation first; ValueError for a link that is not a Volume
+    roughing operation, a loop, or one of another part or stock."""
+    chain, seen, link = [], {obj.Name}, getattr(obj, "RestFrom", None)
+    while link is not None:
+        if not is_volume_roughing(link):
+            raise ValueError("RestFrom %s is not a Volume roughing operation: link the roughing this one follows"
+                             % link.Label)
+        if link.Name in seen:
+            raise ValueError("RestFrom of %s leads back to itself (through %s): break the loop" % (obj.Label, link.Label))
+        seen.add(link.Name)
+        chain.insert(0, link)
+        link = getattr(link, "RestFrom", None)
+    return chain
+
+
+def volume_roughing_program(obj):
+    """The Program of a Volume roughing operation `obj`: its Roughing volume's regions swept with its tool and
+    settings, joined; with RestFrom, only the stock the operations before left (simulated at 0.2 mm), S3's
+    setup direction searched on it. ValueError or RuntimeError naming what to set."""
+    if obj.Volume is None:
+        raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
+    cutter = check_controller(obj.ToolController)
+    volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
+    if not partitions:
+        raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
+    before = [(p.moves, p.cutter) for p in map(program_of, operations_before(obj))]
+    for op in operations_before(obj):
+        if op.Volume is None or op.Volume.Proxy.computed(op.Volume)[1:3] != (part_brep, stock_brep):
+            raise ValueError("RestFrom %s roughs another part or stock than %s: link an operation on the same "
+                             "part and stock" % (op.Label, obj.Volume.Label))
+    rest = None
+    if before:
+        rest = roughing.simulate_removal(before[0][0], stock_brep, part_brep, tool=before[0][1], resolution=MEND_RESOLUTION,
+                                         rest_spacing=REST_SPACING, then=before[1:]).rest
+    passes, length, swept, warnings = 0, 0.0, [], []
+    settings = obj.Volume.Proxy.settings(obj.Volume)
+    for index, partition in partitions:
+        if rest is not None and settings["strategy"] == "S3":  # the setup direction for what is left
+            partition = roughing.partition(volume.solids[index], part_brep, "S3", step=partition.step,
+                                           setup_resolution_deg=settings.get("setup_resolution_deg"),
+                                           setup_grid=settings.get("setup_grid"), rest=rest)
+        paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
+                               radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
+                               ramp_angle_deg=obj.RampAngle.Value, step_up_minimum=obj.StepUpMinimum.Value,
+                               step_up_scallop=obj.StepUpScallop.Value, rest=rest)
+        warnings += ["region %d: %s" % (index + 1, w) for w in paths.warnings]
+        passes += len(paths.passes)
+        length += paths.cutting_length
+        swept.append(paths)
+    # The regions as one program, linked through the air; rapids kept out of the stock the program leaves at
+    # their time (after the operations before); checked whole against the part, links included.
+    moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
+                                                   tool=cutter, resolution=MEND_RESOLUTION, after=before or None)
+    program = Program(moves, cutter, part_brep, fed, warnings, passes, length, len(partitions))
+    obj.Proxy.program = program
+    return program
+
+
+def program_of(op):
+    """The Program an operation computed last (kept by its proxy), or computed now."""
+    kept = getattr(op.Proxy, "program", None)
+    return kept if kept is not None else volume_roughing_program(op)
+
+
 def SetupProperties():
-    return ["RadialEngagement", "Allowance", "RampAngle", "Machine"]
+    return ["RadialEngagement", "Allowance", "RampAngle", "Machine", "StepUpMinimum", "StepUpScallop"]
 
 
 def CreateVolumeRoughing(name, obj=None, parentJob=None):

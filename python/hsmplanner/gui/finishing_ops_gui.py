@@ -145,6 +145,9 @@ class ParallelPlaneFinishingPage(_FinishingPage):
         return super().getSignalsForUpdate(obj) + [self.form.angle.valueChanged]
 
 
+NO_REST = "(none: the whole volume)"
+
+
 class VolumeRoughingPage(PathOpGui.TaskPanelPage):
     """Tool controller (a bullnose is the torus), coolant, the Roughing volume, the machine of the A/B/C, the
     radial engagement, allowance and ramp angle; the results of the last computation."""
@@ -164,9 +167,17 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         form.allowance.setToolTip("stock left on the part for finishing")
         form.ramp = _spin(3.0, roughing_op.LIMITS["RampAngle"], decimals=1, suffix=" °")
         form.ramp.setToolTip("entries into material ramp at most this steep")
+        form.stepUp = _spin(1.0, roughing_op.LIMITS["StepUpMinimum"], decimals=2)
+        form.stepUp.setToolTip("step-up: intermediate levels inside each slice where the part leans, at least this "
+                               "far apart; 0: one level per slice (the paper's)")
+        form.scallop = _spin(0.25, roughing_op.LIMITS["StepUpScallop"], decimals=2)
+        form.scallop.setToolTip("step-up levels are added while a leaning wall keeps a staircase thicker than this")
+        form.restFrom = narrow_combo(names=True)
+        form.restFrom.setToolTip("rest roughing: cut only the stock this Volume roughing (before this one) left")
         for label, widget in (("Tool", form.toolController), ("Coolant", form.coolantController),
                               ("Volume", form.volume), ("Machine", form.machine), ("Engagement", form.engagement),
-                              ("Allowance", form.allowance), ("Ramp angle", form.ramp)):
+                              ("Allowance", form.allowance), ("Ramp angle", form.ramp), ("Step-up", form.stepUp),
+                              ("Scallop", form.scallop), ("Rest from", form.restFrom)):
             layout.addRow(label, widget)
         form.result = QtWidgets.QLabel()
         form.result.setWordWrap(True)
@@ -180,6 +191,10 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         return [o for o in FreeCAD.ActiveDocument.Objects
                 if hasattr(o, "Proxy") and type(o.Proxy).__name__ == "RoughingVolume"]
 
+    def roughings_before(self, obj):
+        """The Volume roughing operations this one may follow (not itself)."""
+        return [o for o in FreeCAD.ActiveDocument.Objects if roughing_op.is_volume_roughing(o) and o is not obj]
+
     def getFields(self, obj):
         self.updateToolController(obj, self.form.toolController)
         self.updateCoolant(obj, self.form.coolantController)
@@ -189,13 +204,19 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         obj.RadialEngagement = int(self.form.engagement.value())
         obj.Allowance = self.form.allowance.value()
         obj.RampAngle = self.form.ramp.value()
+        obj.StepUpMinimum = self.form.stepUp.value()
+        obj.StepUpScallop = self.form.scallop.value()
+        before = {o.Label: o for o in self.roughings_before(obj)}
+        obj.RestFrom = before.get(self.form.restFrom.currentText())
 
     def setFields(self, obj):
         self.setupToolController(obj, self.form.toolController)
         self.setupCoolant(obj, self.form.coolantController)
         for box, items, current in ((self.form.volume, [v.Label for v in self.volumes()],
                                      obj.Volume.Label if obj.Volume is not None else None),
-                                    (self.form.machine, obj.getEnumerationsOfProperty("Machine"), obj.Machine)):
+                                    (self.form.machine, obj.getEnumerationsOfProperty("Machine"), obj.Machine),
+                                    (self.form.restFrom, [NO_REST] + [o.Label for o in self.roughings_before(obj)],
+                                     obj.RestFrom.Label if obj.RestFrom is not None else NO_REST)):
             box.blockSignals(True)
             box.clear()
             box.addItems(items)
@@ -205,6 +226,8 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         self.form.engagement.setValue(obj.RadialEngagement)
         self.form.allowance.setValue(obj.Allowance.Value)
         self.form.ramp.setValue(obj.RampAngle.Value)
+        self.form.stepUp.setValue(obj.StepUpMinimum.Value)
+        self.form.scallop.setValue(obj.StepUpScallop.Value)
         self.form.result.setText("%d passes, %.0f mm of cut; closest to the part %.3f mm" % (
             obj.Passes, obj.CuttingLength.Value, obj.ClosestApproach.Value) if obj.Passes else "")
 
@@ -212,7 +235,8 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         f = self.form
         return [f.toolController.currentIndexChanged, f.coolantController.currentIndexChanged,
                 f.volume.currentIndexChanged, f.machine.currentIndexChanged, f.engagement.valueChanged,
-                f.allowance.valueChanged, f.ramp.valueChanged]
+                f.allowance.valueChanged, f.ramp.valueChanged, f.stepUp.valueChanged, f.scallop.valueChanged,
+                f.restFrom.currentIndexChanged]
 
 
 def _no_gate():

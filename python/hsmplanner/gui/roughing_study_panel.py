@@ -8,6 +8,7 @@ from PySide2 import QtCore, QtWidgets
 import hsmplanner
 from hsmplanner.app import roughing_object, roughing_study
 from hsmplanner.app.progress import freecad_progress
+from hsmplanner.plots.roughing_study import short_label
 
 from .task_panel import (PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout,
                          with_controller_selected)
@@ -16,7 +17,13 @@ STRATEGIES = ("S1", "S2", "S3", "S4", "S5")
 PAPER_TORUS = "the paper's Ø8 r1 torus"  # the study's tool when the Job has none roughing can use
 # The table's columns: (heading, row key, tool tip). The figures a choice rests on come first: the Combo View
 # shows about three columns, the others scroll into view.
-TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply makes it)"),
+# The variants of a strategy the study runs: (check box, tip, study_strategy's keywords, what the row says).
+VARIANTS = [("as the paper", "one level per slice, the paper's", dict(step_up=False), roughing_study.PAPER),
+            ("step-up", "intermediate levels inside the slices where the part leans", {}, roughing_study.STEP_UP),
+            ("+ rest Ø4", "step-up, then a rest roughing of what it left with a Ø4 r0.5 torus (S3 on the stock "
+             "left, 4 mm step): two operations", dict(rest=roughing_study.Rest()), roughing_study.Rest().label)]
+TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply makes it): S1 as the paper (one "
+          "level per slice), S1+su with step-up levels, S1+su+r then a rest roughing with a Ø4 torus"),
          ("V_r %", "vr", "stock left, % of the volume to remove (the paper's V_r; its value in the row's tip)"),
          ("time s", "time_s", "machining time simulated on the 840D A/C trunnion (length/feed in the tip)"),
          ("feed mm", "feed_mm", "feed path length (rapids not counted)"),
@@ -28,7 +35,7 @@ TABLE = [("strat.", "strategy", "the strategy whose figures the row holds (Apply
          ("stock max", "stock_max_mm", "stock left on the part, largest, mm"),
          ("held by", "held_by", "what held the speed, share of the time"),
          ("rapids fed", "rapids_fed", "approaches that would have cut stock left as rapids: they feed into it")]
-KEY_COLUMNS = 3  # strategy, V_r, time: in view without scrolling
+KEY_COLUMNS = 3  # strategy (and variant), V_r, time: in view without scrolling
 MAP_HEIGHT_PX = 190  # of one stock map stacked in the panel
 
 
@@ -68,6 +75,15 @@ class RoughingStudyPanel(TaskPanel):
             boxes.addWidget(box, k // 3, k % 3)
             form.strategies[name] = box
         settings.addRow("Strategies", boxes)
+        variants = QtWidgets.QVBoxLayout()
+        form.variants = {}
+        for label, tip, _, key in VARIANTS:
+            box = QtWidgets.QCheckBox(label)
+            box.setChecked(key != VARIANTS[2][3])  # the rest roughing doubles the time: asked for
+            box.setToolTip(tip)
+            variants.addWidget(box)
+            form.variants[key] = box
+        settings.addRow("Variants", variants)
         form.resolution = QtWidgets.QDoubleSpinBox()
         form.resolution.setRange(0.05, 5.0)
         form.resolution.setDecimals(2)
@@ -124,7 +140,7 @@ class RoughingStudyPanel(TaskPanel):
         result = self.result_of(name)
         if result is not None and result.removal is not None:
             _, points, thickness, _ = result.stock_map
-            self.map_node = stock_map_node(points, thickness, title="%s: stock left on the part" % name)
+            self.map_node = stock_map_node(points, thickness, title="%s: stock left on the part" % name.replace("|", " "))
             graph.addChild(self.map_node)
 
     def close_edit(self):
@@ -156,8 +172,9 @@ class RoughingStudyPanel(TaskPanel):
         """The checked strategies one after the other; Cancel stops the one running and keeps the others."""
         volume = self.volume()
         names = [n for n in STRATEGIES if self.form.strategies[n].isChecked()]
-        if volume is None or not names:
-            self.form.status.setText("Choose a Roughing volume and at least one strategy.")
+        variants = [(keywords, key) for _, _, keywords, key in VARIANTS if self.form.variants[key].isChecked()]
+        if volume is None or not names or not variants:
+            self.form.status.setText("Choose a Roughing volume, at least one strategy and one variant.")
             return
         try:
             removal_volume, part_brep, stock_brep, _ = volume.Proxy.computed(volume)
@@ -168,29 +185,34 @@ class RoughingStudyPanel(TaskPanel):
         self.results, self.studied = [], (volume.Name, tool_name)
         partition = dict(step=volume.Step.Value, setup_resolution_deg=volume.SetupResolution.Value,
                          setup_grid=volume.SetupGrid.Value)
+        runs = [(name, keywords, key) for name in names for keywords, key in variants]
         with freecad_progress("Roughing study of %s" % volume.Label) as progress:
-            for k, name in enumerate(names):
-                share = (lambda done, k=k: progress((k + done) / len(names))) if progress else None
+            for k, (name, keywords, key) in enumerate(runs):
+                share = (lambda done, k=k: progress((k + done) / len(runs))) if progress else None
                 if progress:
-                    progress.say("Roughing study of %s: %s (%d of %d)" % (volume.Label, name, k + 1, len(names)))
+                    progress.say("Roughing study of %s: %s %s (%d of %d)" % (volume.Label, name, key, k + 1, len(runs)))
                 try:
                     result = roughing_study.study_strategy(name, part_brep, stock_brep, removal_volume, tool=tool,
                                                            feed_mm_min=feed, resolution=self.form.resolution.value(),
-                                                           progress=share, partition_settings=partition)
+                                                           progress=share, partition_settings=partition, **keywords)
                 except hsmplanner.Cancelled:
-                    self.form.status.setText("Cancelled during %s: the strategies before it are kept." % name)
+                    self.form.status.setText("Cancelled during %s %s: the rows before it are kept." % (name, key))
                     break
                 self.results.append(result)
             else:
                 count = len(removal_volume.solids)
-                self.form.status.setText("%d strategies at %.2f mm, %s joined, %s at F%g."
+                self.form.status.setText("%d rows at %.2f mm, %s joined, %s at F%g."
                                          % (len(self.results), self.form.resolution.value(),
                                             "1 region" if count == 1 else "all %d regions" % count, tool_name, feed))
         self.fill_table()
         self.plots.redraw()
 
-    def result_of(self, name):
-        return next((r for r in self.results if r.row["strategy"] == name), None)
+    @staticmethod
+    def key_of(row):
+        return "%s|%s" % (row["strategy"], row["variant"])
+
+    def result_of(self, key):
+        return next((r for r in self.results if self.key_of(r.row) == key), None)
 
     def fill_table(self):
         table = self.form.table
@@ -202,6 +224,8 @@ class RoughingStudyPanel(TaskPanel):
             for column, (_, key, _) in enumerate(TABLE):
                 item = QtWidgets.QTableWidgetItem()
                 value = values.get(key, "")
+                if key == "strategy":  # with its variant, short: the key columns fit the Combo View
+                    value = short_label(values)
                 if isinstance(value, (int, float)):
                     item.setData(QtCore.Qt.DisplayRole, value)  # sorts as a number
                 else:
@@ -210,7 +234,7 @@ class RoughingStudyPanel(TaskPanel):
                                 % (values["paper_vr"], values["paper_path_mm"], values["paper_in_material"],
                                    values["paper_stick_out_mm"], values.get("length_over_feed_s", "")))
                 if column == 0:
-                    item.setData(QtCore.Qt.UserRole, values["strategy"])
+                    item.setData(QtCore.Qt.UserRole, self.key_of(values))
                 table.setItem(row, column, item)
         table.setSortingEnabled(True)  # before sizing: the headers then leave room for the sort arrow
         table.resizeColumnsToContents()
@@ -224,41 +248,82 @@ class RoughingStudyPanel(TaskPanel):
         return draw_stock_maps(figure, maps, columns=3 if wide else 1, own_scales=True, coordinates=wide)
 
     def apply(self):
-        """The selected strategy on the Roughing volume, all its regions as the study joined them, and a Volume
-        roughing operation in the Job that makes them; the status says what it made against the row."""
-        from hsmplanner.app import roughing_op
-        from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
-
-        name, volume = self.selected(), self.volume()
-        if name is None or volume is None:
+        """The selected row on the Roughing volume, all its regions as the study joined them: a Volume roughing
+        operation in the Job that makes them (one level per slice for the paper's variant), and for a rest row
+        a second one after it — a Roughing volume of the same part and stock with the rest strategy and step,
+        the rest tool's controller, RestFrom the first. The status says what it made against the row."""
+        key, volume = self.selected(), self.volume()
+        if key is None or volume is None:
             return None
+        row = self.result_of(key).row
+        name = row["strategy"]
         document = volume.Document  # the studied volume's, whichever document is active now
         job = job_of(document)
         if job is None:
             self.form.status.setText("No Job in this document: make one (CAM → Job) to add the operation to.")
             return None
-        document.openTransaction("Apply roughing strategy %s" % name)
+        document.openTransaction("Apply roughing strategy %s %s" % (name, row["variant"]))
         try:
-            controller = roughing_op.roughing_controller(job)  # the Job's, or the paper's torus added
-            volume.Strategy = roughing_object.strategy_label(name)
-            volume.Region = 0  # every region, as the row measured them
-            op = with_controller_selected(controller, lambda: add_volume_roughing(job))
-            op.ToolController = controller
-            op.Volume = volume
+            op = self.add_roughing(job, volume, name, row["variant"])
+            if row["variant"] not in (roughing_study.PAPER, roughing_study.STEP_UP):
+                self.add_rest(job, volume, op, roughing_study.Rest())
             document.recompute()
         except Exception as error:  # noqa: BLE001 (whatever FreeCAD raises is said in the panel)
             document.abortTransaction()
             self.form.status.setText("Not applied: %s" % freecad_message(error))
             return None
         document.commitTransaction()
-        self.form.status.setText(self.applied_text(name, op, job))
+        self.form.status.setText(self.applied_text(key, op, job))
         return op
 
-    def applied_text(self, name, op, job):
-        row = self.result_of(name).row
+    @staticmethod
+    def add_roughing(job, volume, name, variant):
+        from hsmplanner.app import roughing_op
+        from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
+
+        controller = roughing_op.roughing_controller(job)  # the Job's, or the paper's torus added
+        volume.Strategy = roughing_object.strategy_label(name)
+        volume.Region = 0  # every region, as the row measured them
+        op = with_controller_selected(controller, lambda: add_volume_roughing(job))
+        op.ToolController = controller
+        op.Volume = volume
+        if variant == roughing_study.PAPER:
+            op.StepUpMinimum = 0.0
+        return op
+
+    @staticmethod
+    def add_rest(job, volume, first, rest):
+        """The rest roughing after `first`: its own Roughing volume (the rest strategy and step), a controller of
+        the rest tool, RestFrom `first`."""
+        from hsmplanner.app import roughing_op
+        from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
+        from hsmplanner.gui.view_providers import ViewProviderRoughingVolume
+
+        rest_volume = roughing_object.create(volume.Part, volume.Stock, document=volume.Document,
+                                             name="RestVolume", recompute=False, Strategy=rest.strategy,
+                                             Step=rest.step, Region=0, SetupResolution=volume.SetupResolution,
+                                             SetupGrid=volume.SetupGrid)
+        rest_volume.Label = "%s rest %s" % (volume.Label, rest.strategy)
+        ViewProviderRoughingVolume(rest_volume.ViewObject)
+        controller = roughing_op.torus_controller(job, diameter=rest.tool.diameter,
+                                                  corner_radius=rest.tool.corner_radius,
+                                                  feed_mm_min=roughing_study.DEFAULT_FEED_MM_MIN, number=4,
+                                                  replace=False)
+        op = with_controller_selected(controller, lambda: add_volume_roughing(job))
+        op.ToolController = controller
+        op.Volume = rest_volume
+        op.RestFrom = first
+        op.Label = "%s rest" % first.Label
+        return op
+
+    def applied_text(self, key, op, job):
+        row = self.result_of(key).row
+        name = "%s %s" % (row["strategy"], row["variant"])
         made = ("%s applied: %s in %s, %d region%s joined, %d passes, %.0f mm of cut"
                 % (name, op.Label, job.Label, op.RegionsSwept, "" if op.RegionsSwept == 1 else "s", op.Passes,
                    op.CuttingLength.Value))
+        if row["variant"] not in (roughing_study.PAPER, roughing_study.STEP_UP):
+            made += ", then its rest roughing (RestFrom %s)" % op.Label
         if row.get("regions") and op.RegionsSwept != row["regions"]:
             made += " (the row measured %d regions)" % row["regions"]
         tool = getattr(self, "studied", (None, None))[1]

@@ -80,11 +80,20 @@ def save_stock_maps(maps, path, title, view=(28, -60), top_mm=None):
     return path
 
 
+VARIANT_MARKS = {"paper": "", "step-up": "+su"}  # a rest row: "+su+r"
+
+
+def short_label(row):
+    """S1, S1+su (step-up), S1+su+r (step-up and rest roughing): a row's strategy and variant in a few letters."""
+    variant = row.get("variant") or "paper"
+    return row["strategy"] + VARIANT_MARKS.get(variant, "+su+r")
+
+
 def save_study_bars(rows, path, title):
     """Bars per strategy: V_r (ours with and without the allowance layer, the paper's) and the simulated
-    machining time against length/feed. `rows`: dicts with strategy, paper_vr, vr, vr_beyond_allowance,
-    time_s, length_over_feed_s (None where unknown)."""
-    labels = [r["strategy"] for r in rows]
+    machining time against length/feed. `rows`: dicts with strategy, variant, paper_vr, vr,
+    vr_beyond_allowance, time_s, length_over_feed_s (None where unknown)."""
+    labels = [short_label(r) for r in rows]
     x = np.arange(len(rows))
     figure = new_figure(10.0, 4.0)
     left, right = figure.add_subplot(1, 2, 1), figure.add_subplot(1, 2, 2)
@@ -92,18 +101,50 @@ def save_study_bars(rows, path, title):
     for offset, key, name in ((-0.27, "paper_vr", "paper (TopSolid)"), (0.0, "vr", "ours"),
                               (0.27, "vr_beyond_allowance", "ours, without the 0.5 mm allowance")):
         left.bar(x + offset, value(key), width=0.26, label=name)
-    left.set_xticks(x, labels, fontsize=8)
+    left.set_xticks(x, labels, fontsize=7, rotation=60)
     left.set_ylabel("V_r: volume left, % of the volume to remove", fontsize=8)
     left.set_ylim(0.0, 1.3 * np.nanmax(value("vr") + value("paper_vr")))  # room for the legend above the bars
     left.legend(fontsize=7, loc="upper center", ncol=2)
     right.bar(x - 0.2, value("length_over_feed_s"), width=0.38, label="length / feed")
     right.bar(x + 0.2, value("time_s"), width=0.38, label="simulated (840D A/C)")
-    right.set_xticks(x, labels, fontsize=8)
+    right.set_xticks(x, labels, fontsize=7, rotation=60)
     right.set_ylabel("machining time, s", fontsize=8)
     right.set_ylim(0.0, 1.2 * np.nanmax(value("time_s") + value("length_over_feed_s")))
     right.legend(fontsize=7, loc="upper center", ncol=2)
     for axes in (left, right):
         axes.tick_params(labelsize=7)
+    figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    figure.savefig(path)
+    return path
+
+
+def save_pareto(rows, path, title):
+    """V_r beyond the allowance against the simulated time, one point per row (colour: strategy, mark: as the
+    paper, step-up, step-up and rest roughing), the rows no other beats on both joined: the front a shop
+    chooses on."""
+    from hsmplanner.study import pareto_front
+
+    figure = new_figure(7.0, 4.6)
+    axes = figure.add_subplot(1, 1, 1)
+    measured = [r for r in rows if r.get("time_s") not in (None, "")]
+    strategies = sorted({r["strategy"] for r in measured})
+    colours = dict(zip(strategies, ("C0", "C1", "C2", "C3", "C4", "C5")))
+    marks = {"paper": "o", "step-up": "s"}
+    for row in measured:
+        axes.scatter(row["time_s"], row["vr_beyond_allowance"], color=colours[row["strategy"]],
+                     marker=marks.get(row["variant"], "^"), s=36)
+        axes.annotate(short_label(row), (row["time_s"], row["vr_beyond_allowance"]), fontsize=6,
+                      xytext=(3, 3), textcoords="offset points")
+    front = pareto_front(measured, ("time_s", "vr_beyond_allowance"))
+    axes.plot([r["time_s"] for r in front], [r["vr_beyond_allowance"] for r in front], "k--", lw=0.8,
+              label="Pareto front")
+    for variant, mark in (("as the paper", "o"), ("step-up", "s"), ("step-up + rest", "^")):
+        axes.scatter([], [], color="0.4", marker=mark, label=variant)
+    axes.set_xlabel("simulated machining time, s", fontsize=8)
+    axes.set_ylabel("V_r beyond the allowance, % of the volume to remove", fontsize=8)
+    axes.tick_params(labelsize=7)
+    axes.legend(fontsize=7)
     figure.suptitle(title, fontsize=9)
     figure.tight_layout()
     figure.savefig(path)

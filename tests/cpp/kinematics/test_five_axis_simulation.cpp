@@ -1,6 +1,7 @@
 #include "common/error.hpp"
 #include "kinematics/five_axis.hpp"
 #include "kinematics/simulation.hpp"
+#include "support/simulation.hpp"
 
 #include "support/mutation.hpp"
 
@@ -14,14 +15,8 @@
 using namespace hsm::kinematics;
 
 namespace {
-MachineModel preset(const std::string& name) { return loadMachine(name, {HSM_MACHINES_DIR}); }
-
-SimulationResult run(const std::string& program, const MachineModel& machine) {
-  std::istringstream stream(program);
-  SimulationOptions options;
-  options.keepBlocks = true;
-  return simulate(stream, machine, {}, options);
-}
+using hsm::test::preset;
+using hsm::test::run;
 
 double limitShare(const SimulationResult& r, SpeedLimit limit) {
   double total = 0.0;

@@ -117,7 +117,14 @@ class ProgramWriter:
 
     def comment(self, text):
         if not self.args.no_comments:
-            self.lines.append(self.comment_format % text.strip().strip("()").strip())
+            text = text.strip()
+            if not self.comment_format.startswith("("):
+                text = text.strip("()").strip()
+            else:  # a '(' or ')' inside would nest or end it: LinuxCNC refuses both
+                if text.startswith("(") and text.endswith(")"):
+                    text = text[1:-1].strip()
+                text = text.replace("(", "[").replace(")", "]")
+            self.lines.append(self.comment_format % " ".join(text.split()))
 
     def number_word(self, letter, value, precision=None):
         text = ("%." + str(self.args.precision if precision is None else precision) + "f") % value

@@ -1,0 +1,39 @@
+// The cutter grown by the allowance, as the sweep keeps the part away from it (internal to the roughing): its
+// width at a height above its tip, and what that asks of a part point whose height is measured along its own
+// normal where the slicing surface curves up towards the tool (a concave hub: a point ρ from the tool's axis
+// stands ρ²·κ/2 higher along the axis than along its own normal).
+#pragma once
+
+#include "roughing/flat.hpp"
+#include "roughing/sweep.hpp"
+
+#include <vector>
+
+namespace hsm::roughing {
+
+class GrownCutter {
+public:
+  // `concavity` κ, 1/mm: how the surface curves up towards the tool (0 on planes).
+  GrownCutter(const Cutter& cutter, double allowance, double concavity);
+
+  // Half the width of the grown cutter at height z above the tip: 0 below −allowance.
+  double width(double z) const;
+  // The lowest height above the tip of the cutter grown by `grow` at `rho` from its axis (+∞ beyond it).
+  static double lowestAt(const Cutter& cutter, double grow, double rho);
+  // The farthest from the axis (mm) a part point at height z (along its own normal) meets the grown cutter:
+  // the centre keeps that far from it. 0 where it never does.
+  double keepOut(double z) const;
+  // The least height of the tip above a floor parallel to the slicing surface, beyond the allowance, at which
+  // no point of the floor under the tool meets it: where κ > 0 the floor rises under the flat bottom's rim.
+  double floorLift() const;
+  // Bands of heights relative to the tip, [from, to[, each with the keep-out of its highest point, stepping
+  // evenly in keep-out from the lowest point's to the flutes' (R + a), the last one open above; `slack` raises the lowest
+  // (a floor lying exactly the allowance under the tip must not shadow the level), `extra` grows them all.
+  std::vector<Band> bands(int count, double slack, double extra) const;
+
+private:
+  Cutter cutter_;
+  double allowance_, concavity_;
+};
+
+}  // namespace hsm::roughing
