@@ -1,28 +1,35 @@
 #include "roughing/dexel.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/text.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 
 namespace hsm::roughing {
 
 double subtract(Intervals& intervals, double from, double to) {
   if (!(to > from)) return 0.0;
+  // In place (a removal simulation calls this for every ray a cutter crosses): the intervals [a, b) that
+  // overlap ]from, to[ give way to what is left of the first and of the last.
+  size_t a = 0;
+  while (a < intervals.size() && intervals[a].to <= from) ++a;
+  size_t b = a;
   double taken = 0.0;
-  Intervals kept;
-  kept.reserve(intervals.size() + 1);
-  for (const Interval& s : intervals) {
-    if (s.to <= from || s.from >= to) {
-      kept.push_back(s);
-      continue;
-    }
-    taken += std::min(s.to, to) - std::max(s.from, from);
-    if (s.from < from) kept.push_back({s.from, from});
-    if (s.to > to) kept.push_back({to, s.to});
-  }
-  if (taken > 0.0) intervals.swap(kept);
+  for (; b < intervals.size() && intervals[b].from < to; ++b)
+    taken += std::min(intervals[b].to, to) - std::max(intervals[b].from, from);
+  if (b == a) return 0.0;
+  Interval left{intervals[a].from, from}, right{to, intervals[b - 1].to};
+  const size_t kept = (left.from < left.to ? 1 : 0) + (right.from < right.to ? 1 : 0);
+  if (kept > b - a) intervals.insert(intervals.begin() + static_cast<long>(a), Interval{});  // one split in two
+  else intervals.erase(intervals.begin() + static_cast<long>(a + kept), intervals.begin() + static_cast<long>(b));
+  size_t at = a;
+  if (left.from < left.to) intervals[at++] = left;
+  if (right.from < right.to) intervals[at] = right;
   return taken;
 }
 
@@ -55,18 +62,48 @@ TriDexel::TriDexel(const Eigen::AlignedBox3d& box, double resolution, long maxRa
     throw InputError("material removal at " + number(resolution) + " mm needs " + std::to_string(total) +
                      " rays (more than " + std::to_string(maxRays) + "): use a resolution of at least " +
                      number(std::sqrt(area / double(maxRays))) + " mm");
-  for (int k = 0; k < 3; ++k) rays_[k].resize(static_cast<size_t>(n_[k][0]) * n_[k][1]);
+  for (int k = 0; k < 3; ++k) {
+    rays_[k].resize(static_cast<size_t>(n_[k][0]) * n_[k][1]);
+    extents_[k].assign(rays_[k].size(), Extent{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+  }
+}
+
+namespace {
+// The float nearest x at or below it (a cast rounds to the nearest, which may be above).
+float floatBelow(double x) {
+  float f = static_cast<float>(x);
+  if (f > x) {  // the float next below f, by its bits (libm's nextafterf is a call for every ray cut)
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    if (f > 0.0f) --bits;
+    else if (f < 0.0f) ++bits;
+    else bits = 0x80000001u;  // the least negative float below 0
+    std::memcpy(&f, &bits, sizeof f);
+  }
+  return f;
+}
+}  // namespace
+
+void TriDexel::keepExtent(int k, size_t r) {
+  const Intervals& ray = rays_[k][r];
+  Extent& e = extents_[k][r];
+  if (ray.empty()) {
+    e = {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+    return;
+  }
+  e.from = floatBelow(ray.front().from);
+  e.to = -floatBelow(-ray.back().to);
+}
+
+double TriDexel::remove(int k, int i, int j, double from, double to) {
+  const size_t r = index(k, i, j);
+  const double taken = roughing::subtract(rays_[k][r], from, to);
+  if (taken > 0.0) keepExtent(k, r);
+  return taken;
 }
 
 long TriDexel::rays() const {
   return static_cast<long>(rays_[0].size() + rays_[1].size() + rays_[2].size());
-}
-
-Eigen::Vector3d TriDexel::origin(int k, int i, int j) const {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  p[(k + 1) % 3] = low_[(k + 1) % 3] + i * h_ + jitter_[k][0];
-  p[(k + 2) % 3] = low_[(k + 2) % 3] + j * h_ + jitter_[k][1];
-  return p;
 }
 
 void TriDexel::rangeOf(int k, const Eigen::AlignedBox3d& box, int& i0, int& i1, int& j0, int& j1) const {
@@ -90,46 +127,86 @@ bool TriDexel::inside(const Eigen::Vector3d& p) const {
   return false;
 }
 
-void TriDexel::fill(const geometry::TriangleMesh& mesh) {
+void TriDexel::fill(const geometry::TriangleMesh& mesh, int threads) {
+  // Bands of rows filled side by side; each ray sees the triangles in the mesh's order, as on one thread.
+  struct Band {
+    int k, from, to;
+  };
+  std::vector<Band> bands;
+  const int perDirection = 4 * threadCount(threads);
   for (int k = 0; k < 3; ++k) {
-    const int u = (k + 1) % 3, v = (k + 2) % 3;
-    std::vector<std::vector<double>> crossings(rays_[k].size());
-    for (const Eigen::Vector3i& t : mesh.triangles) {
-      const Eigen::Vector3d& a = mesh.vertices[t[0]];
-      const Eigen::Vector3d& b = mesh.vertices[t[1]];
-      const Eigen::Vector3d& c = mesh.vertices[t[2]];
-      // The triangle seen along k: a ray crosses it where its (u, v) is inside (barycentric, half-open edges).
-      const double area = (b[u] - a[u]) * (c[v] - a[v]) - (c[u] - a[u]) * (b[v] - a[v]);
-      if (area == 0.0) continue;
-      Eigen::AlignedBox3d box(a);
-      box.extend(b), box.extend(c);
-      int i0, i1, j0, j1;
-      rangeOf(k, box, i0, i1, j0, j1);
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-          const Eigen::Vector3d o = origin(k, i, j);
-          const double wa = ((b[u] - o[u]) * (c[v] - o[v]) - (c[u] - o[u]) * (b[v] - o[v])) / area;
-          const double wb = ((c[u] - o[u]) * (a[v] - o[v]) - (a[u] - o[u]) * (c[v] - o[v])) / area;
-          const double wc = 1.0 - wa - wb;
-          if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-          crossings[static_cast<size_t>(j) * n_[k][0] + i].push_back(wa * a[k] + wb * b[k] + wc * c[k]);
-        }
-    }
-    for (size_t r = 0; r < crossings.size(); ++r) {
-      std::vector<double>& x = crossings[r];
-      std::sort(x.begin(), x.end());
-      Intervals& out = rays_[k][r];
-      out.clear();
-      for (size_t m = 0; m + 1 < x.size(); m += 2)
-        if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
-    }
+    const int rows = n_[k][1], size = std::max(16, (rows + perDirection - 1) / perDirection);
+    for (int from = 0; from < rows; from += size) bands.push_back({k, from, std::min(rows, from + size)});
+  }
+  parallelChunks(static_cast<long>(bands.size()), threads, 1, [&](long first, long last) {
+    for (long b = first; b < last; ++b) fillRows(mesh, bands[b].k, bands[b].from, bands[b].to);
+  });
+}
+
+void TriDexel::fillRows(const geometry::TriangleMesh& mesh, int k, int from, int to) {
+  const int u = (k + 1) % 3, v = (k + 2) % 3;
+  const size_t first = index(k, 0, from);
+  std::vector<std::vector<double>> crossings(index(k, 0, to) - first);
+  const double low = origin(k, 0, from)[v] - h_, high = origin(k, 0, to - 1)[v] + h_;  // the band's rows, and a spacing
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    if (std::max({a[v], b[v], c[v]}) < low || std::min({a[v], b[v], c[v]}) > high) continue;  // another band's
+    // The triangle seen along k: a ray crosses it where its (u, v) is inside (barycentric, half-open edges).
+    const double area = (b[u] - a[u]) * (c[v] - a[v]) - (c[u] - a[u]) * (b[v] - a[v]);
+    if (area == 0.0) continue;
+    Eigen::AlignedBox3d box(a);
+    box.extend(b), box.extend(c);
+    int i0, i1, j0, j1;
+    rangeOf(k, box, i0, i1, j0, j1);
+    for (int j = std::max(j0, from); j <= std::min(j1, to - 1); ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const Eigen::Vector3d o = origin(k, i, j);
+        const double wa = ((b[u] - o[u]) * (c[v] - o[v]) - (c[u] - o[u]) * (b[v] - o[v])) / area;
+        const double wb = ((c[u] - o[u]) * (a[v] - o[v]) - (a[u] - o[u]) * (c[v] - o[v])) / area;
+        const double wc = 1.0 - wa - wb;
+        if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+        crossings[index(k, i, j) - first].push_back(wa * a[k] + wb * b[k] + wc * c[k]);
+      }
+  }
+  for (size_t r = 0; r < crossings.size(); ++r) {
+    std::vector<double>& x = crossings[r];
+    std::sort(x.begin(), x.end());
+    Intervals& out = rays_[k][first + r];
+    out.clear();
+    for (size_t m = 0; m + 1 < x.size(); m += 2)
+      if (x[m + 1] > x[m]) out.push_back({x[m], x[m + 1]});
+    keepExtent(k, first + r);
   }
 }
 
-void TriDexel::subtract(const TriDexel& other) {
+void TriDexel::subtract(const TriDexel& other, int threads) {
   for (int k = 0; k < 3; ++k)
-    for (size_t r = 0; r < rays_[k].size(); ++r)
-      for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (size_t r = static_cast<size_t>(first); r < static_cast<size_t>(last); ++r) {
+        for (const Interval& s : other.rays_[k][r]) roughing::subtract(rays_[k][r], s.from, s.to);
+        keepExtent(k, r);
+      }
+    });
+}
+
+void TriDexel::assign(const TriDexel& other, int threads) {
+  for (int k = 0; k < 3; ++k) {
+    extents_[k] = other.extents_[k];
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (long r = first; r < last; ++r) rays_[k][r] = other.rays_[k][r];
+    });
+  }
+}
+
+void TriDexel::release(int threads) {
+  for (int k = 0; k < 3; ++k) {
+    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
+      for (long r = first; r < last; ++r) Intervals().swap(rays_[k][r]);
+    });
+    extents_[k].assign(extents_[k].size(), Extent{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+  }
 }
 
 geometry::TriangleMesh TriDexel::blocks(int stride) const {

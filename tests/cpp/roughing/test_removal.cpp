@@ -1,5 +1,6 @@
 // Material-removal simulation (roughing/removal.hpp) on cases whose answers are known in closed form.
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "roughing/parts.hpp"
 #include "roughing/removal.hpp"
 #include "roughing/roughing.hpp"
@@ -8,7 +9,9 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 
 using namespace hsm;
 using namespace hsm::roughing;
@@ -224,4 +227,112 @@ TEST(Removal, FaultsOfOtherMovesAndBadThreadsAreRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("threads 10000"), std::string::npos) << e.what();
   }
+}
+
+// Rays are cut by lanes of rows, one per thread, without a barrier between positions: 1, 2 and 7 threads give
+// the same figures (each lane's chips added up in the positions' order) and the same stock left. Progress is
+// reported from the calling thread while the lanes work, and a cancel there stops them.
+TEST(Removal, OneTwoAndSevenThreadsGiveTheSameAndACancelStopsThemAll) {
+  const PartAndStock block = slantedSlotBlock();
+  const VolumeToRemove volume = volumeToRemove(block.stock, block.part);
+  const RemovalSolid& slot = volume.solids.front();
+  std::vector<ToolMove> moves = sweep(partition(slot, block.part, Strategy::SetupPlanes), slot, block.part, block.stock, {}).moves;
+  moves.push_back(move(MoveKind::Rapid, moves.back().tip.x(), moves.back().tip.y(), -100.0));  // a rapid fault, a gouge
+  RemovalSettings settings;
+  settings.resolution = 0.25;
+  settings.stockMeshStride = 2;
+  const auto run = [&](int threads) {
+    settings.threads = threads;
+    return simulateRemoval(moves, SweepSettings().cutter, block.stock, block.part, settings);
+  };
+  const RemovalResult one = run(1);
+  ASSERT_FALSE(one.rapidFaults.empty());
+  ASSERT_GT(one.gougeVolume, 0.0);
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  for (int threads : {2, 7}) {
+    const RemovalResult r = run(threads);
+    EXPECT_TRUE(near(r.remainingVolume, one.remainingVolume)) << threads << ": " << r.remainingVolume << " " << one.remainingVolume;
+    EXPECT_TRUE(near(r.beyondAllowanceVolume, one.beyondAllowanceVolume)) << threads;
+    EXPECT_TRUE(near(r.inMaterialLength, one.inMaterialLength)) << threads;
+    EXPECT_TRUE(near(r.gougeVolume, one.gougeVolume)) << threads;
+    EXPECT_EQ(r.gougeMove, one.gougeMove) << threads;
+    EXPECT_EQ(r.stickOut, one.stickOut) << threads;
+    EXPECT_EQ(r.stickOutMove, one.stickOutMove) << threads;
+    ASSERT_EQ(r.rapidFaults.size(), one.rapidFaults.size()) << threads;
+    for (size_t f = 0; f < r.rapidFaults.size(); ++f) {
+      EXPECT_EQ(r.rapidFaults[f].move, one.rapidFaults[f].move) << threads;
+      EXPECT_TRUE(near(r.rapidFaults[f].volume, one.rapidFaults[f].volume)) << threads;
+    }
+    EXPECT_EQ(r.thickness, one.thickness) << threads;
+    EXPECT_EQ(r.stockMesh.vertices, one.stockMesh.vertices) << threads;
+  }
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<double> seen;
+  settings.progress = [&](double done) {
+    EXPECT_EQ(std::this_thread::get_id(), caller) << "progress reported from a worker";
+    seen.push_back(done);
+    return true;
+  };
+  run(2);
+  ASSERT_GE(seen.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_LT(seen.front(), 1.0) << "reported only at the end";
+  EXPECT_EQ(seen.back(), 1.0);
+  seen.clear();
+  settings.progress = [&](double done) {
+    seen.push_back(done);
+    return false;
+  };
+  EXPECT_THROW(run(2), Cancelled);
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_LT(seen.front(), 1.0) << "the lanes were not stopped";
+}
+
+// Two tools in turn (a program of two operations) on the same stock: 1, 2 and 7 threads give the same figures,
+// the same rest points and faults numbered through both runs; progress runs on through them to the end.
+TEST(Removal, TwoToolRunsGiveTheSameOnOneTwoAndSevenThreads) {
+  const PartAndStock block = slantedSlotBlock();
+  const VolumeToRemove volume = volumeToRemove(block.stock, block.part);
+  const RemovalSolid& slot = volume.solids.front();
+  const std::vector<ToolMove> moves = sweep(partition(slot, block.part, Strategy::SetupPlanes), slot, block.part, block.stock, {}).moves;
+  const size_t half = moves.size() / 2;
+  std::vector<ToolRun> runs = {{{moves.begin(), moves.begin() + long(half)}, SweepSettings().cutter},
+                               {{moves.begin() + long(half), moves.end()}, ball(6.0)}};
+  runs.back().moves.push_back(move(MoveKind::Rapid, moves.back().tip.x(), moves.back().tip.y(), -100.0));
+  const int last = static_cast<int>(moves.size());  // the rapid's index through both runs
+  RemovalSettings settings;
+  settings.resolution = 0.25;
+  settings.restSpacing = 1.0;
+  const auto run = [&](int threads) {
+    settings.threads = threads;
+    return simulateRemoval(runs, block.stock, block.part, settings);
+  };
+  const RemovalResult one = run(1);
+  ASSERT_FALSE(one.rapidFaults.empty());
+  EXPECT_EQ(one.rapidFaults.back().move, last);
+  ASSERT_FALSE(one.rest.points.empty());
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  for (int threads : {2, 7}) {
+    const RemovalResult r = run(threads);
+    EXPECT_TRUE(near(r.remainingVolume, one.remainingVolume)) << threads << ": " << r.remainingVolume << " " << one.remainingVolume;
+    EXPECT_TRUE(near(r.inMaterialLength, one.inMaterialLength)) << threads;
+    EXPECT_TRUE(near(r.gougeVolume, one.gougeVolume)) << threads;
+    EXPECT_EQ(r.gougeMove, one.gougeMove) << threads;
+    EXPECT_EQ(r.stickOut, one.stickOut) << threads;
+    EXPECT_EQ(r.stickOutMove, one.stickOutMove) << threads;
+    ASSERT_EQ(r.rapidFaults.size(), one.rapidFaults.size()) << threads;
+    for (size_t f = 0; f < r.rapidFaults.size(); ++f) EXPECT_EQ(r.rapidFaults[f].move, one.rapidFaults[f].move) << threads;
+    EXPECT_EQ(r.thickness, one.thickness) << threads;
+    EXPECT_EQ(r.rest.spacing, one.rest.spacing) << threads;
+    EXPECT_EQ(r.rest.points, one.rest.points) << threads;
+  }
+  std::vector<double> seen;
+  settings.progress = [&](double done) {
+    seen.push_back(done);
+    return true;
+  };
+  run(2);
+  ASSERT_GE(seen.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.back(), 1.0);
 }
