@@ -260,7 +260,9 @@ int main(int argc, char** argv) {
   for (double step : {4.0, 2.0})
     for (Strategy strategy : {Strategy::StockOffsets, Strategy::HubOffsets}) {
       Partition p;
-      const double t = bestOf(1, [&] { p = partition(channel, wheel.part, strategy, {step}); });
+      PartitionSettings settings;
+      settings.step = step;
+      const double t = bestOf(1, [&] { p = partition(channel, wheel.part, strategy, settings); });
       std::printf("%-24s step %.0f mm: %5.2f s  %2zu sub-volumes, sum - volume = %.2e relative\n",
                   strategyName(strategy).c_str(), step, t, p.subVolumes.size(), (p.volume - channel.volume) / channel.volume);
     }
