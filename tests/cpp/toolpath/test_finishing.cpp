@@ -308,8 +308,11 @@ TEST(Finishing, AFloorUnderAnOverhangIsNotReachedThroughThePart) {
     closest = std::min(closest, distance.Value());
   }
   EXPECT_GE(closest, 2.0 - 0.011) << "the ball cuts into the part";
-  for (const Move& m : path.moves)
-    if (!m.rapid && m.point.z() < 10.5) EXPECT_LT(m.point.y(), 25.0 - 1.99) << "a pass on the floor under the shelf";
+  for (const Move& m : path.moves) {
+    if (!m.rapid && m.point.z() < 10.5) {
+      EXPECT_LT(m.point.y(), 25.0 - 1.99) << "a pass on the floor under the shelf";
+    }
+  }
 }
 
 // Passes are cut side by side on the threads asked for (each pass's drop then single-threaded): the path is
@@ -327,12 +330,16 @@ TEST(Finishing, PassesCutOnTwoThreadsAreOneThreadsAndCancelStopsThemAll) {
   for (size_t k = 0; k < serial.moves.size(); ++k) ASSERT_EQ(serial.moves[k].point, parallel.moves[k].point) << k;
   EXPECT_EQ(serial.passLengths, parallel.passLengths);
   EXPECT_EQ(serial.droppedPoints, parallel.droppedPoints);
+  // Cancelled at the first report: the threads stop at their next pass. (A cancel asked late may find every
+  // pass done before the calling thread looks again: the last progress, 1, is then reported and cancelled.)
   double last = 0.0;
+  int reports = 0;
   two.progress = [&](double done) {
-    last = done;
-    return done < 0.7;
+    last = done, ++reports;
+    return false;
   };
   EXPECT_THROW(guide(two), Cancelled);
-  EXPECT_GE(last, 0.7);
+  EXPECT_EQ(reports, 1);
+  EXPECT_GT(last, 0.0);
   EXPECT_LT(last, 1.0);
 }
