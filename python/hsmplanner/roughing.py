@@ -165,12 +165,28 @@ def _moves_of(paths):
     return paths.moves if hasattr(paths, "moves") else paths
 
 
+def _run(paths, tool, name):
+    """(moves dict, Cutter) of one operation; ValueError naming `name` when its paths are not moves."""
+    moves = _moves_of(paths)
+    if not (hasattr(moves, "keys") and {"tip", "axis", "kind"} <= set(moves.keys())):
+        raise ValueError("%s: paths must be a SweepResult or a dict of tip, axis and kind arrays, not %s"
+                         % (name, type(paths).__name__))
+    return moves, tool if tool is not None else _core.roughing.Cutter()
+
+
+def _operations(pairs, name):
+    """[(moves dict, Cutter)] of `pairs`, a list of (paths, tool); ValueError naming `name` for anything else."""
+    runs = []
+    for k, pair in enumerate(pairs or ()):
+        if not (isinstance(pair, (tuple, list)) and len(pair) == 2):
+            raise ValueError("%s[%d] must be a (paths, tool) pair (tool None for the paper's torus)" % (name, k))
+        runs.append(_run(pair[0], pair[1], "%s[%d]" % (name, k)))
+    return runs
+
+
 def _runs(paths, tool, then):
     """[(moves dict, Cutter)]: `paths` with `tool`, then each (paths, tool) of `then`."""
-    runs = [(_moves_of(paths), tool if tool is not None else _core.roughing.Cutter())]
-    for later_paths, later_tool in then or ():
-        runs.append((_moves_of(later_paths), later_tool if later_tool is not None else _core.roughing.Cutter()))
-    return runs
+    return [_run(paths, tool, "paths")] + _operations(then, "then")
 
 
 def simulate_removal(paths, stock, part, tool=None, resolution=None, chip_section=None, stick_out_spacing=None,
@@ -218,7 +234,7 @@ def keep_rapids_out_of_stock(paths, stock, part, tool=None, resolution=0.2, marg
     moves = _moves_of(paths)
     settings = core_settings(_core.roughing.RemovalSettings, resolution=resolution, threads=threads)
     tool = tool if tool is not None else _core.roughing.Cutter()
-    before = _runs(after[0][0], after[0][1], after[1:]) if after else []
+    before = _operations(after, "after")
     return _core.roughing.keep_rapids_out_of_stock(moves["tip"], moves["axis"], moves["kind"], tool, as_brep(stock),
                                                    as_brep(part), settings, float(margin), progress, before)
 

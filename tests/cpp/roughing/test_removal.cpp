@@ -51,6 +51,20 @@ struct Slab {
   std::vector<ToolMove> slot = {move(MoveKind::Rapid, -10, 20, 30), move(MoveKind::Plunge, -10, 20, 15),
                                 move(MoveKind::Cut, 50, 20, 15), move(MoveKind::Rapid, 50, 20, 30)};
 };
+// The figures two runs of one program on different thread counts share, to the last digit (sums to 1e-9).
+void expectSameFigures(const RemovalResult& r, const RemovalResult& one, int threads) {
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  EXPECT_TRUE(near(r.remainingVolume, one.remainingVolume)) << threads << ": " << r.remainingVolume << " " << one.remainingVolume;
+  EXPECT_TRUE(near(r.inMaterialLength, one.inMaterialLength)) << threads;
+  EXPECT_TRUE(near(r.gougeVolume, one.gougeVolume)) << threads;
+  EXPECT_EQ(r.gougeMove, one.gougeMove) << threads;
+  EXPECT_EQ(r.stickOut, one.stickOut) << threads;
+  EXPECT_EQ(r.stickOutMove, one.stickOutMove) << threads;
+  ASSERT_EQ(r.rapidFaults.size(), one.rapidFaults.size()) << threads;
+  for (size_t f = 0; f < r.rapidFaults.size(); ++f) EXPECT_EQ(r.rapidFaults[f].move, one.rapidFaults[f].move) << threads;
+  EXPECT_EQ(r.thickness, one.thickness) << threads;
+}
+
 }  // namespace
 
 TEST(Removal, AFlatToolThroughABoxIsExact) {
@@ -251,19 +265,10 @@ TEST(Removal, OneTwoAndSevenThreadsGiveTheSameAndACancelStopsThemAll) {
   const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
   for (int threads : {2, 7}) {
     const RemovalResult r = run(threads);
-    EXPECT_TRUE(near(r.remainingVolume, one.remainingVolume)) << threads << ": " << r.remainingVolume << " " << one.remainingVolume;
+    expectSameFigures(r, one, threads);
     EXPECT_TRUE(near(r.beyondAllowanceVolume, one.beyondAllowanceVolume)) << threads;
-    EXPECT_TRUE(near(r.inMaterialLength, one.inMaterialLength)) << threads;
-    EXPECT_TRUE(near(r.gougeVolume, one.gougeVolume)) << threads;
-    EXPECT_EQ(r.gougeMove, one.gougeMove) << threads;
-    EXPECT_EQ(r.stickOut, one.stickOut) << threads;
-    EXPECT_EQ(r.stickOutMove, one.stickOutMove) << threads;
-    ASSERT_EQ(r.rapidFaults.size(), one.rapidFaults.size()) << threads;
-    for (size_t f = 0; f < r.rapidFaults.size(); ++f) {
-      EXPECT_EQ(r.rapidFaults[f].move, one.rapidFaults[f].move) << threads;
+    for (size_t f = 0; f < std::min(r.rapidFaults.size(), one.rapidFaults.size()); ++f)
       EXPECT_TRUE(near(r.rapidFaults[f].volume, one.rapidFaults[f].volume)) << threads;
-    }
-    EXPECT_EQ(r.thickness, one.thickness) << threads;
     EXPECT_EQ(r.stockMesh.vertices, one.stockMesh.vertices) << threads;
   }
   const std::thread::id caller = std::this_thread::get_id();
@@ -311,18 +316,9 @@ TEST(Removal, TwoToolRunsGiveTheSameOnOneTwoAndSevenThreads) {
   ASSERT_FALSE(one.rapidFaults.empty());
   EXPECT_EQ(one.rapidFaults.back().move, last);
   ASSERT_FALSE(one.rest.points.empty());
-  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
   for (int threads : {2, 7}) {
     const RemovalResult r = run(threads);
-    EXPECT_TRUE(near(r.remainingVolume, one.remainingVolume)) << threads << ": " << r.remainingVolume << " " << one.remainingVolume;
-    EXPECT_TRUE(near(r.inMaterialLength, one.inMaterialLength)) << threads;
-    EXPECT_TRUE(near(r.gougeVolume, one.gougeVolume)) << threads;
-    EXPECT_EQ(r.gougeMove, one.gougeMove) << threads;
-    EXPECT_EQ(r.stickOut, one.stickOut) << threads;
-    EXPECT_EQ(r.stickOutMove, one.stickOutMove) << threads;
-    ASSERT_EQ(r.rapidFaults.size(), one.rapidFaults.size()) << threads;
-    for (size_t f = 0; f < r.rapidFaults.size(); ++f) EXPECT_EQ(r.rapidFaults[f].move, one.rapidFaults[f].move) << threads;
-    EXPECT_EQ(r.thickness, one.thickness) << threads;
+    expectSameFigures(r, one, threads);
     EXPECT_EQ(r.rest.spacing, one.rest.spacing) << threads;
     EXPECT_EQ(r.rest.points, one.rest.points) << threads;
   }
