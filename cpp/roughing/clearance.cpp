@@ -61,9 +61,11 @@ std::vector<Eigen::Vector2d> plan(const std::vector<Eigen::Vector3d>& polygon) {
   return out;
 }
 
-// Distance from a point to the tool's bottom disk (radius r, at z = 0, centre on the axis).
+// Distance from a point to the tool's bottom disk (radius r, at z = 0, centre on the axis). Square roots, not
+// hypot: millimetre coordinates neither overflow nor underflow, and the check calls this millions of times.
 double toDisk(const Eigen::Vector3d& p, double r) {
-  return std::hypot(std::max(0.0, std::hypot(p.x(), p.y()) - r), p.z());
+  const double across = std::max(0.0, std::sqrt(p.x() * p.x() + p.y() * p.y()) - r);
+  return std::sqrt(across * across + p.z() * p.z());
 }
 
 // Distance from a convex polygon under the tip (z ≤ 0) to the bottom disk: a convex function over a convex

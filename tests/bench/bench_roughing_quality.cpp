@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
     }
     const double swept = seconds(start);
     {  // How near the part the cuts run: a domain that keeps the tool farther than the allowance leaves stock.
+      const auto checkStart = std::chrono::steady_clock::now();
       const ClearanceChecker checker(wheel.part, 0.01);
       const double edges[] = {0.49, 0.55, 0.7, 1.0, 1.5, 2.0, 2.5};
       long counts[8] = {0};
@@ -90,6 +91,7 @@ int main(int argc, char** argv) {
         const ClearanceReport c = checker.check(moves, settings.cutter, settings.allowance - 0.01, 1.0);
         least = std::min(least, c.minimum);
       }
+      std::printf("S%c independent clearance check of the whole path: %.1f s\n", c, seconds(checkStart));
       // The outer passes of every level: where a level's domain is the part's keep-out, their distance says how
       // much room it left.
       for (const auto& passes : ringZero) {
