@@ -28,6 +28,10 @@ constexpr size_t kRoundPositions = 1 << 15;
 // Lanes of rows (at least; two per thread beyond): enough for the threads to share them out evenly, and the
 // same for 1 to 4 threads, so that those add the lanes' chips up alike.
 constexpr int kLanes = 8;
+// Batches a thread cuts on a lane before it hands the lane back: a batch (5 mm of path) is little work, and a
+// hand-over takes the lock and wakes the reporting thread (handing over each batch, two threads spent 17 % more
+// CPU than one on the impeller's S1; every 64th, 3 %).
+constexpr long kLaneSteps = 64;
 // mm: a ray whose material ends this close to the cutter's bounding cylinder is still cut (the cutter's own
 // spans are computed otherwise and may reach a rounding error beyond it).
 constexpr double kSlack = 1e-9;
@@ -584,7 +588,7 @@ private:
           cutBatch(positions, from, to, lane, t, start);
           t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane);
         },
-        [&](long done) { report(ends[first + done - 1]); });
+        [&](long done) { report(ends[first + done - 1]); }, kLaneSteps);
     const double cell = material_.resolution() * material_.resolution();
     for (size_t p = 0; p < n; ++p) {
       double volume = 0.0, gouge = 0.0;
