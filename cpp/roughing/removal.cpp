@@ -130,9 +130,29 @@ Span coneSpan(const Cone& c, const Eigen::Vector3d& q, const Eigen::Vector3d& d)
   return before ? before : after;
 }
 
-// coneSpan of the cylinder of `radius` between heights 0 and `height` (the cutter's bounding cylinder), the
-// same numbers with fewer operations (its slope is 0): every ray the cutter's capsule holds asks it.
-Span cylinderSpan(double radius, double height, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+// The ray q + t·d (tool frame) within `radius` of the tool's axis: coneSpan's quadratic with the slope 0, an
+// interval unbounded where the ray runs along the axis.
+Span radialSpan(double radius, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  const double far = std::numeric_limits<double>::infinity();
+  const double A = d.x() * d.x() + d.y() * d.y();  // ≥ 0
+  const double B = 2.0 * (q.x() * d.x() + q.y() * d.y());
+  const double C = q.x() * q.x() + q.y() * q.y() - radius * radius;
+  if (A < 1e-12) {
+    if (std::abs(B) < 1e-12) return C <= 0.0 ? Span{Interval{-far, far}} : Span{};
+    const double t = -C / B;
+    return B > 0.0 ? Interval{-far, t} : Interval{t, far};
+  }
+  const double disc = B * B - 4.0 * A * C;
+  if (disc < 0.0) return {};
+  const double root = std::sqrt(disc);
+  return Interval{(-B - root) / (2.0 * A), (-B + root) / (2.0 * A)};
+}
+
+// A radialSpan cut to the heights 0 to `height`: the span of a cylinder of the cutter's radius (the bounding
+// one up to the flutes' length, a taller one up to the cutter's top), the same numbers as coneSpan's with fewer
+// operations; the two cylinders of a ray share their radialSpan.
+Span heightSpan(const Span& radial, double height, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+  if (!radial) return radial;
   double s0 = -std::numeric_limits<double>::infinity(), s1 = -s0;
   if (std::abs(d.z()) < 1e-12) {
     if (q.z() < 0.0 || q.z() > height) return {};
@@ -140,18 +160,7 @@ Span cylinderSpan(double radius, double height, const Eigen::Vector3d& q, const 
     s0 = (0.0 - q.z()) / d.z(), s1 = (height - q.z()) / d.z();
     if (s0 > s1) std::swap(s0, s1);
   }
-  const double A = d.x() * d.x() + d.y() * d.y();  // ≥ 0
-  const double B = 2.0 * (q.x() * d.x() + q.y() * d.y());
-  const double C = q.x() * q.x() + q.y() * q.y() - radius * radius;
-  if (A < 1e-12) {
-    if (std::abs(B) < 1e-12) return C <= 0.0 ? intersect(Interval{s0, s1}, s0, s1) : Span{};
-    const double t = -C / B;
-    return B > 0.0 ? intersect(Interval{s0, t}, s0, s1) : intersect(Interval{t, s1}, s0, s1);
-  }
-  const double disc = B * B - 4.0 * A * C;
-  if (disc < 0.0) return {};
-  const double root = std::sqrt(disc);
-  return intersect(Interval{(-B - root) / (2.0 * A), (-B + root) / (2.0 * A)}, s0, s1);
+  return intersect(radial, s0, s1);
 }
 
 // coneSpan of the flutes' cylinder (the cutter's radius from height h0 up to the flutes' length) from the
@@ -622,7 +631,6 @@ private:
   void cutBatch(const std::vector<Position>& positions, size_t from, size_t to, int lane, Tally& t, size_t start) {
     const double h = material_.resolution();
     const double radius = shape_.radius * (1.0 + 1e-9) + kSlack;
-    const Cone reaching{0.0, shape_.radius, shape_.top, shape_.radius};
     std::vector<Reach>& reach = t.reach;
     reach.resize(to - from);
     for (int k = 0; k < 3; ++k) {
@@ -673,11 +681,12 @@ private:
               continue;
             const Eigen::Vector3d w = o - at.tip;
             const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
-            const Span bound = cylinderSpan(shape_.radius, shape_.length, q, c.d);
+            const Span across = radialSpan(shape_.radius, q, c.d);
+            const Span bound = heightSpan(across, shape_.length, q, c.d);
             if (!bound) continue;
             // Every span of the cutter lies within `within` (the bounding cylinder, or a taller one when the
             // corner stands above short flutes): a ray whose stock and part keep out of it loses nothing.
-            const Span within = shape_.top > shape_.length ? coneSpan(reaching, q, c.d) : bound;
+            const Span within = shape_.top > shape_.length ? heightSpan(across, shape_.top, q, c.d) : bound;
             const double lo = (within ? within : bound)->from - kSlack, hi = (within ? within : bound)->to + kSlack;
             const bool inPart = partRow && meets(uncut_, partRow[i], k, i, j, lo, hi);
             if (!inPart && !meets(material_, stockRow[i], k, i, j, lo, hi)) continue;
