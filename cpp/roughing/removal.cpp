@@ -130,9 +130,13 @@ Span coneSpan(const Cone& c, const Eigen::Vector3d& q, const Eigen::Vector3d& d)
   return before ? before : after;
 }
 
+// 1 / 2A of radialSpan's quadratic, A = dx² + dy²: the same for every ray of a direction and a position, so
+// each ray multiplies instead of dividing twice.
+double halfInverseOfA(const Eigen::Vector3d& d) { return 0.5 / (d.x() * d.x() + d.y() * d.y()); }
+
 // The ray q + t·d (tool frame) within `radius` of the tool's axis: coneSpan's quadratic with the slope 0, an
-// interval unbounded where the ray runs along the axis.
-Span radialSpan(double radius, const Eigen::Vector3d& q, const Eigen::Vector3d& d) {
+// interval unbounded where the ray runs along the axis; `halfInverse` is halfInverseOfA(d).
+Span radialSpan(double radius, const Eigen::Vector3d& q, const Eigen::Vector3d& d, double halfInverse) {
   const double far = std::numeric_limits<double>::infinity();
   const double A = d.x() * d.x() + d.y() * d.y();  // ≥ 0
   const double B = 2.0 * (q.x() * d.x() + q.y() * d.y());
@@ -145,7 +149,7 @@ Span radialSpan(double radius, const Eigen::Vector3d& q, const Eigen::Vector3d& 
   const double disc = B * B - 4.0 * A * C;
   if (disc < 0.0) return {};
   const double root = std::sqrt(disc);
-  return Interval{(-B - root) / (2.0 * A), (-B + root) / (2.0 * A)};
+  return Interval{(-B - root) * halfInverse, (-B + root) * halfInverse};
 }
 
 // A radialSpan cut to the heights 0 to `height`: the span of a cylinder of the cutter's radius (the bounding
@@ -548,6 +552,7 @@ private:
     int i0 = 0, i1 = -1, j0 = 0, j1 = -1;  // the rays of its box
     int first = 0, last = -1;              // the rays of the current row within its capsule
     Eigen::Vector3d d;                     // the rays' direction in the tool's frame
+    double halfInverseOfA = 0.0;           // of d: radialSpan's 1 / 2A
     Eigen::Vector2d tip, top;              // its axis, from the tip to the top of the cutter
   };
 
@@ -644,6 +649,7 @@ private:
         if (c.i0 > c.i1 || c.j0 > c.j1) continue;
         const Eigen::Vector3d top = at.tip + shape_.top * at.axis;
         c.d = Eigen::Vector3d(at.e1[k], at.e2[k], at.axis[k]);
+        c.halfInverseOfA = halfInverseOfA(c.d);
         c.tip = Eigen::Vector2d(at.tip[u], at.tip[v]), c.top = Eigen::Vector2d(top[u], top[v]);
         rowFrom = std::min(rowFrom, c.j0), rowTo = std::max(rowTo, c.j1);
         lowest = std::min(lowest, at.box.min()[k]), highest = std::max(highest, at.box.max()[k]);
@@ -681,7 +687,7 @@ private:
               continue;
             const Eigen::Vector3d w = o - at.tip;
             const Eigen::Vector3d q(w.dot(at.e1), w.dot(at.e2), w.dot(at.axis));
-            const Span across = radialSpan(shape_.radius, q, c.d);
+            const Span across = radialSpan(shape_.radius, q, c.d, c.halfInverseOfA);
             const Span bound = heightSpan(across, shape_.length, q, c.d);
             if (!bound) continue;
             // Every span of the cutter lies within `within` (the bounding cylinder, or a taller one when the
