@@ -3,9 +3,11 @@
 // moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
 // Issue figures: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes). Times are the
 // process's CPU time.
-// Run: build/bin/bench_feedsim [five-axis]   (five-axis: only the 5-axis program, e.g. under perf)
+// Run: build/bin/bench_feedsim [five-axis [blocks]]   (five-axis: only the 5-axis program, e.g. under perf)
 #include "kinematics/simulation.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <functional>
@@ -87,7 +89,7 @@ void fiveAxis(long blocks, const SimulationSummary& threeAxis, double threeAxisT
 int main(int argc, char** argv) {
   const long blocks = 2000000;
   if (argc > 1 && std::strcmp(argv[1], "five-axis") == 0) {
-    fiveAxis(blocks, {}, 0.0);
+    fiveAxis(argc > 2 ? std::max(1L, std::atol(argv[2])) : blocks, {}, 0.0);
     return 0;
   }
   const MachineModel machine = loadMachine("mikron-ucp710-840d", {HSM_MACHINES_DIR});
