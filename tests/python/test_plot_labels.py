@@ -1,7 +1,7 @@
 """The Pareto plot's labels: points close together get labels that do not print over each other."""
 import unittest
 
-from hsmplanner.plots.roughing_study import label_offsets
+from hsmplanner.plots.common import label_offsets
 
 
 def boxes(points, labels, offsets, plot_size=(430.0, 265.0), font=6.0):
@@ -24,7 +24,7 @@ class ParetoLabels(unittest.TestCase):
         # the study's rows of 5 December: three rest rows within 230 s and 0.1 point of each other
         points = [(406, 41.9), (985, 19.5), (1981, 5.8), (2149, 6.2), (2264, 6.2), (2379, 6.2), (2933, 6.5)]
         labels = ["S1", "S1+su", "S1+su+r", "S5+su+r", "S3+su+r", "S4+su+r", "S2+su+r"]
-        offsets = label_offsets(points, labels)
+        offsets = label_offsets(points, labels, (430.0, 265.0))
         placed = boxes(points, labels, offsets)
         for i in range(len(placed)):
             for j in range(i):
@@ -33,8 +33,8 @@ class ParetoLabels(unittest.TestCase):
         self.assertNotEqual(offsets[4][1], offsets[3][1])  # the crowded ones moved
 
     def test_no_points_and_one_point(self):
-        self.assertEqual(label_offsets([], []), [])
-        self.assertEqual(label_offsets([(1.0, 1.0)], ["S1"]), [(3, 3)])
+        self.assertEqual(label_offsets([], [], (430.0, 265.0)), [])
+        self.assertEqual(label_offsets([(1.0, 1.0)], ["S1"], (430.0, 265.0)), [(3, 3)])
 
 
 if __name__ == "__main__":

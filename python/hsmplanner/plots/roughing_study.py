@@ -4,7 +4,7 @@ by each strategy as a coloured map, and bars of the remaining volume and the mac
 Inputs are plain arrays (points, thickness) and rows of numbers: no FreeCAD, no core."""
 import numpy as np
 
-from .common import new_figure
+from .common import annotate_apart, new_figure
 
 
 def _scale_top(thickness):
@@ -119,32 +119,6 @@ def save_study_bars(rows, path, title):
     return path
 
 
-def label_offsets(points, labels, plot_size=(430.0, 265.0), font=6.0):
-    """Offsets in points (x, y) of the labels of `points` so that none prints over another: each label takes the
-    first place, above its point, below, then farther above and below, whose box (about 0.55 font sizes a
-    character wide, a font size high) meets no label placed before. `plot_size`: the plot's width and height in
-    points, to put the data and the labels in one measure."""
-    if not points:
-        return []
-    xs, ys = [p[0] for p in points], [p[1] for p in points]
-    x0, y0 = min(xs), min(ys)
-    xspan, yspan = (max(xs) - x0) or 1.0, (max(ys) - y0) or 1.0
-    boxes, offsets = [], []
-    for (x, y), label in zip(points, labels):
-        px, py = (x - x0) / xspan * plot_size[0], (y - y0) / yspan * plot_size[1]
-        width = 0.55 * font * len(label)
-        chosen = None
-        for dy in (3, -9, 11, -17, 19, -25):
-            box = (px + 3, py + dy, px + 3 + width, py + dy + font)
-            if not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in boxes):
-                chosen = (box, (3, dy))
-                break
-        box, offset = chosen or ((px + 3, py + 3, px + 3 + width, py + 3 + font), (3, 3))
-        boxes.append(box)
-        offsets.append(offset)
-    return offsets
-
-
 def save_pareto(rows, path, title):
     """V_r beyond the allowance against the simulated time, one point per row (colour: strategy, mark: as the
     paper, step-up, step-up and rest roughing), the rows no other beats on both joined: the front a shop
@@ -158,9 +132,9 @@ def save_pareto(rows, path, title):
     colours = dict(zip(strategies, ("C0", "C1", "C2", "C3", "C4", "C5")))
     marks = {"paper": "o", "step-up": "s"}
     points = [(row["time_s"], row["vr_beyond_allowance"]) for row in measured]
-    for row, point, offset in zip(measured, points, label_offsets(points, [short_label(r) for r in measured])):
+    for row, point in zip(measured, points):
         axes.scatter(*point, color=colours[row["strategy"]], marker=marks.get(row["variant"], "^"), s=36)
-        axes.annotate(short_label(row), point, fontsize=6, xytext=offset, textcoords="offset points")
+    annotate_apart(axes, points, [short_label(r) for r in measured], fontsize=6)
     front = pareto_front(measured, ("time_s", "vr_beyond_allowance"))
     axes.plot([r["time_s"] for r in front], [r["vr_beyond_allowance"] for r in front], "k--", lw=0.8,
               label="Pareto front")

@@ -5,7 +5,7 @@ and the names are the study's own (hsmplanner.study)."""
 import numpy as np
 
 from ..study import FEED_CLASS_NAMES, pareto_front, short_name
-from .common import new_figure
+from .common import annotate_apart, new_figure
 
 STRATEGY_STYLES = {"planes": ("tab:blue", "o", "parallel planes"), "guide": ("tab:orange", "s", "guide curves"),
                    "4-step": ("tab:red", "*", "the paper's 4-step method")}
@@ -27,9 +27,8 @@ def draw_pareto(axes, rows, selected=(), label_front=True):
         axes.step([r["time_s"] for r in front], [100 * r["slowdown_share"] for r in front], where="post",
                   color="black", linewidth=1.0, label="Pareto front", zorder=2)
         if label_front:
-            for r in front:
-                axes.annotate(short_name(r), (r["time_s"], 100 * r["slowdown_share"]), fontsize=6,
-                              xytext=(4, 3), textcoords="offset points")
+            annotate_apart(axes, [(r["time_s"], 100 * r["slowdown_share"]) for r in front],
+                           [short_name(r) for r in front], fontsize=6)
     chosen = [r for r in ran if r["name"] in set(selected)]
     if chosen:
         axes.scatter([r["time_s"] for r in chosen], [100 * r["slowdown_share"] for r in chosen], s=140,
