@@ -7,10 +7,57 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
+#include <vector>
 
 namespace hsm::kinematics::detail {
 
 namespace {
+// The joint motions of 5-axis blocks come and go in program order, a few hundred alive at a time: their
+// nodes (the motion and its shared count) are kept on a free list of this thread for the next block, so
+// the planner asks the heap for no memory per block.
+class NodeList {
+public:
+  ~NodeList() {
+    for (void* node : free_) ::operator delete(node);
+  }
+  void* take(size_t bytes) {
+    if (bytes != bytes_ || free_.empty()) return ::operator new(bytes);
+    void* node = free_.back();
+    free_.pop_back();
+    return node;
+  }
+  void give(void* node, size_t bytes) {
+    if (bytes_ == 0) bytes_ = bytes;
+    if (bytes != bytes_ || free_.size() >= kKept) return ::operator delete(node);
+    free_.push_back(node);
+  }
+
+private:
+  static constexpr size_t kKept = 4096;
+  size_t bytes_ = 0;
+  std::vector<void*> free_;
+};
+
+NodeList& nodes() {
+  thread_local NodeList list;
+  return list;
+}
+
+template <class T>
+struct RecycledNodes {
+  using value_type = T;
+  RecycledNodes() = default;
+  template <class U>
+  RecycledNodes(const RecycledNodes<U>&) {}
+  T* allocate(size_t n) { return static_cast<T*>(n == 1 ? nodes().take(sizeof(T)) : ::operator new(n * sizeof(T))); }
+  void deallocate(T* p, size_t n) { n == 1 ? nodes().give(p, sizeof(T)) : ::operator delete(p); }
+  template <class U>
+  bool operator==(const RecycledNodes<U>&) const { return true; }
+  template <class U>
+  bool operator!=(const RecycledNodes<U>&) const { return false; }
+};
+
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kTangentCosine = 1.0 - 1e-12;  // junctions straighter than this are not corners
 // LinuxCNC 2.9 splits the acceleration on arcs and blends: 0.866·a normal, 0.5·a tangential (0.866² + 0.5² = 1).
@@ -117,7 +164,7 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
 
   double velocity, rapidVelocity, curvatureLimit = kInfinity;
   if (joint) {
-    s.joint = std::make_shared<const JointMotion>(*joint);
+    s.joint = std::allocate_shared<const JointMotion>(RecycledNodes<JointMotion>(), *joint);
     if (m.rotaryPlanner == RotaryPlanner::LinuxCnc) {
       // LinuxCNC's directions are the program's X Y Z; a turn of the rotary axes alone gets +X, as posemath
       // gives a line of no length (pmCartLineInit), which its parabolic blends read.
@@ -524,7 +571,8 @@ void Planner::commitOldest() {
     forwardDynamics_ = hasNext ? at(1).dynamics : s.dynamics;
   }
   if (hasNext) at(1).entry = exit;
-  commit_(s, s.entry, exit, pinned);
+  const double entry = s.entry;
+  commit_(std::move(s), entry, exit, pinned);  // the ring's slot is left to the next block
   head_ = (head_ + 1) % ring_.size();
   --count_;
   ++committed_;

@@ -67,7 +67,7 @@ Dynamics weakest(const Dynamics& a, const Dynamics& b);
 class Planner {
 public:
   // A block with its final entry and exit speeds; pinnedExit: the exit speed is the junction's own limit.
-  using Commit = std::function<void(const Segment&, double entry, double exit, bool pinnedExit)>;
+  using Commit = std::function<void(Segment&&, double entry, double exit, bool pinnedExit)>;  // the segment is given away
   Planner(const MachineModel& machine, Commit commit);
 
   void add(const Block& block, long source, const JointMotion* joint = nullptr);

@@ -35,8 +35,8 @@ double timeAtDistance(const BlockProfile& p, double distance, const Dynamics& d,
 RunTimer::RunTimer(Emit emit, double tracePeriod, Sample sample)
     : emit_(std::move(emit)), tracePeriod_(tracePeriod), sample_(std::move(sample)) {}
 
-void RunTimer::add(const Segment& segment, double entry, double exit, bool pinnedExit) {
-  run_.push_back({segment, entry, exit});
+void RunTimer::add(Segment&& segment, double entry, double exit, bool pinnedExit) {
+  run_.push_back({std::move(segment), entry, exit});
   if (pinnedExit || run_.size() >= kLongestRun) flush();
 }
 

@@ -23,7 +23,7 @@ public:
   using Sample = std::function<void(double t, double speed, const Eigen::Vector3d& point)>;
   RunTimer(Emit emit, double tracePeriod, Sample sample);
 
-  void add(const Segment& segment, double entry, double exit, bool pinnedExit);
+  void add(Segment&& segment, double entry, double exit, bool pinnedExit);
   void finish();
 
 private:

@@ -247,8 +247,8 @@ SimulationResult run(const MachineModel& machine, const SimulationOptions& optio
   detail::RunTimer runs([&](const detail::Segment& s, const detail::BlockTiming& t) { collector.commit(s, t); },
                         options.tracePeriod,
                         [&](double t, double v, const Eigen::Vector3d& x) { collector.sample(t, v, x); });
-  detail::Planner planner(machine, [&](const detail::Segment& s, double entry, double exit, bool pinned) {
-    runs.add(s, entry, exit, pinned);
+  detail::Planner planner(machine, [&](detail::Segment&& s, double entry, double exit, bool pinned) {
+    runs.add(std::move(s), entry, exit, pinned);
   });
   long source = 0;
   FiveAxisCutter cutter(machine);
