@@ -14,35 +14,33 @@ namespace hsm::kinematics::detail {
 
 namespace {
 // The joint motions of 5-axis blocks come and go in program order, a few hundred alive at a time: their
-// nodes (the motion and its shared count) are kept on a free list of this thread for the next block, so
-// the planner asks the heap for no memory per block.
+// nodes (the motion and its shared count, `Bytes` each) are kept on a free list of this thread for the next
+// block, so the planner asks the heap for no memory per block; at most 4096 are kept.
+template <size_t Bytes>
 class NodeList {
 public:
   ~NodeList() {
     for (void* node : free_) ::operator delete(node);
   }
-  void* take(size_t bytes) {
-    if (bytes != bytes_ || free_.empty()) return ::operator new(bytes);
+  void* take() {
+    if (free_.empty()) return ::operator new(Bytes);
     void* node = free_.back();
     free_.pop_back();
     return node;
   }
-  void give(void* node, size_t bytes) {
-    if (bytes_ == 0) bytes_ = bytes;
-    if (bytes != bytes_ || free_.size() >= kKept) return ::operator delete(node);
+  void give(void* node) {
+    if (free_.size() >= kKept) return ::operator delete(node);
     free_.push_back(node);
+  }
+  static NodeList& ofThisThread() {
+    thread_local NodeList list;
+    return list;
   }
 
 private:
   static constexpr size_t kKept = 4096;
-  size_t bytes_ = 0;
   std::vector<void*> free_;
 };
-
-NodeList& nodes() {
-  thread_local NodeList list;
-  return list;
-}
 
 template <class T>
 struct RecycledNodes {
@@ -50,8 +48,10 @@ struct RecycledNodes {
   RecycledNodes() = default;
   template <class U>
   RecycledNodes(const RecycledNodes<U>&) {}
-  T* allocate(size_t n) { return static_cast<T*>(n == 1 ? nodes().take(sizeof(T)) : ::operator new(n * sizeof(T))); }
-  void deallocate(T* p, size_t n) { n == 1 ? nodes().give(p, sizeof(T)) : ::operator delete(p); }
+  T* allocate(size_t n) {
+    return static_cast<T*>(n == 1 ? NodeList<sizeof(T)>::ofThisThread().take() : ::operator new(n * sizeof(T)));
+  }
+  void deallocate(T* p, size_t n) { n == 1 ? NodeList<sizeof(T)>::ofThisThread().give(p) : ::operator delete(p); }
   template <class U>
   bool operator==(const RecycledNodes<U>&) const { return true; }
   template <class U>

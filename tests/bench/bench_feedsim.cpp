@@ -89,7 +89,14 @@ void fiveAxis(long blocks, const SimulationSummary& threeAxis, double threeAxisT
 int main(int argc, char** argv) {
   const long blocks = 2000000;
   if (argc > 1 && std::strcmp(argv[1], "five-axis") == 0) {
-    fiveAxis(argc > 2 ? std::max(1L, std::atol(argv[2])) : blocks, {}, 0.0);
+    char* end = nullptr;
+    const long asked = argc > 2 ? std::strtol(argv[2], &end, 10) : blocks;
+    if (argc > 2 && (end == argv[2] || *end != '\0' || asked < 1 || asked > 20000000)) {
+      std::fprintf(stderr, "bench_feedsim five-axis: blocks '%s' must be a whole number from 1 to 20000000 "
+                   "(the program text takes about 45 bytes a block)\n", argv[2]);
+      return 2;
+    }
+    fiveAxis(asked, {}, 0.0);
     return 0;
   }
   const MachineModel machine = loadMachine("mikron-ucp710-840d", {HSM_MACHINES_DIR});

@@ -1,7 +1,7 @@
 """The Pareto plot's labels: points close together get labels that do not print over each other."""
 import unittest
 
-from hsmplanner.plots.common import label_offsets
+from hsmplanner.plots.common import label_offsets, overlap
 
 
 def boxes(points, labels, offsets, plot_size=(430.0, 265.0), font=6.0):
@@ -13,10 +13,6 @@ def boxes(points, labels, offsets, plot_size=(430.0, 265.0), font=6.0):
         px, py = (x - min(xs)) / xspan * plot_size[0], (y - min(ys)) / yspan * plot_size[1]
         result.append((px + dx, py + dy, px + dx + 0.55 * font * len(label), py + dy + font))
     return result
-
-
-def overlap(a, b):
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 class ParetoLabels(unittest.TestCase):

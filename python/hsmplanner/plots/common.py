@@ -33,6 +33,10 @@ def label_offsets(points, labels, plot_size, font=6.0, limits=None):
     character wide, a font size high) meets no label placed before. `plot_size`: the plot's width and height in
     points, and `limits` ((x0, x1), (y0, y1)) the data they show (the points' own span when None), to put the
     data and the labels in one measure."""
+    if len(points) != len(labels):
+        raise ValueError("label_offsets: %d points but %d labels: give one label per point" % (len(points), len(labels)))
+    if any(len(p) != 2 for p in points):
+        raise ValueError("label_offsets: each point is (x, y), not %r" % (next(p for p in points if len(p) != 2),))
     if not points:
         return []
     xs, ys = [p[0] for p in points], [p[1] for p in points]
@@ -42,16 +46,16 @@ def label_offsets(points, labels, plot_size, font=6.0, limits=None):
     for (x, y), label in zip(points, labels):
         px, py = (x - x0) / xspan * plot_size[0], (y - y0) / yspan * plot_size[1]
         width = 0.55 * font * len(label)
-        chosen = None
-        for dy in (3, -9, 11, -17, 19, -25):
-            box = (px + 3, py + dy, px + 3 + width, py + dy + font)
-            if not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in boxes):
-                chosen = (box, (3, dy))
-                break
-        box, offset = chosen or ((px + 3, py + 3, px + 3 + width, py + 3 + font), (3, 3))
+        places = [((px + 3, py + dy, px + 3 + width, py + dy + font), (3, dy)) for dy in (3, -9, 11, -17, 19, -25)]
+        box, offset = next((place for place in places if not any(overlap(place[0], b) for b in boxes)), places[0])
         boxes.append(box)
         offsets.append(offset)
     return offsets
+
+
+def overlap(a, b):
+    """Whether boxes (x0, y0, x1, y1) a and b overlap."""
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def annotate_apart(axes, points, labels, fontsize=6):
