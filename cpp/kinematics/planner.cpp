@@ -101,7 +101,7 @@ Planner::Planner(const MachineModel& machine, Commit commit) : machine_(machine)
 
 namespace {
 // The most an axis allows along the path: min over axes of limit / |rate|, from the limits' inverses (one
-// division, not five: it runs four times a piece); the index of that axis in `which`.
+// division, not five); the index of that axis in `which`.
 double projected(const JointVector& inverseLimits, const JointVector& rate, int& which) {
   double most = 0.0;
   which = -1;
@@ -131,13 +131,30 @@ SpeedLimit Planner::slowestAxis(const JointVector& inverseLimits, const Eigen::V
 
 void Planner::jointLimits(Segment& s, const JointMotion& joint, double& velocity, double& rapidVelocity,
                           double& curvatureLimit) const {
-  int which = -1, ignored = -1;
-  s.dynamics.acceleration = projected(inverseAcceleration_, joint.rate, which);
-  s.accelerationLimit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
-  s.dynamics.jerk = projected(inverseJerk_, joint.rate, ignored);
-  velocity = projected(inverseVelocity_, joint.rate, which);
-  rapidVelocity = projected(inverseRapid_, joint.rate, ignored);
-  s.limit = which >= 0 ? axisLimit(machine_, which) : SpeedLimit::Feed;
+  // The four projected limits in one pass over the axes, as projected() takes each (it runs for every piece).
+  double acceleration = 0.0, jerk = 0.0, speed = 0.0, rapid = 0.0;
+  int accelerationAxis = -1, speedAxis = -1;
+  for (int i = 0; i < 5; ++i) {
+    const double r = std::abs(joint.rate[i]);
+    if (!(r > 1e-12)) continue;
+    if (r * inverseAcceleration_[i] > acceleration) {
+      acceleration = r * inverseAcceleration_[i];
+      accelerationAxis = i;
+    }
+    if (r * inverseVelocity_[i] > speed) {
+      speed = r * inverseVelocity_[i];
+      speedAxis = i;
+    }
+    jerk = std::max(jerk, r * inverseJerk_[i]);
+    rapid = std::max(rapid, r * inverseRapid_[i]);
+  }
+  const auto inverse = [](double most) { return most > 0.0 ? 1.0 / most : kInfinity; };
+  s.dynamics.acceleration = inverse(acceleration);
+  s.accelerationLimit = accelerationAxis >= 0 ? axisLimit(machine_, accelerationAxis) : SpeedLimit::Feed;
+  s.dynamics.jerk = inverse(jerk);
+  velocity = inverse(speed);
+  rapidVelocity = inverse(rapid);
+  s.limit = speedAxis >= 0 ? axisLimit(machine_, speedAxis) : SpeedLimit::Feed;
   // Where an axis's rate changes along the path, at speed v it needs curvature·v² of acceleration.
   for (int i = 0; i < 5; ++i)
     if (joint.curvature[i] > 1e-12) {
@@ -515,7 +532,7 @@ Dynamics weakest(const Dynamics& a, const Dynamics& b) {
   return {std::min(a.acceleration, b.acceleration), std::min(a.jerk, b.jerk), a.jerkLimited || b.jerkLimited};
 }
 
-void Planner::push(Segment segment) {
+void Planner::push(Segment&& segment) {
   segment.position = nextPosition_;
   nextPosition_ += segment.length;
   if (count_ == 0 && segment.position == 0.0) segment.entry = 0.0;  // the program starts from rest

@@ -99,7 +99,7 @@ private:
   void linuxCncExactStop(Segment& before, Segment& after) const;
   double linuxCncCorner(const Segment& before, const Segment& after, const Corner& corner, double cosine,
                         double limit, Junction& j) const;
-  void push(Segment segment);
+  void push(Segment&& segment);  // the segment is moved into the ring once
   void overlapParabolic(Segment& before, const Segment& after) const;
   void pushPending();
   void lastsACycle(Segment& s) const;

@@ -36,7 +36,7 @@ RunTimer::RunTimer(Emit emit, double tracePeriod, Sample sample)
     : emit_(std::move(emit)), tracePeriod_(tracePeriod), sample_(std::move(sample)) {}
 
 void RunTimer::add(Segment&& segment, double entry, double exit, bool pinnedExit) {
-  run_.push_back({std::move(segment), entry, exit});
+  run_.emplace_back(std::move(segment), entry, exit);  // one move: no Member in between
   if (pinnedExit || run_.size() >= kLongestRun) flush();
 }
 

@@ -28,6 +28,7 @@ public:
 
 private:
   struct Member {
+    Member(Segment&& s, double in, double out) : segment(std::move(s)), entry(in), exit(out) {}
     Segment segment;
     double entry, exit;
   };

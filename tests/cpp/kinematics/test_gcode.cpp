@@ -1,4 +1,5 @@
 #include "kinematics/gcode.hpp"
+#include "kinematics/gcode_lexer.hpp"
 
 #include "support/mutation.hpp"
 
@@ -173,8 +174,31 @@ TEST(GcodeReader, NumbersReadExactlyAsTheGeneralParserReadsThem) {
                            "999999999", "0.000000000000000000000001", "123456789.12345678", "0.30000000000000004"}) {
     const auto blocks = readProgram(std::string("G0 X") + text + "\n");
     ASSERT_EQ(blocks.size(), std::strtod(text, nullptr) == 0.0 ? 0u : 1u) << text;
-    if (!blocks.empty()) EXPECT_EQ(blocks[0].end.x(), std::strtod(text, nullptr)) << text;
+    if (!blocks.empty()) {
+      EXPECT_EQ(blocks[0].end.x(), std::strtod(text, nullptr)) << text;
+    }
   }
   for (const char* bad : {"1.2.3", "1e5", "--1", "1..2"})
     EXPECT_THROW(readProgram(std::string("G0 X") + bad + "\n"), ParseError) << bad;
+}
+
+TEST(GcodeLexer, RandomNumbersReadAsStrtodReadsThem) {
+  // The fast path (up to 15 significant digits) and fast_float (beyond) on every length of integer and fraction
+  // part, with leading zeros, signs and what may follow a number (a word, a blank, a comment, the line's end).
+  std::mt19937 random(20261205);
+  const char* after[] = {"", " Y1", "Y-2.5", ";note", "(c)", "\t", " "};
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::string number = trial % 3 == 0 ? "-" : trial % 7 == 0 ? "+" : "";
+    const int zeros = random() % 4, whole = random() % 10, fraction = random() % 20;
+    number += std::string(zeros, '0');
+    for (int i = 0; i < whole; ++i) number += char('0' + random() % 10);
+    if (fraction > 0 || whole + zeros == 0) number += '.';
+    for (int i = 0; i < std::max(fraction, whole + zeros == 0 ? 1 : 0); ++i) number += char('0' + random() % 10);
+    const std::string line = "X" + number + after[trial % 7];
+    detail::Line parsed;
+    parsed.parse(line, 1);
+    ASSERT_GE(parsed.wordCount, 1) << line;
+    EXPECT_EQ(parsed.words[0].value, std::strtod(number.c_str(), nullptr)) << line;
+    EXPECT_EQ(parsed.words[0].text, "X" + number) << line;
+  }
 }
