@@ -163,6 +163,7 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
   } catch (const InputError& error) {
     throw InputError(where() + error.what());
   }
+  if (pieces == 1 && !block.isArc()) return onePiece(block, q[0], q[1], piece);
 
   // The feed's path: the tip (tip programmed) or X Y Z (machine axes); the rotary angle when neither moves.
   const bool tip = block.toolTip || m.toolTipProgrammed;
@@ -222,11 +223,47 @@ void FiveAxisCutter::cut(const Block& block, const std::function<void(const Bloc
     joint.end = q[i + 1];
     piece(b, joint);
   }
-  previous_ = {q.back()[3], q.back()[4]};
+  ended(block, q.back());
+}
+
+// A line whose axes turn less than a degree, the usual block of a 5-axis finishing program: what cut() does
+// for one piece, without its arrays of pieces (their bookkeeping was most of a block's cost). Its rates are
+// constant along it: no curvature.
+void FiveAxisCutter::onePiece(const Block& block, const JointVector& q0, const JointVector& q1,
+                              const std::function<void(const Block&, const JointMotion&)>& piece) {
+  const MachineModel& m = machine_;
+  const bool tip = block.toolTip || m.toolTipProgrammed;
+  Block b = block;
+  if (tip) {
+    b.end = block.start + (block.end - block.start);  // as cut() interpolates its pieces' ends
+  } else {
+    b.start = forwardKinematics(m, {q0.head<3>(), {q0[3], q0[4]}}).tip;
+    b.end = forwardKinematics(m, {q1.head<3>(), {q1[3], q1[4]}}).tip;
+  }
+  JointMotion joint;
+  joint.active = true;
+  joint.tipLength = (b.end - b.start).norm();
+  const double linear = tip ? joint.tipLength : (q1.head<3>() - q0.head<3>()).norm();
+  joint.rotaryOnly = linear < 1e-6;
+  joint.pathLength = joint.rotaryOnly ? (q1.tail<2>() - q0.tail<2>()).norm() : linear;
+  if (block.inverseTime) b.feed = joint.pathLength * block.feed;
+  b.rateLength = joint.pathLength;
+  if (joint.pathLength > 0.0) {
+    joint.rate = (q1 - q0) / joint.pathLength;
+    joint.start = q0;
+    joint.end = q1;
+    piece(b, joint);
+  }
+  ended(block, q1);
+}
+
+// Where the program and the machine are once `block` is cut, its last joints `joints`.
+void FiveAxisCutter::ended(const Block& block, const JointVector& joints) {
+  previous_ = {joints[3], joints[4]};
   programmed_ = block.rotaryEnd;
   // The tool axis of angles is asked for only when a vector follows: zero says so.
   orientation_ = block.orientationVectors ? block.orientationEnd : Eigen::Vector3d::Zero();
-  remember(block, block.end, q.back());
+  remember(block, block.end, joints);
 }
 
 // The machine's axes where the block starts: where the block before it ended when it starts there, at the same

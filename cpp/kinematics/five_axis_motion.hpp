@@ -66,6 +66,9 @@ private:
   // The machine axes at `pieces` + 1 points, refined near singularities (pieces may grow).
   void sample(const Block& block, const RotaryAngles& startAngles, int& pieces, std::vector<JointVector>& q);
   JointVector startJoints(const Block& block, const RotaryAngles& angles);
+  void onePiece(const Block& block, const JointVector& q0, const JointVector& q1,
+                const std::function<void(const Block&, const JointMotion&)>& piece);
+  void ended(const Block& block, const JointVector& joints);
   void remember(const Block& block, const Eigen::Vector3d& end, const JointVector& joints);
   const MachineModel& machine_;
   RotaryAngles previous_{0.0, 0.0};
