@@ -62,7 +62,8 @@ inline double stopAndGoLoss(double speed, const Dynamics& d) { return speedChang
 // Highest steady speed on a curve of radius `radius` mm.
 inline double curvatureSpeed(double radius, const Dynamics& d) {
   const double v = std::sqrt(d.acceleration * radius);
-  return d.jerkLimited ? std::min(v, cubeRoot(d.jerk * radius * radius)) : v;
+  // The jerk's bound (J·r²)^(1/3) is only solved for where it is the lower: v³ > J·r².
+  return d.jerkLimited && v * v * v > d.jerk * radius * radius ? std::min(v, cubeRoot(d.jerk * radius * radius)) : v;
 }
 
 // min over the axes of limits_i / |u_i|: per-axis limits projected on direction u (infinite for u = 0).

@@ -172,8 +172,11 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
   s.block = block;
   s.source = source;
   s.length = joint ? joint->pathLength : block.length();
-  s.startTangent = block.tangent(false);
-  s.endTangent = block.tangent(true);
+  // The tip's tangents, except where a 4- or 5-axis block's corners are its machine direction's (below).
+  const auto tipTangents = [&s, &block] {
+    s.startTangent = block.tangent(false);
+    s.endTangent = block.tangent(true);
+  };
   const bool linuxcnc = m.controller == ControllerKind::LinuxCNC;
   const bool rapid = block.motion == Motion::Rapid;
   s.dynamics.jerkLimited = m.controller == ControllerKind::Siemens840D &&
@@ -190,10 +193,13 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
     } else {
       // Corners are the machine's: X Y Z's direction (the tip's in the workpiece frame is turned by the table).
       const Eigen::Vector3d machineDirection = joint->end.head<3>() - joint->start.head<3>();
-      if (machineDirection.norm() > 1e-12) s.startTangent = s.endTangent = machineDirection.normalized();
+      if (machineDirection.norm() > 1e-12)
+        s.startTangent = s.endTangent = machineDirection.normalized();
+      else
+        tipTangents();
     }
     jointLimits(s, *joint, velocity, rapidVelocity, curvatureLimit);
-  } else if (block.isArc()) {
+  } else if (tipTangents(); block.isArc()) {
     // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
     const Eigen::Vector3d inPlane = Eigen::Vector3d::Ones() - block.normal.cwiseAbs();
     const double along = std::abs(block.normal.dot(block.end - block.start)) / std::max(s.length, 1e-12);
@@ -323,14 +329,15 @@ Planner::Junction Planner::tipJunction(const Segment& before, const Segment& aft
   double v = 0.0;
   switch (m.controller) {
     case ControllerKind::Siemens840D: {
-      const double jump = projectedLimit(m.velocityJump, after.startTangent - before.endTangent);
-      v = jump;
-      if (before.block.pathMode == PathMode::Rounding)
-        v = std::max(v, curvatureSpeed(blendRadius(corner, before.block.tolerance, shorter), d));
       // A chain of short blocks is a curve: its radius through the three points bounds the speed, at the
       // junction and along both blocks (the look-ahead sees the curve, not the chords).
       const double chord = (after.block.end - before.block.start).norm();
       j.adjacentCap = curvatureSpeed(chord / (2.0 * corner.sinPhi), d);
+      v = projectedLimit(m.velocityJump, after.startTangent - before.endTangent);
+      // Rounding lets the corner go faster than the jump allows, up to what its blend's radius allows; where
+      // the jump already reaches the cap, the blend changes nothing.
+      if (before.block.pathMode == PathMode::Rounding && v < std::min(limit, j.adjacentCap))
+        v = std::max(v, curvatureSpeed(blendRadius(corner, before.block.tolerance, shorter), d));
       v = std::min(v, j.adjacentCap);
       break;
     }
