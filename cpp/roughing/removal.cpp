@@ -559,7 +559,12 @@ private:
   // What a lane tallies for the positions of a round, on its own rows.
   struct alignas(64) Tally {  // a cache line of its own: lanes on other cores write theirs
     std::vector<double> removed, gouged;  // per position: length taken out along the Z rays, of stock and part
-    std::vector<double> highest;          // per batch: the stick-out its rows need at the batch's end
+    std::vector<double> highest;          // per batch: the stick-out its rows need at the batch's end, or
+                                          // `known` when that is more
+    // The most any batch before needed (the lane's own, the rounds' before): a batch that needs no more cannot
+    // raise the result, so its rays are only read where they would go higher (every batch still gets its
+    // exact stick-out wherever it raises the most so far, so the result and its move do not change).
+    double known = 0.0;
     Intervals spans;                      // scratch
     std::vector<Reach> reach;             // scratch
   };
@@ -593,14 +598,17 @@ private:
                 RemovalResult& r, Report& report) {
     const size_t start = first ? ends[first - 1] : 0, n = ends[last - 1] - start;
     std::vector<Tally> tallies(static_cast<size_t>(lanes_));
-    for (Tally& t : tallies) t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
+    for (Tally& t : tallies) {
+      t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
+      t.known = r.stickOut;
+    }
     parallelLanes(
         lanes_, threads_, static_cast<long>(last - first),
         [&](int lane, long batch) {
           Tally& t = tallies[static_cast<size_t>(lane)];
           const size_t from = first + batch ? ends[first + batch - 1] : 0, to = ends[first + batch];
           cutBatch(positions, from, to, lane, t, start);
-          t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane);
+          t.known = t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane, t.known);
         },
         [&](long done) { report(ends[first + done - 1]); }, kLaneSteps);
     const double cell = material_.resolution() * material_.resolution();
@@ -710,17 +718,17 @@ private:
     }
   }
 
-  // The highest point of the part or of the stock left within the holder's radius of the axis, above the tip
-  // (0 when none), on `lane`'s rows: read on the rays of the direction nearest the axis, each clipped to the
-  // holder's cylinder (rows clipped to the band that cylinder covers seen along them).
-  double stickOutAt(const Position& at, int lane) const {
+  // The highest point of the part or of the stock left within the holder's radius of the axis, above the tip,
+  // on `lane`'s rows, or `known` when none is higher: read on the rays of the direction nearest the axis, each
+  // clipped to the holder's cylinder (rows clipped to the band that cylinder covers seen along them).
+  double stickOutAt(const Position& at, int lane, double known) const {
     int k;
     at.axis.cwiseAbs().maxCoeff(&k);
     const int u = (k + 1) % 3, v = (k + 2) % 3;
     const double radius = 0.5 * cutter_.holderDiameter;
     double reach = 0.0;  // how far up the axis the stock goes
     for (int c = 0; c < 8; ++c) reach = std::max(reach, (stockBox_.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - at.tip).dot(at.axis));
-    if (reach <= 0.0) return 0.0;
+    if (reach <= known) return known;
     Eigen::Vector3d across;
     for (int a = 0; a < 3; ++a) across[a] = radius * std::sqrt(std::max(0.0, 1.0 - at.axis[a] * at.axis[a]));
     const Eigen::Vector3d top = at.tip + reach * at.axis;
@@ -732,7 +740,7 @@ private:
     const Eigen::Vector3d n = Eigen::Vector3d::Unit(k).cross(at.axis);
     const double band = radius * n.norm() + kSlack;
     const double h = material_.resolution();
-    double highest = 0.0;
+    double highest = known;
     for (int j = nextRow(lane, j0, true); j <= j1; j = nextRow(lane, j + 2, true)) {
       int first = i0, last = i1;
       if (n.norm() > 1e-3) {
