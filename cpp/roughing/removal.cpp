@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -35,6 +36,7 @@ constexpr long kLaneSteps = 64;
 // mm: a ray whose material ends this close to the cutter's bounding cylinder is still cut (the cutter's own
 // spans are computed otherwise and may reach a rounding error beyond it).
 constexpr double kSlack = 1e-9;
+constexpr double kTieHair = 1e-9;  // mm: stick-outs this close are the same height read from another position
 constexpr int kCornerSegments = 8;
 constexpr double kRapidVolume = 1e-6;  // mm³: less is rounding at a grazing ray, not material  // a torus corner of radius 1 as 8 cones: within 5 µm of it
 
@@ -545,6 +547,13 @@ private:
     return rest;
   }
 
+  // `value` into `most` unless `most` is already as high (lanes on other threads raise it too).
+  static void raise(std::atomic<double>& most, double value) {
+    double seen = most.load(std::memory_order_relaxed);
+    while (value > seen && !most.compare_exchange_weak(seen, value, std::memory_order_relaxed)) {
+    }
+  }
+
   static double deflection(double resolution) { return std::clamp(0.25 * resolution, 0.005, 0.05); }
 
   // Where a position's cutter lies seen along the rays of one direction (cutBatch's scratch).
@@ -602,13 +611,20 @@ private:
       t.removed.assign(n, 0.0), t.gouged.assign(n, 0.0), t.highest.assign(last - first, 0.0);
       t.known = r.stickOut;
     }
+    // The most any lane has found so far, of any batch, earlier or later: a batch whose rows need less cannot
+    // be the first to need the result, so it reads rays only above it (less a hair, so that a batch tying the
+    // result, as every level under the blank's flat top does, still finds its exact value and keeps its move).
+    std::atomic<double> found{r.stickOut};
     parallelLanes(
         lanes_, threads_, static_cast<long>(last - first),
         [&](int lane, long batch) {
           Tally& t = tallies[static_cast<size_t>(lane)];
           const size_t from = first + batch ? ends[first + batch - 1] : 0, to = ends[first + batch];
           cutBatch(positions, from, to, lane, t, start);
-          t.known = t.highest[static_cast<size_t>(batch)] = stickOutAt(positions[to - 1], lane, t.known);
+          const double floor = std::max(t.known, found.load(std::memory_order_relaxed) - kTieHair);
+          const double needed = stickOutAt(positions[to - 1], lane, floor);
+          if (needed > floor) t.known = std::max(t.known, needed), raise(found, needed);
+          t.highest[static_cast<size_t>(batch)] = needed > floor ? needed : t.known;
         },
         [&](long done) { report(ends[first + done - 1]); }, kLaneSteps);
     const double cell = material_.resolution() * material_.resolution();
