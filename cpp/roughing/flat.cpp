@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace hsm::roughing {
 
@@ -168,41 +169,64 @@ void addProjected(const Projection& projection, const Eigen::Vector3d (&t)[3], c
   if (cl::Area(path) > 0.0) pieces.push_back(std::move(path));
 }
 
-// The mesh's triangles laid flat, each cut to each band of `bands` (heights [from, to[) it meets, leaving out
-// those outside `window`, split where the plane's scales vary over them, gathered in bins by
-// `binOf(triangle, band)`: what stands over the surface, seen
-// along the tool axis. The mesh is of closed solids, its triangles facing out: on planes only those facing the
-// spindle are needed (a ray along the tool axis from any point of the solid leaves it through one of them),
-// half the union's work. (Unrolled cylinders keep every triangle: culled there, S2's levels lost part of their
-// region, 121 against 150 mm of cutting on an impeller channel, for a reason not found yet.)
-// Whether the plane's scales differ by more than 15 % over the triangle's corners: its shadow, grown by one
-// scale, would then be grown too much at its other end.
+// Whether the plane's scales differ by more than 10 % over the triangle's corners: its shadow, grown at its
+// least scales, would then be grown too much at its other end (at 15 %, 0.2–0.6 mm too much on an impeller's
+// unrolled levels).
 bool scalesVary(const Projection& projection, const Eigen::Vector3d (&p)[3]) {
   const Eigen::Vector2d s[3] = {projection.scalesAt(p[0]), projection.scalesAt(p[1]), projection.scalesAt(p[2])};
   const Eigen::Vector2d low = s[0].cwiseMin(s[1]).cwiseMin(s[2]), high = s[0].cwiseMax(s[1]).cwiseMax(s[2]);
-  return high.x() > 1.15 * low.x() || high.y() > 1.15 * low.y();
+  return high.x() > 1.10 * low.x() || high.y() > 1.10 * low.y();
 }
 
-template <class BinOf>
+// The triangles of one band laid flat that are grown alike, and the least scales and convexity among them.
+struct Bin {
+  cl::Paths pieces;
+  Eigen::Vector2d scales{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double convexity = std::numeric_limits<double>::infinity();
+};
+using Bins = std::map<long long, Bin>;
+constexpr long long kMaxBands = 64;  // a bin's key is its class's times this, plus its band
+constexpr long long kScaleLevels = 512;  // a keep-out class's scale steps (1e-3 to 1e3 in steps of 5 %: ±142)
+
+// A triangle's class: the key of the bins it goes in (one per band), its least scales and convexity.
+struct Class {
+  long long key = 0;
+  Eigen::Vector2d scales{1.0, 1.0};
+  double convexity = 0.0;
+};
+
+template <class ClassOf>
 void addTriangle(const Projection& projection, const Eigen::Vector3d (&p)[3], const std::vector<Band>& bands,
-                 const Window& window, int depth, BinOf& binOf, std::map<int, cl::Paths>& bins) {
+                 int depth, ClassOf& classOf, Bins& bins) {
   if (depth < 3 && scalesVary(projection, p)) {  // in four, by its edges' middles
     const Eigen::Vector3d m[3] = {0.5 * (p[0] + p[1]), 0.5 * (p[1] + p[2]), 0.5 * (p[2] + p[0])};
     const Eigen::Vector3d quarters[4][3] = {{p[0], m[0], m[2]}, {m[0], p[1], m[1]}, {m[2], m[1], p[2]}, {m[0], m[1], m[2]}};
-    for (const auto& q : quarters) addTriangle(projection, q, bands, window, depth + 1, binOf, bins);
+    for (const auto& q : quarters) addTriangle(projection, q, bands, depth + 1, classOf, bins);
     return;
   }
   const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
   const double low = std::min({h[0], h[1], h[2]}), high = std::max({h[0], h[1], h[2]});
+  const Class c = classOf(p);
   for (size_t b = 0; b < bands.size(); ++b)
-    if (high >= bands[b].from && low < bands[b].to)
-      addProjected(projection, p, h, bands[b].from, bands[b].to, bins[binOf(p, static_cast<int>(b))]);
+    if (high >= bands[b].from && low < bands[b].to) {
+      Bin& bin = bins[c.key * kMaxBands + static_cast<long long>(b)];
+      bin.scales = bin.scales.cwiseMin(c.scales);
+      bin.convexity = std::min(bin.convexity, c.convexity);
+      addProjected(projection, p, h, bands[b].from, bands[b].to, bin.pieces);
+    }
 }
 
-template <class BinOf>
-std::map<int, cl::Paths> projectedPieces(const geometry::TriangleMesh& mesh, const Projection& projection,
-                                         const std::vector<Band>& bands, const Window& window, BinOf&& binOf) {
-  std::map<int, cl::Paths> bins;
+// The mesh's triangles laid flat, each cut to each band of `bands` (heights [from, to[) it meets, leaving out
+// those outside `window`, split where the plane's scales vary over them, gathered in bins by their class
+// (`classOf(triangle)`) and band: what stands over the surface, seen along the tool axis. The mesh is of
+// closed solids, its triangles facing out: on planes only those facing the spindle are needed (a ray along the
+// tool axis from any point of the solid leaves it through one of them), half the union's work. (Unrolled
+// cylinders keep every triangle: culled there, S2's levels lost part of their region, 121 against 150 mm of
+// cutting on an impeller channel, for a reason not found yet.)
+template <class ClassOf>
+Bins projectedPieces(const geometry::TriangleMesh& mesh, const Projection& projection, const std::vector<Band>& bands,
+                     const Window& window, ClassOf&& classOf) {
+  Bins bins;
   const double lowest = bands.front().from;
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
@@ -212,7 +236,7 @@ std::map<int, cl::Paths> projectedPieces(const geometry::TriangleMesh& mesh, con
     if (projection.cullsBackFaces() && normal.dot(projection.axisAt((p[0] + p[1] + p[2]) / 3.0)) <= 0.0) continue;
     if (projection.skip(p) || window.misses(projection.plane(p[0]), projection.plane(p[1]), projection.plane(p[2])))
       continue;
-    addTriangle(projection, p, bands, window, 0, binOf, bins);
+    addTriangle(projection, p, bands, 0, classOf, bins);
   }
   return bins;
 }
@@ -229,8 +253,46 @@ cl::Paths scaledX(cl::Paths paths, double factor) {
 cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                          const Window& window) {
   const std::vector<Band> all = {{fromHeight, std::numeric_limits<double>::infinity(), 0.0}};
-  return united(projectedPieces(mesh, projection, all, window, [](const Eigen::Vector3d(&)[3], int) { return 0; })[0]);
+  return united(projectedPieces(mesh, projection, all, window, [](const Eigen::Vector3d(&)[3]) { return Class{}; })[0].pieces);
 }
+
+namespace {
+
+// A triangle's class for its keep-out: its least scales in steps 5 % apart (rounded down) and the least
+// convexity under it. The bin is grown at its members' least scales and convexity, on the safe side; the
+// convexity (n_r/ρ) varies with the radius as the x scale does, so it is not a class of its own (that split
+// the bins into as many again, their outlines with them, for three times the sweep's time).
+Class keepOutClass(const Projection& projection, const Eigen::Vector3d (&p)[3]) {
+  constexpr double kRatio = 1.05;
+  auto level = [&](double scale) {
+    return static_cast<long long>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(kRatio))) + kScaleLevels / 2;
+  };
+  Class c;
+  c.scales = projection.scalesAt(p[0]).cwiseMin(projection.scalesAt(p[1])).cwiseMin(projection.scalesAt(p[2]));
+  c.convexity = std::min({projection.convexityAt(p[0]), projection.convexityAt(p[1]), projection.convexityAt(p[2])});
+  c.key = level(c.scales.x()) * kScaleLevels + level(c.scales.y());
+  return c;
+}
+
+// The ellipse whose common part with the band's disk keeps the centre from triangles whose surface falls away
+// across x by `convexityStep` steps (rounded down): none where the disk alone does nearly as well (it grows
+// the bin twice).
+constexpr double kLeastGain = 0.05;  // mm across
+std::optional<Ellipse> narrowerIn(const Band& band, long long convexityStep) {
+  if (convexityStep <= 0 || band.convex.empty()) return std::nullopt;
+  const Ellipse& e = band.convex[std::min<size_t>(static_cast<size_t>(convexityStep), band.convex.size()) - 1];
+  if (!(e.across < band.clearance - kLeastGain)) return std::nullopt;
+  return e;
+}
+
+// `pieces` grown in true mm by the ellipse `e` over the plane's least scales `s` under them: x stretched by
+// sx·along/(sy·across) makes the ellipse a disk of along/sy.
+cl::Paths grownBy(const cl::Paths& pieces, const Eigen::Vector2d& s, const Ellipse& e, double tolerance) {
+  const double stretch = s.x() * e.along / (s.y() * e.across);
+  return scaledX(offset(scaledX(pieces, stretch), e.along / s.y(), tolerance), 1.0 / stretch);
+}
+
+}  // namespace
 
 cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, const std::vector<Band>& bands,
                     const Window& window, double tolerance, const cl::Paths& within) {
@@ -240,23 +302,17 @@ cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projec
   const Window box = windowAround(within, 1.0);
   const cl::Paths rectangle = {{{cl::cInt(box.x0), cl::cInt(box.y0)}, {cl::cInt(box.x1), cl::cInt(box.y0)},
                                 {cl::cInt(box.x1), cl::cInt(box.y1)}, {cl::cInt(box.x0), cl::cInt(box.y1)}}};
-  const double ratio = 1.05;
-  auto level = [&](double scale) {
-    return static_cast<int>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(ratio)));
-  };
-  constexpr int kLevels = 512;  // scale levels within ±142, bands below 16: one key
-  const auto bins = projectedPieces(mesh, projection, bands, window, [&](const Eigen::Vector3d(&p)[3], int band) {
-    const Eigen::Vector2d s = projection.scalesAt(p[0]).cwiseMin(projection.scalesAt(p[1])).cwiseMin(projection.scalesAt(p[2]));
-    return (band * kLevels + level(s.x()) + kLevels / 2) * kLevels + level(s.y()) + kLevels / 2;
-  });
+  const Bins bins = projectedPieces(mesh, projection, bands, window,
+                                    [&](const Eigen::Vector3d(&p)[3]) { return keepOutClass(projection, p); });
   cl::Paths grown;
-  for (const auto& [key, pieces] : bins) {
-    const int band = key / (kLevels * kLevels), ix = (key / kLevels) % kLevels - kLevels / 2, iy = key % kLevels - kLevels / 2;
-    const double sx = std::pow(ratio, ix), sy = std::pow(ratio, iy);
-    // The least scales of the bin (its lower edges): x stretched by sx/sy makes the plane's metric sy both ways.
-    const cl::Paths part = boolean(
-        cl::ctIntersection,
-        scaledX(offset(scaledX(united(pieces), sx / sy), bands[band].clearance / sy, tolerance), sy / sx), rectangle);
+  for (const auto& [key, bin] : bins) {
+    const Band& band = bands[static_cast<size_t>(key % kMaxBands)];
+    const cl::Paths pieces = united(bin.pieces);
+    cl::Paths part = boolean(cl::ctIntersection, grownBy(pieces, bin.scales, {band.clearance, band.clearance}, tolerance),
+                             rectangle);
+    // The pieces grown by the common part of the disk and the ellipse lie in both grown alike.
+    if (const auto e = narrowerIn(band, static_cast<long long>(std::floor(bin.convexity / kConvexityStep))))
+      part = boolean(cl::ctIntersection, part, grownBy(pieces, bin.scales, *e, tolerance));
     grown.insert(grown.end(), part.begin(), part.end());
   }
   // Not united: each bin's paths wind once round what they cover (holes cancel their own outline), so their

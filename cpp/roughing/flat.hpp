@@ -34,16 +34,29 @@ Window windowAround(const cl::Paths& paths, double margin);
 cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                          const Window& window = {});
 
+// An ellipse's semi-axes, true mm, across the plane's x and along its y.
+struct Ellipse {
+  double across, along;
+};
+
+// Steps of the convexity (1/mm) at which a band's keep-out is known: how fast the surface falls away from the
+// tool across the plane's x (round the axis of a surface of revolution whose tool axes lean out from it).
+inline constexpr double kConvexityStep = 0.005;
+
 // A layer of heights along the tool axis, [from, to[, in which the part keeps the tool's centre `clearance`
-// true mm away: what the tool (grown by the allowance) is wide at those heights above its tip.
+// true mm away: what the tool (grown by the allowance) is wide at those heights above its tip. Where the surface
+// falls away across x by at least k·kConvexityStep, the centre is kept only out of the common part of that disk
+// and the ellipse `convex[k − 1]` (narrower across, longer along).
 struct Band {
   double from, to, clearance;
+  std::vector<Ellipse> convex = {};
 };
 
 // Where the tool's centre may not go (as paths to fill non-zero): the part's triangles in each band laid flat,
-// grown by the band's clearance in true mm — over the plane's scales along x and y where each triangle is (an
-// ellipse's growth: bins of scales 5 % apart, each bin's union stretched along x to its y scale, grown and
-// stretched back) — and cut to the bounding rectangle of `within`, the only place that matters.
+// grown by the band's keep-out in true mm — over the plane's scales along x and y where each triangle is, and
+// where the surface falls away across x by the common part of its disk and ellipse (bins of scales 5 % apart
+// and of convexity steps, each bin's union stretched along x to one metric, grown at its triangles' least
+// scales and stretched back) — and cut to the bounding rectangle of `within`, the only place that matters.
 cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projection, const std::vector<Band>& bands,
                     const Window& window, double tolerance, const cl::Paths& within);
 

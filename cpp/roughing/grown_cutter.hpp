@@ -23,15 +23,28 @@ public:
   // The farthest from the axis (mm) a part point at height z (along its own normal) meets the grown cutter:
   // the centre keeps that far from it. 0 where it never does.
   double keepOut(double z) const;
+  // Where the surface also falls away across the plane's x by `convexity` (1/mm): a point x across the tool's
+  // line stands x²·convexity/2 lower along the axis, where the corner is narrower, so the points meeting the
+  // grown cutter fill the disk keepOut(z) less and less towards its ends across (|y| ≤ a reach falling with
+  // |x|). An ellipse that holds them all: together with that disk (their common part), the keep-out, nearly
+  // exact across. The one whose common part with the disk is least; the disk where the surface does not fall
+  // away faster than it curves up or no ellipse is narrower across.
+  Ellipse keepOut(double z, double convexity) const;
   // The least height of the tip above a floor parallel to the slicing surface, beyond the allowance, at which
   // no point of the floor under the tool meets it: where κ > 0 the floor rises under the flat bottom's rim.
   double floorLift() const;
   // Bands of heights relative to the tip, [from, to[, each with the keep-out of its highest point, stepping
   // evenly in keep-out from the lowest point's to the flutes' (R + a), the last one open above; `slack` raises the lowest
   // (a floor lying exactly the allowance under the tip must not shadow the level), `extra` grows them all.
-  std::vector<Band> bands(int count, double slack, double extra) const;
+  // Where the level's tip surface falls away across x by up to `convexity`, the bands below the corner have
+  // their ellipses for the convexity steps up to that.
+  std::vector<Band> bands(int count, double slack, double extra, double convexity = 0.0) const;
 
 private:
+  // How far along y a point x across the tool's line meets the grown cutter, every kAcrossStep of x from the
+  // line until none does (x the index times the step): falling, since across the surface falls away.
+  std::vector<double> reachAlong(double z, double convexity) const;
+
   Cutter cutter_;
   double allowance_, concavity_;
 };

@@ -166,7 +166,7 @@ public:
     if (s.empty() || !(rhoMax > 1e-6))
       throw ComputationError("the offsets of the surface of revolution do not reach the slice: it cannot be laid flat");
     rhoRef_ = rhoMax;
-    largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0;
+    largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0, convexity_ = 0.0;
     const double dh = 0.05;
     for (double at : s) {
       const double d = sign_ * tipHeight;
@@ -177,6 +177,7 @@ public:
       // −d ln(scale)/dh: the surface curves up towards the tool where the scales shrink going up.
       const double radial = -(rhoUp - rho) / (dh * rho), meridional = -(stretchUp - stretch) / (dh * stretch);
       concavity_ = std::max({concavity_, radial, meridional});
+      convexity_ = std::max(convexity_, -radial);
       meridianCurvature_ = std::max(meridianCurvature_, std::abs(meridional));
     }
   }
@@ -217,6 +218,15 @@ public:
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
   double concavity() const override { return concavity_; }
+  double convexityAt(const Eigen::Vector3d& p) const override {
+    const auto place = placeOf(p);
+    if (!place) return 0.0;
+    // The tool's lines within the reach along the meridian lean out from the axis by their own radial shares.
+    double lean = std::numeric_limits<double>::infinity();
+    for (double ds : {-reach_, 0.0, reach_}) lean = std::min(lean, sign_ * meridian_->normal(place->s + ds).x());
+    return std::max(0.0, lean) / std::max(meridian_->plane(p).x(), 1e-6);
+  }
+  double convexity() const override { return convexity_; }
 
 private:
   // The meridian's coordinates of a point, remembered: the sweep asks for the same mesh vertices at every
@@ -243,7 +253,8 @@ private:
   Angles angles_;
   std::shared_ptr<const Meridian> meridian_;
   double sign_ = 1.0;
-  double rhoRef_ = 1.0, rhoMin_ = 1.0, largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0;
+  double rhoRef_ = 1.0, rhoMin_ = 1.0, largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0,
+         convexity_ = 0.0;
 };
 
 Eigen::Vector3d middleOf(const SubVolume& first) {

@@ -63,6 +63,16 @@ public:
   // How far (1/mm) the level's tip surface curves up towards the tool: a disk of radius r on it has its rim
   // r²·concavity/2 nearer the surface than its centre.
   virtual double concavity() const { return 0.0; }
+  // How fast (1/mm) the surface through p falls away from the tool across the plane's x, the least over the
+  // tool's lines within the reach: a point D true mm beside a tool's line round the axis of a surface of
+  // revolution stands at least D²·convexity/2 lower along that line than its own height (the line leans out
+  // from the axis by its radial share n_r, the point turned about the axis falls by ρ(1 − cos θ)·n_r). 0 on
+  // planes, and wherever the lines lean in. The greatest over the level's tip surface is `convexity`.
+  virtual double convexityAt(const Eigen::Vector3d& p) const {
+    (void)p;
+    return 0.0;
+  }
+  virtual double convexity() const { return 0.0; }
   // The farthest (true mm) the sweep keeps the part from the tool's axis: scales that hold only nearby (the
   // angle round a cylinder's axis against its sine) are taken on the safe side over that distance.
   void setReach(double mm) { reach_ = mm; }

@@ -212,7 +212,8 @@ private:
     // One plane for all the slice's levels (the intermediate ones compare their domains with the main one's):
     // its scales are the main level's, the tip surface that has the least room.
     projection_->setLevel(slice.tip, mesh);
-    slice.bands = grown().bands(kHeightBands, kFloorSlack, settings_.meshDeflection + settings_.tolerance);
+    slice.bands = grown().bands(kHeightBands, kFloorSlack, settings_.meshDeflection + settings_.tolerance,
+                                projection_->convexity());
     slice.region = projectedUnion(mesh, *projection_, -std::numeric_limits<double>::infinity());
     // Only the part near the region matters: within the tool's radius, the allowance and a margin of it.
     const double margin = (radius + settings_.allowance + settings_.meshDeflection + 1.0) / projection_->smallestScale();
