@@ -280,7 +280,7 @@ EXPECTED_DIFFERENCES = {
         "and its flat scales hold over the tool's reach where the hub's normal lines converge: S5 cuts more of "
         "each channel with fewer links. The same 7 passes, clear of the part by the allowance (0.532 mm "
         "closest), cutting 605.5 mm where 594.6 mm were saved, 57 s of cycle where 66 s were",
-        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1564, length_mm=958.185),
+        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1639, length_mm=983.355),
 }
 
 
