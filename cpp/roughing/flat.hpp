@@ -42,6 +42,9 @@ struct Ellipse {
 // Steps of the convexity (1/mm) at which a band's keep-out is known: how fast the surface falls away from the
 // tool across the plane's x (round the axis of a surface of revolution whose tool axes lean out from it).
 inline constexpr double kConvexityStep = 0.005;
+// The most steps a band keeps: beyond 0.32/mm (a fall-away radius under 3 mm, a sharp edge's, not a hub's) a
+// triangle takes the last one, on the safe side, so a band's work stays bounded whatever the part's edges.
+inline constexpr int kMostConvexitySteps = 64;
 
 // A layer of heights along the tool axis, [from, to[, in which the part keeps the tool's centre `clearance`
 // true mm away: what the tool (grown by the allowance) is wide at those heights above its tip. Where the surface

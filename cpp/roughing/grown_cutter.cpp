@@ -148,7 +148,7 @@ std::vector<Band> GrownCutter::bands(int count, double slack, double extra, doub
   // Above the corner a point beside the tool falls back into it too, but by less than 0.1 mm across: not worth
   // the bands (each one more outline of every blade to grow).
   out.push_back({z0, std::numeric_limits<double>::infinity(), full + extra});
-  const int steps = static_cast<int>(std::floor(convexity / kConvexityStep));
+  const int steps = static_cast<int>(std::min<double>(kMostConvexitySteps, std::floor(convexity / kConvexityStep)));
   for (Band& band : out)
     for (int k = 1; k <= steps && std::isfinite(band.to); ++k) {
       band.convex.push_back(widened(keepOut(band.to, k * kConvexityStep), extra));
