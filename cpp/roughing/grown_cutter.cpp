@@ -13,10 +13,16 @@ constexpr double kAcrossStep = 0.01;  // mm: the samples across x of a keep-out'
 constexpr double kAlongStep = 0.01;   // the lengths tried for a keep-out's ellipse, as shares of its disk
 constexpr double kLongest = 3.0;      // the longest tried, as a multiple of its disk
 constexpr double kAcrossSlack = 0.02;  // mm: how much wider across than the narrowest tried it may be
+constexpr double kThickestBand = 0.25;  // mm: a band below the corner where the level falls away across x
+constexpr double kMostThinBands = 32.0;
 }
 
 GrownCutter::GrownCutter(const Cutter& cutter, double allowance, double concavity)
-    : cutter_(cutter), allowance_(allowance), concavity_(std::max(0.0, concavity)) {}
+    : GrownCutter(cutter, allowance, concavity, concavity) {}
+
+GrownCutter::GrownCutter(const Cutter& cutter, double allowance, double concavity, double concavityAcross)
+    : cutter_(cutter), allowance_(allowance), concavity_(std::max(0.0, concavity)),
+      across_(std::clamp(concavityAcross, 0.0, concavity_)) {}
 
 double GrownCutter::width(double z) const {
   const double r = cutter_.corner(), a = allowance_;
@@ -44,7 +50,7 @@ double GrownCutter::keepOut(double z) const {
 std::vector<double> GrownCutter::reachAlong(double z, double convexity) const {
   const auto meets = [&](double x, double y) {
     const double rho2 = x * x + y * y;
-    return std::sqrt(rho2) < width(z + 0.5 * rho2 * concavity_ - 0.5 * x * x * convexity);
+    return std::sqrt(rho2) < width(z + 0.5 * (y * y * concavity_ + x * x * (across_ - convexity)));
   };
   std::vector<double> reach;
   double y = cutter_.radius() + allowance_;
@@ -85,7 +91,7 @@ double quarterOfBoth(const Ellipse& e, double disk) {
 
 Ellipse GrownCutter::keepOut(double z, double convexity) const {
   const double disk = keepOut(z);
-  if (!(convexity > concavity_) || !std::isfinite(z)) return {disk, disk};
+  if (!(convexity > across_) || !std::isfinite(z)) return {disk, disk};
   const std::vector<double> reach = reachAlong(z, convexity);
   // Longer ellipses reach less far across but more along the diagonals: among lengths up to three times the
   // disk's, those within kAcrossSlack of the narrowest across (a wall along y is kept nearly exactly as far as
@@ -140,9 +146,20 @@ std::vector<Band> GrownCutter::bands(int count, double slack, double extra, doub
   std::vector<Band> out;
   double z0 = heightFor(kRhoStep) + slack;
   const double least = keepOut(z0);  // the flat bottom's R − r where the surface is flat
+  // Where the level falls away across x, a band's keep-out (its top's) is asked of points up to its
+  // thickness lower, which stand lower still along the tool's line: there the bands below the corner are
+  // kept thin, in at most kMostThinBands pieces whatever the concavity.
+  const double thickest = convexity > across_ ? std::max(kThickestBand, (high - low) / kMostThinBands)
+                                              : std::numeric_limits<double>::infinity();
   for (int k = 1; k <= count; ++k) {
     const double z1 = k == count ? high : heightFor(least + (full - least) * k / count);
-    if (z1 > z0) out.push_back({z0, z1, keepOut(z1) + extra});
+    const int pieces = z1 > z0 ? std::max(1, static_cast<int>(std::ceil((z1 - z0) / thickest))) : 0;
+    const double start = z0;
+    for (int i = 1; i <= pieces; ++i) {
+      const double to = i == pieces ? z1 : start + (z1 - start) * i / pieces;
+      out.push_back({z0, to, keepOut(to) + extra});
+      z0 = to;
+    }
     z0 = std::max(z0, z1);
   }
   // Above the corner a point beside the tool falls back into it too, but by less than 0.1 mm across: not worth

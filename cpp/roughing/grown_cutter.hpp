@@ -13,8 +13,12 @@ namespace hsm::roughing {
 
 class GrownCutter {
 public:
-  // `concavity` κ, 1/mm: how the surface curves up towards the tool (0 on planes).
+  // `concavity` κ, 1/mm: how the surface curves up towards the tool (0 on planes), the most any way.
   GrownCutter(const Cutter& cutter, double allowance, double concavity);
+  // With `concavityAcross`, how it curves up across the plane's x alone (at most κ): on a surface of
+  // revolution whose tool axes lean out from its axis the meridian may curve up along y while round the axis
+  // the surface falls away, and the ellipses of keepOut(z, convexity) take each way's own.
+  GrownCutter(const Cutter& cutter, double allowance, double concavity, double concavityAcross);
 
   // Half the width of the grown cutter at height z above the tip: 0 below −allowance.
   double width(double z) const;
@@ -28,7 +32,7 @@ public:
   // grown cutter fill the disk keepOut(z) less and less towards its ends across (|y| ≤ a reach falling with
   // |x|). An ellipse that holds them all: together with that disk (their common part), the keep-out, nearly
   // exact across. The one whose common part with the disk is least; the disk where the surface does not fall
-  // away faster than it curves up or no ellipse is narrower across.
+  // away across x faster than it curves up across x or no ellipse is narrower across.
   Ellipse keepOut(double z, double convexity) const;
   // The least height of the tip above a floor parallel to the slicing surface, beyond the allowance, at which
   // no point of the floor under the tool meets it: where κ > 0 the floor rises under the flat bottom's rim.
@@ -37,7 +41,7 @@ public:
   // evenly in keep-out from the lowest point's to the flutes' (R + a), the last one open above; `slack` raises the lowest
   // (a floor lying exactly the allowance under the tip must not shadow the level), `extra` grows them all.
   // Where the level's tip surface falls away across x by up to `convexity`, the bands below the corner have
-  // their ellipses for the convexity steps up to that.
+  // their ellipses for the convexity steps up to that, and are at most 0.25 mm thick.
   std::vector<Band> bands(int count, double slack, double extra, double convexity = 0.0) const;
 
 private:
@@ -46,7 +50,7 @@ private:
   std::vector<double> reachAlong(double z, double convexity) const;
 
   Cutter cutter_;
-  double allowance_, concavity_;
+  double allowance_, concavity_, across_;
 };
 
 }  // namespace hsm::roughing

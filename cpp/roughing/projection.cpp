@@ -119,6 +119,10 @@ public:
   }
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
+  // A point at radius ρ, D from a radial tool line round the axis, stands ρ − √(ρ² − D²) ≥ D²/(2ρ) lower
+  // along it than its own radius: the level falls away across x by 1/ρ.
+  double convexityAt(const Eigen::Vector3d& p) const override { return 1.0 / std::max(height(p), 1e-6); }
+  double convexity() const override { return 1.0 / std::max(r_, 1e-6); }
 
 private:
   Angles angles_;
@@ -166,7 +170,7 @@ public:
     if (s.empty() || !(rhoMax > 1e-6))
       throw ComputationError("the offsets of the surface of revolution do not reach the slice: it cannot be laid flat");
     rhoRef_ = rhoMax;
-    largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0, convexity_ = 0.0;
+    largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, concavityAcross_ = 0.0, meridianCurvature_ = 0.0, convexity_ = 0.0;
     const double dh = 0.05;
     for (double at : s) {
       const double d = sign_ * tipHeight;
@@ -177,6 +181,7 @@ public:
       // −d ln(scale)/dh: the surface curves up towards the tool where the scales shrink going up.
       const double radial = -(rhoUp - rho) / (dh * rho), meridional = -(stretchUp - stretch) / (dh * stretch);
       concavity_ = std::max({concavity_, radial, meridional});
+      concavityAcross_ = std::max(concavityAcross_, radial);
       convexity_ = std::max(convexity_, -radial);
       meridianCurvature_ = std::max(meridianCurvature_, std::abs(meridional));
     }
@@ -218,6 +223,7 @@ public:
   double largestScale() const override { return largest_; }
   double smallestScale() const override { return smallest_; }
   double concavity() const override { return concavity_; }
+  double concavityAcross() const override { return concavityAcross_; }
   double convexityAt(const Eigen::Vector3d& p) const override {
     const auto place = placeOf(p);
     if (!place) return 0.0;
@@ -253,8 +259,8 @@ private:
   Angles angles_;
   std::shared_ptr<const Meridian> meridian_;
   double sign_ = 1.0;
-  double rhoRef_ = 1.0, rhoMin_ = 1.0, largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, meridianCurvature_ = 0.0,
-         convexity_ = 0.0;
+  double rhoRef_ = 1.0, rhoMin_ = 1.0, largest_ = 1.0, smallest_ = 1.0, concavity_ = 0.0, concavityAcross_ = 0.0,
+         meridianCurvature_ = 0.0, convexity_ = 0.0;
 };
 
 Eigen::Vector3d middleOf(const SubVolume& first) {

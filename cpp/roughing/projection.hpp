@@ -63,6 +63,9 @@ public:
   // How far (1/mm) the level's tip surface curves up towards the tool: a disk of radius r on it has its rim
   // r²·concavity/2 nearer the surface than its centre.
   virtual double concavity() const { return 0.0; }
+  // The same across the plane's x alone (at most `concavity`): round the axis of a surface of revolution the
+  // level may fall away while its meridian curves up.
+  virtual double concavityAcross() const { return concavity(); }
   // How fast (1/mm) the surface through p falls away from the tool across the plane's x, the least over the
   // tool's lines within the reach: a point D true mm beside a tool's line round the axis of a surface of
   // revolution stands at least D²·convexity/2 lower along that line than its own height (the line leans out

@@ -271,7 +271,9 @@ private:
   }
 
   // The cutter grown by the allowance on the level the projection is set to.
-  GrownCutter grown() const { return GrownCutter(settings_.cutter, settings_.allowance, projection_->concavity()); }
+  GrownCutter grown() const {
+    return GrownCutter(settings_.cutter, settings_.allowance, projection_->concavity(), projection_->concavityAcross());
+  }
 
   // A face of the part parallel to the slicing surface within the allowance under the tip (a floor: a plane
   // parallel to S1's, the hub under S4's offsets of a skin that follows it): the tip stays the allowance above
