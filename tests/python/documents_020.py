@@ -277,10 +277,11 @@ EXPECTED_DIFFERENCES = {
     ("impeller_job.FCStd", "VolumeRoughing"): Difference(
         "our code: the sweep keeps the part out by the cutter grown by the allowance point by point (its corner "
         "narrower than its flutes, the hub curving up under it taken per point, not as one lift of every band), "
-        "and its flat scales hold over the tool's reach where the hub's normal lines converge: S5 cuts more of "
-        "each channel with fewer links. The same 7 passes, clear of the part by the allowance (0.532 mm "
-        "closest), cutting 605.5 mm where 594.6 mm were saved, 57 s of cycle where 66 s were",
-        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1639, length_mm=983.355),
+        "and its flat scales hold over the tool's reach where the hub's normal lines converge; where the hub's "
+        "offsets fall away round the axis the keep-out is narrower across (an ellipse, thin bands below the "
+        "corner): S5 cuts more of each channel, its outer passes nearer the blades. The same 7 passes, clear "
+        "of the part by the allowance, cutting at least the 594.6 mm saved (the rule checks all three)",
+        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1997, length_mm=1130.181),
 }
 
 
