@@ -139,6 +139,10 @@ class RoughingStudyExample(unittest.TestCase):
             # have are fed in), the rest roughing's on what the first left.
             self.assertEqual(int(row["rapid_faults"]), 0, row)
             self.assertEqual(int(row["regions"]), 2, row)
+        by = {(r["strategy"], r["variant"]): r for r in rows}
+        for strategy in ("S1", "S5"):  # a rest row's length / feed is both programs', as its time is
+            self.assertGreater(float(by[(strategy, rest)]["length_over_feed_s"]),
+                               float(by[(strategy, "step-up")]["length_over_feed_s"]))
         for strategy in ("S1", "S5"):
             paper, stepped, rested = [r for r in rows if r["strategy"] == strategy]
             # Each variant leaves less beyond the allowance than the one before, and costs more time.
