@@ -172,8 +172,7 @@ void addProjected(const Projection& projection, const Eigen::Vector3d (&t)[3], c
 // Whether the plane's scales differ by more than 5 % over the triangle's corners: its shadow, grown at its
 // least scales, would then be grown too much at its other end (at 15 %, 0.2–0.6 mm too much on an impeller's
 // unrolled levels; at 10 %, the hub offsets' outer passes kept 0.1–0.3 mm more than at 5 %).
-bool scalesVary(const Projection& projection, const Eigen::Vector3d (&p)[3]) {
-  const Eigen::Vector2d s[3] = {projection.scalesAt(p[0]), projection.scalesAt(p[1]), projection.scalesAt(p[2])};
+bool scalesVary(const Eigen::Vector2d (&s)[3]) {
   const Eigen::Vector2d low = s[0].cwiseMin(s[1]).cwiseMin(s[2]), high = s[0].cwiseMax(s[1]).cwiseMax(s[2]);
   return high.x() > 1.05 * low.x() || high.y() > 1.05 * low.y();
 }
@@ -198,7 +197,8 @@ struct Class {
 template <class ClassOf>
 void addTriangle(const Projection& projection, const Eigen::Vector3d (&p)[3], const std::vector<Band>& bands,
                  int depth, ClassOf& classOf, Bins& bins) {
-  if (depth < 3 && scalesVary(projection, p)) {  // in four, by its edges' middles
+  const Eigen::Vector2d s[3] = {projection.scalesAt(p[0]), projection.scalesAt(p[1]), projection.scalesAt(p[2])};
+  if (depth < 3 && scalesVary(s)) {  // in four, by its edges' middles
     const Eigen::Vector3d m[3] = {0.5 * (p[0] + p[1]), 0.5 * (p[1] + p[2]), 0.5 * (p[2] + p[0])};
     const Eigen::Vector3d quarters[4][3] = {{p[0], m[0], m[2]}, {m[0], p[1], m[1]}, {m[2], m[1], p[2]}, {m[0], m[1], m[2]}};
     for (const auto& q : quarters) addTriangle(projection, q, bands, depth + 1, classOf, bins);
@@ -206,7 +206,7 @@ void addTriangle(const Projection& projection, const Eigen::Vector3d (&p)[3], co
   }
   const double h[3] = {projection.height(p[0]), projection.height(p[1]), projection.height(p[2])};
   const double low = std::min({h[0], h[1], h[2]}), high = std::max({h[0], h[1], h[2]});
-  const Class c = classOf(p);
+  const Class c = classOf(p, s[0].cwiseMin(s[1]).cwiseMin(s[2]));
   for (size_t b = 0; b < bands.size(); ++b)
     if (high >= bands[b].from && low < bands[b].to) {
       Bin& bin = bins[c.key * kMaxBands + static_cast<long long>(b)];
@@ -218,7 +218,7 @@ void addTriangle(const Projection& projection, const Eigen::Vector3d (&p)[3], co
 
 // The mesh's triangles laid flat, each cut to each band of `bands` (heights [from, to[) it meets, leaving out
 // those outside `window`, split where the plane's scales vary over them, gathered in bins by their class
-// (`classOf(triangle)`) and band: what stands over the surface, seen along the tool axis. The mesh is of
+// (`classOf(triangle, its least scales)`) and band: what stands over the surface, seen along the tool axis. The mesh is of
 // closed solids, its triangles facing out: on planes only those facing the spindle are needed (a ray along the
 // tool axis from any point of the solid leaves it through one of them), half the union's work. (Unrolled
 // cylinders keep every triangle: culled there, S2's levels lost part of their region, 121 against 150 mm of
@@ -253,7 +253,7 @@ cl::Paths scaledX(cl::Paths paths, double factor) {
 cl::Paths projectedUnion(const geometry::TriangleMesh& mesh, const Projection& projection, double fromHeight,
                          const Window& window) {
   const std::vector<Band> all = {{fromHeight, std::numeric_limits<double>::infinity(), 0.0}};
-  return united(projectedPieces(mesh, projection, all, window, [](const Eigen::Vector3d(&)[3]) { return Class{}; })[0].pieces);
+  return united(projectedPieces(mesh, projection, all, window, [](const Eigen::Vector3d(&)[3], const Eigen::Vector2d&) { return Class{}; })[0].pieces);
 }
 
 namespace {
@@ -262,13 +262,13 @@ namespace {
 // convexity under it. The bin is grown at its members' least scales and convexity, on the safe side; the
 // convexity (n_r/ρ) varies with the radius as the x scale does, so it is not a class of its own (that split
 // the bins into as many again, their outlines with them, for three times the sweep's time).
-Class keepOutClass(const Projection& projection, const Eigen::Vector3d (&p)[3]) {
+Class keepOutClass(const Projection& projection, const Eigen::Vector3d (&p)[3], const Eigen::Vector2d& leastScales) {
   constexpr double kRatio = 1.05;
   auto level = [&](double scale) {
     return static_cast<long long>(std::floor(std::log(std::clamp(scale, 1e-3, 1e3)) / std::log(kRatio))) + kScaleLevels / 2;
   };
   Class c;
-  c.scales = projection.scalesAt(p[0]).cwiseMin(projection.scalesAt(p[1])).cwiseMin(projection.scalesAt(p[2]));
+  c.scales = leastScales;
   c.convexity = std::min({projection.convexityAt(p[0]), projection.convexityAt(p[1]), projection.convexityAt(p[2])});
   c.key = level(c.scales.x()) * kScaleLevels + level(c.scales.y());
   return c;
@@ -303,7 +303,7 @@ cl::Paths keepOutOf(const geometry::TriangleMesh& mesh, const Projection& projec
   const cl::Paths rectangle = {{{cl::cInt(box.x0), cl::cInt(box.y0)}, {cl::cInt(box.x1), cl::cInt(box.y0)},
                                 {cl::cInt(box.x1), cl::cInt(box.y1)}, {cl::cInt(box.x0), cl::cInt(box.y1)}}};
   const Bins bins = projectedPieces(mesh, projection, bands, window,
-                                    [&](const Eigen::Vector3d(&p)[3]) { return keepOutClass(projection, p); });
+                                    [&](const Eigen::Vector3d(&p)[3], const Eigen::Vector2d& least) { return keepOutClass(projection, p, least); });
   cl::Paths grown;
   for (const auto& [key, bin] : bins) {
     const Band& band = bands[static_cast<size_t>(key % kMaxBands)];
