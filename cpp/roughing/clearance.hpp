@@ -1,12 +1,9 @@
 // An independent clearance check of a roughing toolpath against the finished part: how close the tool comes,
 // everywhere along the moves, measured on the part's own triangles (not on the sweep's shadows and offsets).
 //
-// The tool is the cutter as it is, up its axis over the stick-out: a torus end mill (a ball, a flat end) is the
-// Minkowski sum of its core — a cylinder of radius R − r from r above the tip — and a ball of its corner
-// radius r, so its distance to a triangle is the core's less r, exactly. The distance from the core to a
-// triangle, exact: the triangle is cut at the core's bottom plane and at the stick-out; the part between is
-// as far as its plan distance to the axis less the core's radius; the part below as far as its nearest point
-// to the core's bottom disk (a convex problem: the plane's foot if inside the polygon, else along its edges).
+// The tool is the cutter as it is, up its axis over the stick-out, its distance to each triangle exact
+// (tool_distance.hpp); the sweep keeps the part away with shadows and offsets, not with this distance, except
+// where it pushes a level's boundary out to the real clearance.
 // The part's triangles are within `deflection` of its surfaces: the report subtracts it.
 #pragma once
 

@@ -155,6 +155,12 @@ public:
     return (angles_.direction(angles_.angle(p)) * n.x() + angles_.axis() * n.y()).normalized();
   }
 
+  Eigen::Vector3d axisAtPlane(const cl::IntPoint& q, double h) const override {
+    (void)h;  // the offsets' normal lines are the reference's: the same axis at every height
+    const Eigen::Vector2d n = sign_ * meridian_->normal(static_cast<double>(q.Y) / kScale);
+    return (angles_.direction(static_cast<double>(q.X) / kScale / rhoRef_) * n.x() + angles_.axis() * n.y()).normalized();
+  }
+
   void setLevel(double tipHeight, const geometry::TriangleMesh& slice) override {
     // The slice's points carried along their normal lines to the tip's surface: its radii and scales there.
     std::vector<double> s;

@@ -33,6 +33,9 @@ public:
   virtual cl::IntPoint plane(const Eigen::Vector3d& p) const = 0;
   virtual Eigen::Vector3d point(const cl::IntPoint& q, double h) const = 0;
   virtual Eigen::Vector3d axisAt(const Eigen::Vector3d& p) const = 0;  // unit, towards the spindle
+  // The axis at the point of plane coordinates q and height h, as axisAt(point(q, h)) but safe from several
+  // threads at once (no lookup that remembers).
+  virtual Eigen::Vector3d axisAtPlane(const cl::IntPoint& q, double h) const { return axisAt(point(q, h)); }
   // The level whose passes are laid flat next: its tip's height and the slice's mesh.
   virtual void setLevel(double tipHeight, const geometry::TriangleMesh& slice) { (void)tipHeight, (void)slice; }
   // Longest straight move between two points of the flat passes that stays within `tolerance` of the surface

@@ -9,6 +9,7 @@
 #include "roughing/flat.hpp"
 #include "roughing/grown_cutter.hpp"
 #include "roughing/projection.hpp"
+#include "roughing/push_out.hpp"
 #include "roughing/step_up.hpp"
 
 #include <algorithm>
@@ -25,6 +26,9 @@ constexpr int kMaxRings = 10000;
 constexpr double kOverhang = 0.1;  // of the diameter: the outer pass goes this far past the slice's outline
 constexpr double kFloorSlack = 0.005;  // mm
 constexpr int kHeightBands = 8;  // layers of the part under the corner radius, each kept out by its own width
+// The push-out of a level's boundary: from points this far apart (true mm), this much beyond
+// the clearance the passes' chords and the push's own steps take.
+constexpr double kPushSpacing = 0.25, kPushMargin = 0.01;
 
 // A slice as its levels see it: its main level (the tip on its far side), its near side, its region laid
 // flat and where the tool's centre may go in it before the part is kept out.
@@ -66,6 +70,8 @@ public:
     safeHeight_ = high + settings.clearance;
     projection_->setReach(settings.cutter.radius() + settings.allowance + settings.meshDeflection + settings.tolerance);
     for (const Eigen::Vector3d& p : settings.rest.points) restHeights_.push_back(projection_->height(p));
+    if (settings.pushOutMost > 0.0)
+      pushPart_ = std::make_unique<PartTriangles>(partMesh_);
   }
 
   SweepResult run() {
@@ -109,8 +115,11 @@ private:
     bool down = false;  // the tool is at a cut inside the slice, not retracted
     if (!level.passes.empty()) sweepLevel(level, down);
     double above = slice.top;
+    // An intermediate level's domain lies in the one's above it, whose passes its entries come down from.
+    cl::Paths domainAbove;
     for (double h : heights) {
-      Level up = levelOf(slice, h, domainAt(h), main);
+      domainAbove = h == heights.front() ? domainAt(h) : boolean(cl::ctIntersection, domainAt(h), domainAbove);
+      Level up = levelOf(slice, h, domainAbove, main);
       // The level above cut its whole domain, which holds this one's: entries come down from there.
       up.top = std::exchange(above, h);
       up.intermediate = true;
@@ -234,12 +243,21 @@ private:
   // layer by layer above the tip (the slice's bands): the part from the allowance under the tip up is kept as
   // far from the centre as the tool, grown by the allowance, is wide there (a torus's corner is narrower than
   // its flutes; on a concave surface a point off the axis stands higher along it), and the mesh's deflection
-  // and the offsets' arc tolerance (their chords cut inside the arcs) more.
+  // and the offsets' arc tolerance (their chords cut inside the arcs) more. That keep-out is on the safe side
+  // (the widest over each band, bins of scales): the boundary is then pushed out to the real clearance, the
+  // allowance, the mesh's deflection and the passes' chords, exact on the part's triangles (push_out.hpp).
   cl::Paths domainOf(const Slice& slice, double tip) const {
     std::vector<Band> bands = slice.bands;
     for (Band& band : bands) band.from += tip, band.to += tip;
     const cl::Paths keepOut = keepOutOf(partMesh_, *projection_, bands, slice.window, settings_.tolerance, slice.inner);
-    return boolean(cl::ctDifference, slice.inner, keepOut);
+    const cl::Paths domain = boolean(cl::ctDifference, slice.inner, keepOut);
+    if (!pushPart_) return domain;
+    PushSettings push;
+    push.clearance = settings_.allowance + settings_.meshDeflection + settings_.tolerance + kPushMargin;
+    push.lowest = slice.bands.front().from;
+    push.most = settings_.pushOutMost;
+    push.spacing = kPushSpacing;
+    return pushedOut(domain, slice.inner, tip, *projection_, *pushPart_, settings_.cutter, push);
   }
 
   // The domain's boundary, then its offsets inwards every radial step, never farther apart than the engagement
@@ -461,7 +479,8 @@ private:
   const Partition& partition_;
   const SweepSettings& settings_;
   std::unique_ptr<Projection> projection_;
-  geometry::TriangleMesh partMesh_;
+  geometry::TriangleMesh partMesh_;  // within the mesh deflection
+  std::unique_ptr<PartTriangles> pushPart_;  // the same triangles in a grid, for the push-out (when on)
   std::vector<double> restHeights_;  // of the rest stock's points (NaN where the projection has none)
   double safeHeight_ = 0.0;
   SweepResult result_;
@@ -484,6 +503,7 @@ void checkSettings(const SweepSettings& s) {
   check(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "mm (default 0.02)");
   if (s.stepUpMinimum != 0.0) check(s.stepUpMinimum, 0.1, 100.0, "step-up minimum", "mm between levels, or 0 for none (default 1)");
   check(s.stepUpScallop, 0.01, 10.0, "step-up scallop", "mm of the staircase left across a wall (default 0.25)");
+  check(s.pushOutMost, 0.0, 10.0, "push-out", "mm a level's boundary may move towards the part (0: off, the default)");
   if (!s.rest.points.empty()) {
     check(s.rest.spacing, 0.01, 20.0, "rest stock spacing", "mm between its points (the removal simulation's)");
     for (const Eigen::Vector3d& p : s.rest.points)

@@ -2,7 +2,7 @@
 // partitioned and swept (the sweep's own time), joined, its material removal simulated (V_r with and without
 // the allowance layer, feed path, in-material share).
 // Run: build/bin/bench_roughing_quality [resolution mm] [strategies, e.g. 135] [key=value …]
-//   keys: step_up_min, step_up_scallop (mm; step_up_min=0: no intermediate levels), threads, split (the grid of
+//   keys: push (mm a boundary may move to the exact clearance; 0: off), step_up_min, step_up_scallop (mm; step_up_min=0: no intermediate levels), threads, split (the grid of
 //   the split of what is left, mm; 0: none), diameter and corner (the torus, mm), holder (its diameter, mm), step (the partition's, mm).
 #include "roughing/clearance.hpp"
 #include "roughing/parts.hpp"
@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   SweepSettings settings;
   if (options.count("step_up_min")) settings.stepUpMinimum = options["step_up_min"];
   if (options.count("step_up_scallop")) settings.stepUpScallop = options["step_up_scallop"];
+  if (options.count("push")) settings.pushOutMost = options["push"];
   if (options.count("diameter")) settings.cutter.diameter = options["diameter"];
   if (options.count("corner")) settings.cutter.cornerRadius = options["corner"];
   if (options.count("holder")) settings.cutter.holderDiameter = options["holder"];
