@@ -103,6 +103,60 @@ void densify(cl::Paths& paths, double longest, bool closed) {
   }
 }
 
+namespace {
+// Clipper units from p to the segment a–b.
+double segmentDistance(const cl::IntPoint& p, const cl::IntPoint& a, const cl::IntPoint& b) {
+  const double dx = double(b.X - a.X), dy = double(b.Y - a.Y), px = double(p.X - a.X), py = double(p.Y - a.Y);
+  const double squared = dx * dx + dy * dy;
+  const double t = squared > 0.0 ? std::clamp((px * dx + py * dy) / squared, 0.0, 1.0) : 0.0;
+  return std::hypot(px - t * dx, py - t * dy);
+}
+
+// Douglas–Peucker on one closed path: from its first point and the point farthest from it, each stretch split
+// at its farthest point while that is more than `limit` (Clipper units) off its chord.
+cl::Path simplified(const cl::Path& path, double limit) {
+  const size_t n = path.size();
+  size_t far = 0;
+  double farthest = 0.0;
+  for (size_t i = 1; i < n; ++i) {
+    const double d = std::hypot(double(path[i].X - path[0].X), double(path[i].Y - path[0].Y));
+    if (d > farthest) farthest = d, far = i;
+  }
+  if (far == 0) return {};
+  std::vector<char> keep(n, 0);
+  keep[0] = keep[far] = 1;
+  std::vector<std::pair<size_t, size_t>> stretches{{0, far}, {far, n}};  // indices modulo n
+  while (!stretches.empty()) {
+    const auto [from, to] = stretches.back();
+    stretches.pop_back();
+    size_t worst = from;
+    double most = limit;
+    for (size_t k = from + 1; k < to; ++k) {
+      const double d = segmentDistance(path[k % n], path[from % n], path[to % n]);
+      if (d > most) most = d, worst = k;
+    }
+    if (worst == from) continue;
+    keep[worst % n] = 1;
+    stretches.push_back({from, worst});
+    stretches.push_back({worst, to});
+  }
+  cl::Path kept;
+  for (size_t i = 0; i < n; ++i)
+    if (keep[i]) kept.push_back(path[i]);
+  return kept;
+}
+}  // namespace
+
+void simplify(cl::Paths& paths, double tolerance) {
+  cl::Paths kept;
+  for (const cl::Path& path : paths) {
+    if (path.size() < 3) continue;
+    cl::Path simple = simplified(path, tolerance * kScale);
+    if (simple.size() >= 3) kept.push_back(std::move(simple));
+  }
+  paths = std::move(kept);
+}
+
 bool Window::misses(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) const {
   return std::max({a.X, b.X, c.X}) < x0 || std::min({a.X, b.X, c.X}) > x1 || std::max({a.Y, b.Y, c.Y}) < y0 ||
          std::min({a.Y, b.Y, c.Y}) > y1;

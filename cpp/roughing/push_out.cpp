@@ -19,6 +19,7 @@ constexpr double kCell = 2.0;          // mm: the grid's cubes
 constexpr long kMostPoints = 1000000;  // boundary points of one level: bounded work
 constexpr int kMostTries = 24;         // cutter positions tried per point
 constexpr double kLeastStep = 0.05;    // true mm: the finest a push is resolved
+constexpr double kPinhole = 1.0;       // true mm²: the largest hole of the pushed outline filled
 
 struct Candidate {
   int triangle;
@@ -244,6 +245,28 @@ void keepChordsClear(const cl::Paths& boundary, const std::vector<std::vector<Ei
     if (!any) break;
   }
 }
+
+// Where pushes of points a few apart cross, the pushed outline folds over itself and the triangles' union
+// leaves pinholes the domain did not have (a hole of the part's own is at least the cutter's disk). Each hole
+// smaller than kPinhole is filled when the cutter keeps the clearance at its corners and its middle.
+void fillPinholes(cl::Paths& united, const PartTriangles& part, const Projection& projection,
+                  const CutterBody& body, double radius, double tip, const PushSettings& settings) {
+  const double largest = kPinhole / (projection.largestScale() * projection.largestScale()) * kScale * kScale;
+  Push push(part, projection, body, radius, tip, settings);
+  united.erase(std::remove_if(united.begin(), united.end(),
+                              [&](const cl::Path& hole) {
+                                if (cl::Orientation(hole) || -cl::Area(hole) > largest || hole.empty()) return false;
+                                double x = 0.0, y = 0.0, span = 0.0;
+                                for (const cl::IntPoint& q : hole) x += double(q.X), y += double(q.Y);
+                                const cl::IntPoint middle{cl::cInt(x / hole.size()), cl::cInt(y / hole.size())};
+                                for (const cl::IntPoint& q : hole)
+                                  span = std::max(span, std::hypot(double(q.X - middle.X), double(q.Y - middle.Y)) / kScale);
+                                push.prepare(middle, Eigen::Vector2d::UnitX(), span);
+                                if (!push.clearAt(middle)) return false;
+                                return std::all_of(hole.begin(), hole.end(), [&](const cl::IntPoint& q) { return push.clearAt(q); });
+                              }),
+               united.end());
+}
 }  // namespace
 
 PartTriangles::PartTriangles(geometry::TriangleMesh triangles) : mesh(std::move(triangles)), grid(mesh, kCell) {}
@@ -297,7 +320,9 @@ cl::Paths pushedOut(const cl::Paths& domain, const cl::Paths& within, double tip
         if (!triangle.empty()) grown.push_back(std::move(triangle));
     }
   }
-  return boolean(cl::ctIntersection, united(grown), within);
+  cl::Paths united = roughing::united(grown);
+  fillPinholes(united, part, projection, body, cutter.radius(), tip, settings);
+  return boolean(cl::ctIntersection, united, within);
 }
 
 }  // namespace hsm::roughing

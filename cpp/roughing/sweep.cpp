@@ -269,7 +269,7 @@ private:
     const double step = settings_.radialEngagement * settings_.cutter.diameter / scale;
     const double reach = (settings_.cutter.radius() - 0.5 * settings_.cutter.corner()) / scale;
     auto add = [&](cl::Paths ring, double depth) {
-      cl::CleanPolygons(ring, settings_.tolerance * kScale);
+      simplify(ring, settings_.tolerance);
       if (ring.empty()) return false;
       densify(ring, projection_->maxSegment(tip, settings_.tolerance));
       rings.loops.push_back(std::move(ring));
