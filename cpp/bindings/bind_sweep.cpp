@@ -131,6 +131,8 @@ void bindSweep(py::module_& m) {
       .def_readwrite("mesh_deflection", &SweepSettings::meshDeflection)
       .def_readwrite("step_up_minimum", &SweepSettings::stepUpMinimum, "mm between intermediate levels; 0: none")
       .def_readwrite("step_up_scallop", &SweepSettings::stepUpScallop, "mm of staircase left across a wall")
+      .def_readwrite("push_out_most", &SweepSettings::pushOutMost,
+                     "mm a level's boundary may move from the keep-out towards the part, to the exact clearance; 0: off")
       .def_readwrite("rest", &SweepSettings::rest, "rest roughing: cut only where the tool reaches this stock");
   std::vector<std::string> kinds;
   for (MoveKind k : {MoveKind::Rapid, MoveKind::Plunge, MoveKind::Ramp, MoveKind::Cut, MoveKind::Link})

@@ -19,6 +19,7 @@ constexpr double kCell = 2.0;          // mm: the grid's cubes
 constexpr long kMostPoints = 1000000;  // boundary points of one level: bounded work
 constexpr int kMostTries = 24;         // cutter positions tried per point
 constexpr double kLeastStep = 0.05;    // true mm: the finest a push is resolved
+constexpr double kGatherSlack = 1.0;   // true mm a point may be from where the triangles were gathered
 constexpr double kPinhole = 1.0;       // true mm²: the largest hole of the pushed outline filled
 
 struct Candidate {
@@ -52,30 +53,51 @@ public:
   double distance(const cl::IntPoint& q, const Eigen::Vector2d& n, double most) {
     const double lipschitz = prepare(q, n, most);
     const double leastStep = kLeastStep / projection_.largestScale();
-    double t = 0.0, room = clearanceAt(0.0) - settings_.clearance, limit = most;
+    double t = 0.0, room = clearanceAt(at(0.0)) - settings_.clearance, limit = most;
     bool blocked = false;  // whether the limit is a position found too close
     for (int k = 0; k < kMostTries && room >= 0.0 && limit - t > 0.5 * leastStep; ++k) {
       double next = std::min(limit, t + std::max(leastStep, room / lipschitz));
       if (blocked) next = std::min(next, t + 0.5 * (limit - t));
-      const double there = clearanceAt(next) - settings_.clearance;
+      const double there = clearanceAt(at(next)) - settings_.clearance;
       if (there >= 0.0) t = next, room = there;
       else limit = next, blocked = true;
     }
     return room >= 0.0 ? t : 0.0;
   }
 
-  // The point q and its normal n taken, the triangles near it gathered: those a cutter within `most` flat mm
-  // of it (and two spacings more, for the chords to its neighbours' places) may come too close to. Returns how
-  // many true mm the cutter moves at most per flat mm.
+  // The point q and its normal n taken, the triangles near it chosen: those a cutter within `most` flat mm of
+  // it (and two spacings more, for the chords to its neighbours' places) may come too close to, nearest first.
+  // Returns how many true mm the cutter moves at most per flat mm.
   double prepare(const cl::IntPoint& q, const Eigen::Vector2d& n, double most) {
     from_ = q, normal_ = n;
     const double scale = projection_.largestScale();
     const double lipschitz = scale * (1.0 + turnRate(kLeastStep / scale) * body_.length);
-    gather(q, lipschitz * (most + 2.0 * settings_.spacing));
+    const double reach = lipschitz * (most + 2.0 * settings_.spacing);
+    farEnough_ = settings_.clearance + reach;
+    tip0_ = projection_.point(q, tip_), top0_ = tip0_ + projection_.axisAtPlane(q, tip_) * body_.length;
+    // Neighbouring points share their triangles: gathered once for a few of them, with room to spare.
+    if (!(reach <= gatheredReach_ - kGatherSlack && (tip0_ - gatheredTip_).norm() <= kGatherSlack &&
+          (top0_ - gatheredTop_).norm() <= kGatherSlack))
+      gather(q, reach + 2.0 * kGatherSlack);
+    nearest_.clear();
+    for (size_t k = 0; k < gathered_.size(); ++k) {
+      const Candidate& c = gathered_[k];
+      const double bound = segmentDistance(c.centre, tip0_, top0_) - c.radius - radius_;
+      if (bound < farEnough_) nearest_.push_back({k, bound});
+    }
+    std::sort(nearest_.begin(), nearest_.end(), [](const Near& a, const Near& b) { return a.bound < b.bound; });
     return lipschitz;
   }
 
+  // Whether the cutter at q (near the point last prepared) keeps the clearance from the triangles.
+  bool clearAt(const cl::IntPoint& q) const { return leastDistance(q, settings_.clearance) >= settings_.clearance; }
+
 private:
+  struct Near {
+    size_t candidate;  // in gathered_
+    double bound;      // from below, the distance from the cutter at the prepared point to the triangle
+  };
+
   cl::IntPoint at(double t) const { return pushedPoint(from_, normal_, t); }
 
   // Radians the axis turns per flat mm along the normal.
@@ -84,39 +106,38 @@ private:
     return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) / step;
   }
 
-  // The triangles that a cutter within `reach` true mm of the first position may come nearer than the clearance.
+  // The triangles that a cutter within `reach` true mm of the position at q may come nearer than the clearance.
   void gather(const cl::IntPoint& q, double reach) {
-    candidates_.clear();
-    const Eigen::Vector3d tip = projection_.point(q, tip_), axis = projection_.axisAtPlane(q, tip_);
+    gathered_.clear();
+    gatheredTip_ = tip0_, gatheredTop_ = top0_, gatheredReach_ = reach;
+    const Eigen::Vector3d axis = projection_.axisAtPlane(q, tip_);
     // Under the tip, nothing lower than the clearance and the reach matters (the cutter's bottom is its tip).
     const double low = std::clamp(settings_.lowest, -(settings_.clearance + reach), 0.0);
-    part_.grid.near(tip + axis * low, tip + axis * body_.length, radius_ + settings_.clearance + reach, seen_, stamp_++,
-                    [&](int t) {
-                      const Eigen::Vector3i& c = part_.mesh.triangles[t];
-                      const Eigen::Vector3d centre =
-                          (part_.mesh.vertices[c[0]] + part_.mesh.vertices[c[1]] + part_.mesh.vertices[c[2]]) / 3.0;
-                      double r = 0.0;
-                      for (int k = 0; k < 3; ++k) r = std::max(r, (part_.mesh.vertices[c[k]] - centre).norm());
-                      candidates_.push_back({t, centre, r});
-                    });
+    part_.grid.near(tip0_ + axis * low, top0_, radius_ + settings_.clearance + reach, seen_, stamp_++, [&](int t) {
+      const Eigen::Vector3i& c = part_.mesh.triangles[t];
+      const Eigen::Vector3d centre =
+          (part_.mesh.vertices[c[0]] + part_.mesh.vertices[c[1]] + part_.mesh.vertices[c[2]]) / 3.0;
+      double r = 0.0;
+      for (int k = 0; k < 3; ++k) r = std::max(r, (part_.mesh.vertices[c[k]] - centre).norm());
+      gathered_.push_back({t, centre, r});
+    });
   }
 
-  // The least distance from the cutter at the point moved t to the gathered triangles; anything beyond the
-  // clearance and the most a step can close is as good as far.
-  double clearanceAt(double t) const { return clearanceAt(at(t)); }
+  double clearanceAt(const cl::IntPoint& q) const { return leastDistance(q, farEnough_); }
 
-public:
-  // Whether the cutter at q (near the point last pushed) keeps the clearance from the gathered triangles.
-  bool clearAt(const cl::IntPoint& q) const { return clearanceAt(q) >= settings_.clearance; }
-
-private:
-  double clearanceAt(const cl::IntPoint& q) const {
+  // The least distance from the cutter at q to the chosen triangles, or `enough` where all are farther: they
+  // are taken nearest first, and none is looked at once its bound, less how far the cutter moved from the
+  // prepared point, is beyond what was found.
+  double leastDistance(const cl::IntPoint& q, double enough) const {
     const Eigen::Vector3d tip = projection_.point(q, tip_), axis = projection_.axisAtPlane(q, tip_);
     const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u), top = tip + axis * body_.length;
-    double least = settings_.clearance + 10.0;
+    // Every point of the cutter's axis moved at most as far as its ends did.
+    const double moved = std::max((tip - tip0_).norm(), (top - top0_).norm());
+    double least = enough;
     Eigen::Vector3d local[3];
-    for (const Candidate& c : candidates_) {
-      // The cutter lies within its radius of its axis from the tip to its top: a bound from below.
+    for (const Near& near : nearest_) {
+      if (near.bound - moved >= least) break;
+      const Candidate& c = gathered_[near.candidate];
       if (segmentDistance(c.centre, tip, top) - c.radius - radius_ >= least) continue;
       const Eigen::Vector3i& corners = part_.mesh.triangles[c.triangle];
       for (int k = 0; k < 3; ++k) {
@@ -124,6 +145,7 @@ private:
         local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d));
       }
       least = std::min(least, cutterDistance(local, body_, settings_.lowest));
+      if (least < settings_.clearance && enough <= settings_.clearance) break;  // too close is all clearAt asks
     }
     return least;
   }
@@ -135,7 +157,12 @@ private:
   const PushSettings& settings_;
   std::vector<int> seen_;
   int stamp_ = 0;
-  std::vector<Candidate> candidates_;
+  std::vector<Candidate> gathered_;
+  Eigen::Vector3d gatheredTip_ = Eigen::Vector3d::Zero(), gatheredTop_ = Eigen::Vector3d::Zero();
+  double gatheredReach_ = -1.0;
+  std::vector<Near> nearest_;
+  Eigen::Vector3d tip0_ = Eigen::Vector3d::Zero(), top0_ = Eigen::Vector3d::Zero();
+  double farEnough_ = 0.0;
   cl::IntPoint from_;
   Eigen::Vector2d normal_ = Eigen::Vector2d::UnitX();
 };

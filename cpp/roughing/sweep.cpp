@@ -503,7 +503,7 @@ void checkSettings(const SweepSettings& s) {
   check(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "mm (default 0.02)");
   if (s.stepUpMinimum != 0.0) check(s.stepUpMinimum, 0.1, 100.0, "step-up minimum", "mm between levels, or 0 for none (default 1)");
   check(s.stepUpScallop, 0.01, 10.0, "step-up scallop", "mm of the staircase left across a wall (default 0.25)");
-  check(s.pushOutMost, 0.0, 10.0, "push-out", "mm a level's boundary may move towards the part (0: off, the default)");
+  check(s.pushOutMost, 0.0, 10.0, "push-out", "mm a level's boundary may move towards the part (0: off; default 1.5)");
   if (!s.rest.points.empty()) {
     check(s.rest.spacing, 0.01, 20.0, "rest stock spacing", "mm between its points (the removal simulation's)");
     for (const Eigen::Vector3d& p : s.rest.points)

@@ -279,9 +279,10 @@ EXPECTED_DIFFERENCES = {
         "narrower than its flutes, the hub curving up under it taken per point, not as one lift of every band), "
         "and its flat scales hold over the tool's reach where the hub's normal lines converge; where the hub's "
         "offsets fall away round the axis the keep-out is narrower across (an ellipse, thin bands below the "
-        "corner): S5 cuts more of each channel, its outer passes nearer the blades. The same 7 passes, clear "
+        "corner): S5 cuts more of each channel, its outer passes nearer the blades; the passes' outlines are "
+        "simplified within the tolerance of every point they had (fewer points). The same 7 passes, clear "
         "of the part by the allowance, cutting at least the 594.6 mm saved (the rule checks all three)",
-        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1997, length_mm=1130.181),
+        rebuilt_sweep(passes=7, saved_cutting_mm=594.567), commands=1762, length_mm=990.950),
 }
 
 

@@ -124,7 +124,8 @@ class RestFromOperation(unittest.TestCase):
     def test_step_up_and_rest_properties_with_their_defaults(self):
         self.assertAlmostEqual(self.first.StepUpMinimum.Value, 1.0)
         self.assertAlmostEqual(self.first.StepUpScallop.Value, 0.25)
-        for name in ("StepUpMinimum", "StepUpScallop", "RestFrom"):
+        self.assertAlmostEqual(self.first.PushOut.Value, roughing_op._DEFAULTS.push_out_most)
+        for name in ("StepUpMinimum", "StepUpScallop", "PushOut", "RestFrom"):
             self.assertIn(name, self.first.PropertiesList)
 
     def test_a_link_that_is_not_a_roughing_or_loops_is_said(self):

@@ -237,6 +237,21 @@ class Sweep(unittest.TestCase):
         report = roughing.check_clearance(paths, self.shapes.part_brep, roughing.cutter("flat", diameter=6.0), 0.29)
         self.assertEqual(report.too_close, 0)
 
+    def test_the_push_out_cuts_nearer_the_leaning_walls_and_no_nearer_than_the_allowance(self):
+        # S1's levels are horizontal, the slot's walls lean: the keep-out holds the outer passes farther from
+        # them than the allowance (the widest the tool is over each band of heights); pushed out to the exact
+        # clearance they cut more and leave less, and the independent check still finds nothing too close.
+        left = {}
+        for push in (0.0, 1.5):
+            _, paths = self.swept("S1", push_out=push)
+            report = roughing.check_clearance(paths, self.shapes.part_brep)
+            self.assertEqual(report.too_close, 0, "push-out %g" % push)
+            self.assertGreaterEqual(report.minimum, 0.49)
+            removal = roughing.simulate_removal(paths, self.shapes.stock_brep, self.shapes.part_brep, resolution=0.5)
+            self.assertEqual(removal.gouge_volume, 0.0)
+            left[push] = removal.beyond_allowance_share
+        self.assertLess(left[1.5], left[0.0] - 0.3)
+
     def test_s5_stands_on_the_floor_and_leaves_the_allowance(self):
         # S5 follows the slot's floor (30° from the horizontal): the tool axis is the floor's normal, away from it,
         # and the lowest level's tip stays the allowance above the floor.
@@ -316,6 +331,7 @@ class Sweep(unittest.TestCase):
         result = roughing.partition(self.volume, self.shapes.part_brep, "S1")
         for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in \\[0.01, 1\\]"),
                                   (dict(allowance=-0.5), "allowance = -0.5 is outside"),
+                                  (dict(push_out=20.0), "push-out = 20"),
                                   (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
             with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):
                 roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)

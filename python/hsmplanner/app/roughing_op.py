@@ -23,7 +23,7 @@ _DEFAULTS = roughing._core.roughing.SweepSettings()  # each default written once
 DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
 MEND_RESOLUTION = 0.2  # mm: the removal model that finds the rapids that would cut the stock left
 LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0),
-          "StepUpMinimum": (0.0, 100.0), "StepUpScallop": (0.01, 10.0)}
+          "StepUpMinimum": (0.0, 100.0), "StepUpScallop": (0.01, 10.0), "PushOut": (0.0, 10.0)}
 REST_SPACING = 0.4  # mm between the points of the stock a rest roughing reads (the removal model's at 0.2 mm)
 
 
@@ -136,6 +136,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         obj.addProperty("App::PropertyAngle", "RampAngle", "Roughing", "entries into material ramp at most this steep")
         obj.RampAngle = _DEFAULTS.ramp_angle_deg
         self.add_step_up_and_rest(obj, _DEFAULTS.step_up_minimum)
+        self.add_push_out(obj, _DEFAULTS.push_out_most)
         self.add_results(obj)
 
     def add_step_up_and_rest(self, obj, minimum):
@@ -151,6 +152,13 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             obj.addProperty("App::PropertyLink", "RestFrom", "Roughing", "rest roughing: a Volume roughing before this "
                             "one; this cuts only the stock it (and its own RestFrom) left")
 
+    def add_push_out(self, obj, most):
+        """PushOut (`most` where the property is new)."""
+        if "PushOut" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyLength", "PushOut", "Roughing", "how far each level's outline may move "
+                            "from the safe keep-out towards the part, to the tool's exact clearance; 0: off")
+            obj.PushOut = most
+
     def add_results(self, obj):
         """The Result properties, those a document saved before them lacks too."""
         for name, kind, tip in RESULTS:
@@ -162,6 +170,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         self.add_results(obj)
         # A document saved before step-up keeps the program it was saved with: one level per slice.
         self.add_step_up_and_rest(obj, 0.0)
+        self.add_push_out(obj, 0.0)
 
     def opSetDefaultValues(self, obj, job):
         obj.ToolController = roughing_controller(job, obj.ToolController)
@@ -263,7 +272,7 @@ def volume_roughing_program(obj):
         paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
                                radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
                                ramp_angle_deg=obj.RampAngle.Value, step_up_minimum=obj.StepUpMinimum.Value,
-                               step_up_scallop=obj.StepUpScallop.Value, rest=rest)
+                               step_up_scallop=obj.StepUpScallop.Value, push_out=obj.PushOut.Value, rest=rest)
         warnings += ["region %d: %s" % (index + 1, w) for w in paths.warnings]
         passes += len(paths.passes)
         length += paths.cutting_length

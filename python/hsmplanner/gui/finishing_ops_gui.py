@@ -172,12 +172,15 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
                                "far apart; 0: one level per slice (the paper's)")
         form.scallop = _spin(0.25, roughing_op.LIMITS["StepUpScallop"], decimals=2)
         form.scallop.setToolTip("step-up levels are added while a leaning wall keeps a staircase thicker than this")
+        form.pushOut = _spin(0.0, roughing_op.LIMITS["PushOut"], decimals=2)
+        form.pushOut.setToolTip("push-out: how far each level's outline may move from the safe keep-out towards the "
+                                "part, to the tool's exact clearance (less stock left by the outer passes); 0: off")
         form.restFrom = narrow_combo(names=True)
         form.restFrom.setToolTip("rest roughing: cut only the stock this Volume roughing (before this one) left")
         for label, widget in (("Tool", form.toolController), ("Coolant", form.coolantController),
                               ("Volume", form.volume), ("Machine", form.machine), ("Engagement", form.engagement),
                               ("Allowance", form.allowance), ("Ramp angle", form.ramp), ("Step-up", form.stepUp),
-                              ("Scallop", form.scallop), ("Rest from", form.restFrom)):
+                              ("Scallop", form.scallop), ("Push-out", form.pushOut), ("Rest from", form.restFrom)):
             layout.addRow(label, widget)
         form.result = QtWidgets.QLabel()
         form.result.setWordWrap(True)
@@ -206,6 +209,7 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         obj.RampAngle = self.form.ramp.value()
         obj.StepUpMinimum = self.form.stepUp.value()
         obj.StepUpScallop = self.form.scallop.value()
+        obj.PushOut = self.form.pushOut.value()
         before = {o.Label: o for o in self.roughings_before(obj)}
         obj.RestFrom = before.get(self.form.restFrom.currentText())
 
@@ -228,6 +232,7 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         self.form.ramp.setValue(obj.RampAngle.Value)
         self.form.stepUp.setValue(obj.StepUpMinimum.Value)
         self.form.scallop.setValue(obj.StepUpScallop.Value)
+        self.form.pushOut.setValue(obj.PushOut.Value)
         self.form.result.setText("%d passes, %.0f mm of cut; closest to the part %.3f mm" % (
             obj.Passes, obj.CuttingLength.Value, obj.ClosestApproach.Value) if obj.Passes else "")
 
@@ -236,7 +241,7 @@ class VolumeRoughingPage(PathOpGui.TaskPanelPage):
         return [f.toolController.currentIndexChanged, f.coolantController.currentIndexChanged,
                 f.volume.currentIndexChanged, f.machine.currentIndexChanged, f.engagement.valueChanged,
                 f.allowance.valueChanged, f.ramp.valueChanged, f.stepUp.valueChanged, f.scallop.valueChanged,
-                f.restFrom.currentIndexChanged]
+                f.pushOut.valueChanged, f.restFrom.currentIndexChanged]
 
 
 def _no_gate():

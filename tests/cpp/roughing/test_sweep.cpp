@@ -319,8 +319,9 @@ TEST(Sweep, ChannelsJoinedThroughTheAir) {
     const SweepSettings settings;
     const ClearanceReport clear = checkClearance(joined, c.shapes.part, settings.cutter, settings.allowance - 0.01, 1.0);
     EXPECT_EQ(clear.tooClose, 0) << strategyName(strategy) << ": closest " << clear.minimum << " at move " << clear.worstMove;
-    if (strategy == Strategy::PlanesParallelToFace)
+    if (strategy == Strategy::PlanesParallelToFace) {
       for (const ToolMove& m : joined) EXPECT_GT(m.axis.dot(joined.front().axis), 1.0 - 1e-12) << "S1 keeps one axis";
+    }
     RemovalSettings coarse;
     coarse.resolution = 0.5;
     const RemovalResult removal = simulateRemoval(joined, settings.cutter, c.shapes.stock, c.shapes.part, coarse);
