@@ -246,6 +246,35 @@ def every_strategy_drawn_on_the_slot(run):
 
 
 @run.step
+def the_operation_panel_shows_and_sets_the_push_out(run):
+    """The Volume roughing panel as a user opens it (double click: setEdit) has the push-out at its default, fits
+    the Combo View, and its value reaches the operation, which recomputes with it."""
+    from hsmplanner.app import roughing_object
+
+    op, volume = state["slot_op"], state["slot"][2]
+    volume.Strategy = roughing_object.strategy_label("S1")  # levels across the slot's leaning walls
+    FreeCAD.ActiveDocument.recompute()
+    run.wait_until(lambda: run.valid(volume) and run.valid(op) and op.Passes > 0, 60.0, "the slot's S1 swept")
+    cut_before = op.CuttingLength.Value
+    Gui.ActiveDocument.setEdit(op.Name)
+    run.wait_until(lambda: op.ViewObject.Proxy.panel is not None and run.task_dialog_open(), 30.0,
+                   "the Volume roughing panel open")
+    panel = op.ViewObject.Proxy.panel
+    page = panel.featurePages[-1]
+    run.check("the panel shows the operation's push-out", abs(page.form.pushOut.value() - op.PushOut.Value) < 1e-9
+              and op.PushOut.Value > 0.0, "%g %g" % (page.form.pushOut.value(), op.PushOut.Value))
+    run.check_fits_combo_view("Volume roughing panel", page.form)
+    run.screenshot("volume_roughing_panel")
+    page.form.pushOut.setValue(0.0)
+    panel.accept()
+    run.wait_until(lambda: not run.task_dialog_open() and run.valid(op) and op.PushOut.Value == 0.0, 90.0,
+                   "the panel closed and the roughing recomputed without the push-out")
+    run.check("without the push-out the outer passes cut less", 0.0 < op.CuttingLength.Value < cut_before,
+              "%.1f mm, %.1f with" % (op.CuttingLength.Value, cut_before))
+    run.notes["slot push-out"] = {"cutting mm with": cut_before, "without": op.CuttingLength.Value}
+
+
+@run.step
 def every_strategy_drawn_on_an_impeller_channel(run):
     """One channel of the seven (region 1, the largest) at the volume's default step: seconds a strategy."""
     from hsmplanner.app import roughing_op
