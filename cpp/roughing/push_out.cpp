@@ -18,8 +18,9 @@ namespace {
 constexpr double kCell = 2.0;          // mm: the grid's cubes
 constexpr long kMostPoints = 1000000;  // boundary points of one level: bounded work
 constexpr int kMostTries = 24;         // cutter positions tried per point
-constexpr double kLeastStep = 0.05;    // true mm: the finest a push is resolved
+constexpr double kLeastStep = 0.02;    // true mm: the finest a push is resolved
 constexpr double kGatherSlack = 1.0;   // true mm a point may be from where the triangles were gathered
+constexpr double kSteepest = 0.1;      // flat mm a push may change per flat mm along the boundary (6°)
 constexpr double kPinhole = 1.0;       // true mm²: the largest hole of the pushed outline filled
 
 struct Candidate {
@@ -218,6 +219,28 @@ void cutCrossings(const cl::Paths& boundary, const std::vector<std::vector<Eigen
   }
 }
 
+// Pushes that change faster along the boundary than kSteepest (flat mm per flat mm) are lowered to it: a point
+// held back (too close at its start, or a chord too close) would leave a notch, and the pushes' own
+// resolution a saw tooth, each a sharp turn where the machine slows down. Lowering a push only shrinks what
+// the domain gains, so what was clear stays clear.
+void limitSlopes(const cl::Paths& boundary, Pushes& pushes) {
+  size_t k0 = 0;
+  for (const cl::Path& path : boundary) {
+    const size_t n = path.size();
+    auto apart = [&](size_t i, size_t j) {
+      return std::hypot(double(path[j].X - path[i].X), double(path[j].Y - path[i].Y)) / kScale;
+    };
+    for (int round = 0; round < 2; ++round)  // twice round: what the last point lowers reaches the first
+      for (size_t m = 0; m < n; ++m) {
+        const size_t i = m, j = (m + 1) % n;                  // forwards
+        const size_t b = n - 1 - m, a = (b + n - 1) % n;      // backwards
+        pushes[k0 + j] = std::min(pushes[k0 + j], pushes[k0 + i] + kSteepest * apart(i, j));
+        pushes[k0 + a] = std::min(pushes[k0 + a], pushes[k0 + b] + kSteepest * apart(a, b));
+      }
+    k0 += n;
+  }
+}
+
 // A triangle of Clipper points turned anticlockwise; empty where it has no area.
 cl::Path anticlockwise(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
   cl::Path triangle{a, b, c};
@@ -329,6 +352,7 @@ cl::Paths pushedOut(const cl::Paths& domain, const cl::Paths& within, double tip
     }
   });
   cutCrossings(boundary, normals, pushes);
+  limitSlopes(boundary, pushes);
   keepChordsClear(boundary, normals, pushes, projection, part, body, cutter.radius(), tip, most, settings);
   // Between two neighbouring points and their pushed places: two triangles that grow the domain.
   cl::Paths grown = domain;
