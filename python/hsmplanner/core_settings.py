@@ -11,7 +11,12 @@ def core_settings(settings_type, /, **values):
             continue
         if not hasattr(settings, name):
             raise TypeError("%s has no setting %r" % (settings_type.__name__, name))
-        setattr(settings, name, value)
+        try:
+            setattr(settings, name, value)
+        except TypeError:  # pybind11's own message names no setting
+            raise TypeError("%s.%s cannot be %r (%s): give a %s" % (
+                settings_type.__name__, name, value, type(value).__name__,
+                type(getattr(settings, name)).__name__)) from None
     return settings
 
 

@@ -335,5 +335,7 @@ class Sweep(unittest.TestCase):
                                   (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
             with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):
                 roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)
+        with self.assertRaisesRegex(TypeError, r"SweepSettings.push_out_most cannot be 'far' \(str\): give a float"):
+            roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, push_out="far")
         with self.assertRaisesRegex(ValueError, "cutter kind 'drill' is unknown"):
             roughing.cutter("drill")
