@@ -55,18 +55,21 @@ bool insidePaths(const cl::IntPoint& q, const cl::Paths& paths) {
   return winding > 0;
 }
 
+namespace {
+// Clipper units from p to the segment a–b.
+double segmentDistance(const cl::IntPoint& p, const cl::IntPoint& a, const cl::IntPoint& b) {
+  const double dx = double(b.X - a.X), dy = double(b.Y - a.Y), px = double(p.X - a.X), py = double(p.Y - a.Y);
+  const double squared = dx * dx + dy * dy;
+  const double t = squared > 0.0 ? std::clamp((px * dx + py * dy) / squared, 0.0, 1.0) : 0.0;
+  return std::hypot(px - t * dx, py - t * dy);
+}
+
+}  // namespace
+
 double distanceToBoundary(const cl::IntPoint& q, const cl::Paths& paths) {
   double best = std::numeric_limits<double>::infinity();
-  const Eigen::Vector2d p(double(q.X), double(q.Y));
   for (const cl::Path& path : paths)
-    for (size_t i = 0; i < path.size(); ++i) {
-      const Eigen::Vector2d a(double(path[i].X), double(path[i].Y));
-      const cl::IntPoint& nb = path[(i + 1) % path.size()];
-      const Eigen::Vector2d b(double(nb.X), double(nb.Y));
-      const Eigen::Vector2d d = b - a;
-      const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      best = std::min(best, (a + t * d - p).norm());
-    }
+    for (size_t i = 0; i < path.size(); ++i) best = std::min(best, segmentDistance(q, path[i], path[(i + 1) % path.size()]));
   return best / kScale;
 }
 
@@ -104,14 +107,6 @@ void densify(cl::Paths& paths, double longest, bool closed) {
 }
 
 namespace {
-// Clipper units from p to the segment a–b.
-double segmentDistance(const cl::IntPoint& p, const cl::IntPoint& a, const cl::IntPoint& b) {
-  const double dx = double(b.X - a.X), dy = double(b.Y - a.Y), px = double(p.X - a.X), py = double(p.Y - a.Y);
-  const double squared = dx * dx + dy * dy;
-  const double t = squared > 0.0 ? std::clamp((px * dx + py * dy) / squared, 0.0, 1.0) : 0.0;
-  return std::hypot(px - t * dx, py - t * dy);
-}
-
 // Douglas–Peucker on one closed path: from its first point and the point farthest from it, each stretch split
 // at its farthest point while that is more than `limit` (Clipper units) off its chord.
 cl::Path simplified(const cl::Path& path, double limit) {

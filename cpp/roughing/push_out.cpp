@@ -23,18 +23,6 @@ constexpr double kGatherSlack = 1.0;   // true mm a point may be from where the 
 constexpr double kSteepest = 0.1;      // flat mm a push may change per flat mm along the boundary (6°)
 constexpr double kPinhole = 1.0;       // true mm²: the largest hole of the pushed outline filled
 
-struct Candidate {
-  int triangle;
-  Eigen::Vector3d centre;
-  double radius;  // of the sphere about the centre that holds the triangle
-};
-
-double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d d = b - a;
-  const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
-  return (a + t * d - p).norm();
-}
-
 // A pushed point, laid flat.
 cl::IntPoint pushedPoint(const cl::IntPoint& q, const Eigen::Vector2d& n, double t) {
   return {q.X + static_cast<cl::cInt>(std::llround(n.x() * t * kScale)), q.Y + static_cast<cl::cInt>(std::llround(n.y() * t * kScale))};
@@ -81,10 +69,9 @@ public:
           (top0_ - gatheredTop_).norm() <= kGatherSlack))
       gather(q, reach + 2.0 * kGatherSlack);
     nearest_.clear();
-    for (size_t k = 0; k < gathered_.size(); ++k) {
-      const Candidate& c = gathered_[k];
-      const double bound = segmentDistance(c.centre, tip0_, top0_) - c.radius - radius_;
-      if (bound < farEnough_) nearest_.push_back({k, bound});
+    for (int t : gathered_) {
+      const double bound = reachBound(t, tip0_, top0_);
+      if (bound < farEnough_) nearest_.push_back({t, bound});
     }
     std::sort(nearest_.begin(), nearest_.end(), [](const Near& a, const Near& b) { return a.bound < b.bound; });
     return lipschitz;
@@ -95,9 +82,15 @@ public:
 
 private:
   struct Near {
-    size_t candidate;  // in gathered_
-    double bound;      // from below, the distance from the cutter at the prepared point to the triangle
+    int triangle;
+    double bound;  // from below, the distance from the cutter at the prepared point to the triangle
   };
+
+  // From below, the distance from the cutter standing on the axis tip–top to triangle t: the cutter lies
+  // within its radius of that axis, the triangle within its bounding sphere.
+  double reachBound(int t, const Eigen::Vector3d& tip, const Eigen::Vector3d& top) const {
+    return segmentDistance(part_.grid.centre(t), tip, top) - part_.grid.boundingRadius(t) - radius_;
+  }
 
   cl::IntPoint at(double t) const { return pushedPoint(from_, normal_, t); }
 
@@ -114,14 +107,8 @@ private:
     const Eigen::Vector3d axis = projection_.axisAtPlane(q, tip_);
     // Under the tip, nothing lower than the clearance and the reach matters (the cutter's bottom is its tip).
     const double low = std::clamp(settings_.lowest, -(settings_.clearance + reach), 0.0);
-    part_.grid.near(tip0_ + axis * low, top0_, radius_ + settings_.clearance + reach, seen_, stamp_++, [&](int t) {
-      const Eigen::Vector3i& c = part_.mesh.triangles[t];
-      const Eigen::Vector3d centre =
-          (part_.mesh.vertices[c[0]] + part_.mesh.vertices[c[1]] + part_.mesh.vertices[c[2]]) / 3.0;
-      double r = 0.0;
-      for (int k = 0; k < 3; ++k) r = std::max(r, (part_.mesh.vertices[c[k]] - centre).norm());
-      gathered_.push_back({t, centre, r});
-    });
+    part_.grid.near(tip0_ + axis * low, top0_, radius_ + settings_.clearance + reach, seen_, stamp_++,
+                    [&](int t) { gathered_.push_back(t); });
   }
 
   double clearanceAt(const cl::IntPoint& q) const { return leastDistance(q, farEnough_); }
@@ -138,9 +125,8 @@ private:
     Eigen::Vector3d local[3];
     for (const Near& near : nearest_) {
       if (near.bound - moved >= least) break;
-      const Candidate& c = gathered_[near.candidate];
-      if (segmentDistance(c.centre, tip, top) - c.radius - radius_ >= least) continue;
-      const Eigen::Vector3i& corners = part_.mesh.triangles[c.triangle];
+      if (reachBound(near.triangle, tip, top) >= least) continue;
+      const Eigen::Vector3i& corners = part_.mesh.triangles[near.triangle];
       for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3d d = part_.mesh.vertices[corners[k]] - tip;
         local[k] = Eigen::Vector3d(u.dot(d), v.dot(d), axis.dot(d));
@@ -158,7 +144,7 @@ private:
   const PushSettings& settings_;
   std::vector<int> seen_;
   int stamp_ = 0;
-  std::vector<Candidate> gathered_;
+  std::vector<int> gathered_;  // triangles
   Eigen::Vector3d gatheredTip_ = Eigen::Vector3d::Zero(), gatheredTop_ = Eigen::Vector3d::Zero();
   double gatheredReach_ = -1.0;
   std::vector<Near> nearest_;
@@ -296,6 +282,16 @@ void keepChordsClear(const cl::Paths& boundary, const std::vector<std::vector<Ei
   }
 }
 
+// Whether the cutter keeps the clearance at a hole's corners and its middle.
+bool clearThroughout(const cl::Path& hole, Push& push) {
+  double x = 0.0, y = 0.0, span = 0.0;
+  for (const cl::IntPoint& q : hole) x += double(q.X), y += double(q.Y);
+  const cl::IntPoint middle{cl::cInt(x / hole.size()), cl::cInt(y / hole.size())};
+  for (const cl::IntPoint& q : hole) span = std::max(span, std::hypot(double(q.X - middle.X), double(q.Y - middle.Y)) / kScale);
+  push.prepare(middle, Eigen::Vector2d::UnitX(), span);
+  return push.clearAt(middle) && std::all_of(hole.begin(), hole.end(), [&](const cl::IntPoint& q) { return push.clearAt(q); });
+}
+
 // Where pushes of points a few apart cross, the pushed outline folds over itself and the triangles' union
 // leaves pinholes the domain did not have (a hole of the part's own is at least the cutter's disk). Each hole
 // smaller than kPinhole is filled when the cutter keeps the clearance at its corners and its middle.
@@ -303,19 +299,10 @@ void fillPinholes(cl::Paths& united, const PartTriangles& part, const Projection
                   const CutterBody& body, double radius, double tip, const PushSettings& settings) {
   const double largest = kPinhole / (projection.largestScale() * projection.largestScale()) * kScale * kScale;
   Push push(part, projection, body, radius, tip, settings);
-  united.erase(std::remove_if(united.begin(), united.end(),
-                              [&](const cl::Path& hole) {
-                                if (cl::Orientation(hole) || -cl::Area(hole) > largest || hole.empty()) return false;
-                                double x = 0.0, y = 0.0, span = 0.0;
-                                for (const cl::IntPoint& q : hole) x += double(q.X), y += double(q.Y);
-                                const cl::IntPoint middle{cl::cInt(x / hole.size()), cl::cInt(y / hole.size())};
-                                for (const cl::IntPoint& q : hole)
-                                  span = std::max(span, std::hypot(double(q.X - middle.X), double(q.Y - middle.Y)) / kScale);
-                                push.prepare(middle, Eigen::Vector2d::UnitX(), span);
-                                if (!push.clearAt(middle)) return false;
-                                return std::all_of(hole.begin(), hole.end(), [&](const cl::IntPoint& q) { return push.clearAt(q); });
-                              }),
-               united.end());
+  const auto pinhole = [&](const cl::Path& path) {
+    return !path.empty() && !cl::Orientation(path) && -cl::Area(path) <= largest && clearThroughout(path, push);
+  };
+  united.erase(std::remove_if(united.begin(), united.end(), pinhole), united.end());
 }
 }  // namespace
 

@@ -18,6 +18,13 @@ namespace hsm::roughing {
 double pointTriangleDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                              const Eigen::Vector3d& c);
 
+// The distance from p to the segment a–b.
+inline double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d d = b - a;
+  const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (a + t * d - p).norm();
+}
+
 // Triangles bucketed in a uniform grid of cubes, for the ones near a tool position.
 class TriangleGrid {
 public:
@@ -60,12 +67,11 @@ public:
     });
   }
 
+  // Triangle t's centroid and the radius of the sphere about it that holds the triangle.
+  const Eigen::Vector3d& centre(int t) const { return centres_[t]; }
+  double boundingRadius(int t) const { return radii_[t]; }
+
 private:
-  static double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d d = b - a;
-    const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
-    return (a + t * d - p).norm();
-  }
   template <class Each>
   void forCells(const Eigen::AlignedBox3d& box, Each&& each) const {
     const Eigen::Vector3i lo = (box.min() / cell_).array().floor().cast<int>();
