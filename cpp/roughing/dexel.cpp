@@ -200,15 +200,6 @@ void TriDexel::assign(const TriDexel& other, int threads) {
   }
 }
 
-void TriDexel::release(int threads) {
-  for (int k = 0; k < 3; ++k) {
-    parallelChunks(static_cast<long>(rays_[k].size()), threads, 1 << 14, [&](long first, long last) {
-      for (long r = first; r < last; ++r) Intervals().swap(rays_[k][r]);
-    });
-    extents_[k].assign(extents_[k].size(), Extent{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
-  }
-}
-
 geometry::TriangleMesh TriDexel::blocks(int stride) const {
   geometry::TriangleMesh mesh;
   const int nx = (n_[2][0] + stride - 1) / stride, ny = (n_[2][1] + stride - 1) / stride;

@@ -34,9 +34,8 @@ public:
   void fill(const geometry::TriangleMesh& mesh, int threads = 1);
   // This model minus `other` (the same grid).
   void subtract(const TriDexel& other, int threads = 1);
-  // This model made `other`'s (the same grid), and every ray emptied (its memory freed), on `threads` threads.
+  // This model made `other`'s (the same grid), on `threads` threads.
   void assign(const TriDexel& other, int threads = 1);
-  void release(int threads = 1);
 
   double resolution() const { return h_; }
   long rays() const;

@@ -443,9 +443,9 @@ public:
   Simulation(const TopoDS_Shape& stock, const TopoDS_Shape& part, const RemovalSettings& settings)
       : Simulation(settings, meshesOf(stock, part, deflection(settings.resolution), threadCount(settings.threads))) {}
 
-  ~Simulation() {  // a few million rays to free: side by side too
-    for (TriDexel* model : {&material_, &part_, &uncut_}) model->release(threads_);
-  }
+  // The models' rays are freed by the thread that ends the simulation, not side by side: a ray's memory was
+  // taken by the thread that filled it, and glibc frees it into that thread's arena under its lock, so two
+  // threads freeing the same models took 0.05 s where one takes 0.03 (the impeller at 0.2 mm).
 
   RemovalResult run(const std::vector<ToolRun>& runs) {
     RemovalResult r;
