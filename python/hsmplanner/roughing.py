@@ -126,7 +126,7 @@ def cutter(kind="torus", diameter=None, corner_radius=None, flute_length=None, s
 
 def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=None, allowance=None, tolerance=None,
           ramp_angle_deg=None, clearance=None, step_up_minimum=None, step_up_scallop=None, push_out=None, rest=None,
-          progress=None):
+          mesh_deflection=None, progress=None):
     """The sub-volumes of a Partition swept by contour-parallel passes (S1–S5; S4 and S5 on offsets of planes,
     cylinders and surfaces of revolution, not of free-form faces): a
     SweepResult whose `moves` are arrays (tip, axis, kind, sub_volume), with its passes and lengths. `volume`
@@ -136,11 +136,14 @@ def sweep(partition_result, volume, part, stock, tool=None, radial_engagement=No
     `push_out` (mm, 0 off): how far each level's boundary may move from the sweep's keep-out (safe but up to a
     millimetre wide) towards the part, to the cutter's exact clearance on the part's triangles.
     Rest roughing: with `rest` (a RestStock: simulate_removal(..., rest_spacing=…).rest of the operations
-    before), each level cuts only where its tool reaches that stock. ValueError for bad settings."""
+    before), each level cuts only where its tool reaches that stock. `mesh_deflection` (mm, default 0.05): how
+    far the part's triangles may stray from its faces; the keep-out and the push-out add it to the allowance,
+    so a finer mesh leaves a thinner layer beyond the allowance for a longer sweep. ValueError for bad
+    settings."""
     settings = core_settings(_core.roughing.SweepSettings, cutter=tool, radial_engagement=radial_engagement,
                              allowance=allowance, tolerance=tolerance, ramp_angle_deg=ramp_angle_deg,
                              clearance=clearance, step_up_minimum=step_up_minimum, step_up_scallop=step_up_scallop,
-                             push_out_most=push_out, rest=rest)
+                             push_out_most=push_out, rest=rest, mesh_deflection=mesh_deflection)
     return _core.roughing.sweep(partition_result, _solid(volume), as_brep(part), as_brep(stock), settings, progress)
 
 

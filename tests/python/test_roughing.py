@@ -332,6 +332,7 @@ class Sweep(unittest.TestCase):
         for settings, message in ((dict(radial_engagement=1.5), "radial engagement = 1.5 must be in \\[0.01, 1\\]"),
                                   (dict(allowance=-0.5), "allowance = -0.5 is outside"),
                                   (dict(push_out=20.0), "push-out = 20"),
+                                  (dict(mesh_deflection=0.001), "mesh deflection = 0.001 is outside \\[0.005, 1\\]"),
                                   (dict(tool=roughing.cutter(diameter=500.0)), "cutter diameter = 500 mm")):
             with self.subTest(message=message), self.assertRaisesRegex(ValueError, message):
                 roughing.sweep(result, self.volume, self.shapes.part_brep, self.shapes.stock_brep, **settings)
