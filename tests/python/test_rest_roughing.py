@@ -6,7 +6,7 @@ import FreeCAD
 import numpy as np
 
 from hsmplanner import roughing
-from hsmplanner.app import roughing_object, roughing_op
+from hsmplanner.app import roughing_object, roughing_op, roughing_study
 from helpers import slot_roughing_job
 
 SMALL = dict(diameter=4.0, corner_radius=0.5, flute_length=15.0, stick_out=30.0)
@@ -69,6 +69,26 @@ class RestRoughingApi(unittest.TestCase):
         self.assertLess(split.unreachable + split.between_levels, self.left.remaining_volume * 1.05)
         with self.assertRaisesRegex(ValueError, "resolution 0.01 mm is outside"):
             roughing.split_what_is_left(partition, self.solid, self.shapes.part_brep, self.first, resolution=0.01)
+
+    def test_a_study_rest_passes_its_sweep_settings_on(self):
+        fine = roughing_study.Rest(sweep_settings=dict(step_up_scallop=0.1, step_up_minimum=0.5))
+        self.assertEqual(fine.label, "step-up + rest S3 Ø4 (step_up_minimum 0.5, step_up_scallop 0.1)")
+        self.assertEqual(roughing_study.Rest().label, "step-up + rest S3 Ø4")
+        for keyword in ("tool", "stepover"):
+            with self.subTest(keyword=keyword), self.assertRaisesRegex(
+                    ValueError, "rest roughing: %s is not a sweep setting a rest may set: use .*mesh_deflection" % keyword):
+                roughing_study.Rest(sweep_settings={keyword: 1.0})
+        small, rest = roughing.cutter(**SMALL), self.left.rest
+
+        def closest(**settings):
+            regions = roughing_study.sweep_regions("S3", self.shapes.part_brep, self.shapes.stock_brep, [self.solid],
+                                                   small, dict(step=4.0), True, rest, sweep_settings=settings)
+            return roughing.check_clearance(regions[0], self.shapes.part_brep, tool=small, limit=0.0).minimum
+
+        self.assertLess(closest(), 0.9)  # the default allowance, 0.5 mm
+        self.assertGreaterEqual(closest(allowance=1.0), 0.99)
+        with self.assertRaisesRegex(ValueError, "mesh deflection = 0.001 is outside \\[0.005, 1\\]"):
+            closest(mesh_deflection=0.001)
 
     def test_bad_inputs_are_named(self):
         with self.assertRaisesRegex(ValueError, "rest spacing 0.1 mm is outside \\[0.4"):

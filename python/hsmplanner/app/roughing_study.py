@@ -3,6 +3,7 @@ example, the FreeCAD panel and scripts share: each strategy's sweeps of every re
 simulated by the material-removal model and, posted for a 5-axis machine, by the feed-rate simulator.
 
 Needs FreeCAD's Path module (the posts read Path commands); no document object is created here."""
+import inspect
 import os
 import tempfile
 import time
@@ -27,19 +28,32 @@ DEFAULT_FEED_MM_MIN = 2000.0
 PAPER, STEP_UP = "paper", "step-up"
 
 
+# roughing.sweep's keywords a Rest may set: the others are the study's (the tool, the stock left, the progress).
+REST_SWEEP_KEYWORDS = tuple(name for name, p in inspect.signature(roughing.sweep).parameters.items()
+                            if p.default is not inspect.Parameter.empty and name not in ("tool", "rest", "progress"))
+
+
 class Rest:
     """A rest-roughing operation after the first: its cutter (default a Ø4 r0.5 torus), its strategy (default S3,
     its setup direction searched on the stock the first left) and step (default 4 mm, 100 % of Ø4), the spacing
-    of the stock-left points it reads (mm)."""
+    of the stock-left points it reads (mm), and roughing.sweep's keywords for its sweep (`sweep_settings`, e.g.
+    step_up_minimum, step_up_scallop, mesh_deflection: finer levels and mesh leave less for a longer program).
+    ValueError for a keyword roughing.sweep does not take."""
 
-    def __init__(self, tool=None, strategy="S3", step=4.0, spacing=0.4):
+    def __init__(self, tool=None, strategy="S3", step=4.0, spacing=0.4, sweep_settings=None):
         self.tool = tool if tool is not None else roughing.cutter("torus", diameter=4.0, corner_radius=0.5,
                                                                   flute_length=15.0, stick_out=30.0)
         self.strategy, self.step, self.spacing = strategy, step, spacing
+        self.sweep_settings = dict(sweep_settings or {})
+        unknown = sorted(set(self.sweep_settings) - set(REST_SWEEP_KEYWORDS))
+        if unknown:
+            raise ValueError("rest roughing: %s is not a sweep setting a rest may set: use %s"
+                             % (", ".join(unknown), ", ".join(REST_SWEEP_KEYWORDS)))
 
     @property
     def label(self):
-        return "step-up + rest %s Ø%g" % (self.strategy, self.tool.diameter)
+        settings = ", ".join("%s %g" % item for item in sorted(self.sweep_settings.items()))
+        return "step-up + rest %s Ø%g%s" % (self.strategy, self.tool.diameter, " (%s)" % settings if settings else "")
 
 
 class StrategyResult:
@@ -57,10 +71,10 @@ class StrategyResult:
 
 
 def sweep_regions(name, part_brep, stock_brep, solids, tool=None, partition_settings=None, step_up=True, rest=None,
-                  progress=None):
-    """The strategy `name` swept on every solid (roughing.partition's keywords in `partition_settings`), step-up
-    levels or not, cutting only the RestStock `rest` when given: the SweepResults. ValueError when a solid lacks
-    the strategy's reference face."""
+                  progress=None, sweep_settings=None):
+    """The strategy `name` swept on every solid (roughing.partition's keywords in `partition_settings`,
+    roughing.sweep's in `sweep_settings`), step-up levels or not, cutting only the RestStock `rest` when given:
+    the SweepResults. ValueError when a solid lacks the strategy's reference face."""
     settings = dict(partition_settings or {})
     if rest is not None and name == "S3":
         settings["rest"] = rest  # the setup direction that reaches the most of what is left
@@ -68,8 +82,8 @@ def sweep_regions(name, part_brep, stock_brep, solids, tool=None, partition_sett
     for k, solid in enumerate(solids):
         share = (lambda done, k=k: progress((k + done) / len(solids))) if progress else None
         partition = roughing.partition(solid, part_brep, name, progress=share, **settings)
-        swept.append(roughing.sweep(partition, solid, part_brep, stock_brep, tool=tool, rest=rest,
-                                    step_up_minimum=None if step_up else 0.0))
+        keywords = dict(dict(step_up_minimum=None if step_up else 0.0), **(sweep_settings or {}))
+        swept.append(roughing.sweep(partition, solid, part_brep, stock_brep, tool=tool, rest=rest, **keywords))
     return swept
 
 
@@ -124,7 +138,8 @@ def study_strategy(name, part_brep, stock_brep, volume, tool=None, resolution=0.
         left = roughing.simulate_removal(moves, stock_brep, part_brep, tool=tool, resolution=resolution,
                                          rest_spacing=max(rest.spacing, resolution), progress=part_of(0.45, 0.55))
         rest_regions = sweep_regions(rest.strategy, part_brep, stock_brep, volume.solids, rest.tool,
-                                     dict(settings, step=rest.step), True, left.rest, progress=part_of(0.55, 0.7))
+                                     dict(settings, step=rest.step), True, left.rest, progress=part_of(0.55, 0.7),
+                                     sweep_settings=rest.sweep_settings)
         rest_moves, rest_fed = roughing.keep_rapids_out_of_stock(
             roughing.join_paths(rest_regions, stock_brep), stock_brep, part_brep, tool=rest.tool,
             resolution=resolution, after=[(moves, tool)], progress=part_of(0.7, 0.8))
