@@ -74,6 +74,7 @@ class RestRoughingApi(unittest.TestCase):
         fine = roughing_study.Rest(sweep_settings=dict(step_up_scallop=0.1, step_up_minimum=0.5))
         self.assertEqual(fine.label, "step-up + rest S3 Ø4 (step_up_minimum 0.5, step_up_scallop 0.1)")
         self.assertEqual(roughing_study.Rest().label, "step-up + rest S3 Ø4")
+        self.assertEqual(roughing_study.Rest(sweep_settings=dict(push_out=None)).label, "step-up + rest S3 Ø4")
         for keyword in ("tool", "stepover"):
             with self.subTest(keyword=keyword), self.assertRaisesRegex(
                     ValueError, "rest roughing: %s is not a sweep setting a rest may set: use .*mesh_deflection" % keyword):
@@ -89,6 +90,10 @@ class RestRoughingApi(unittest.TestCase):
         self.assertGreaterEqual(closest(allowance=1.0), 0.99)
         with self.assertRaisesRegex(ValueError, "mesh deflection = 0.001 is outside \\[0.005, 1\\]"):
             closest(mesh_deflection=0.001)
+        odd = roughing_study.Rest(sweep_settings=dict(mesh_deflection="fine"))  # the sweep names it, not the label
+        self.assertEqual(odd.label, "step-up + rest S3 Ø4 (mesh_deflection fine)")
+        with self.assertRaisesRegex(TypeError, r"SweepSettings.mesh_deflection cannot be 'fine' \(str\): give a float"):
+            closest(mesh_deflection="fine")
 
     def test_bad_inputs_are_named(self):
         with self.assertRaisesRegex(ValueError, "rest spacing 0.1 mm is outside \\[0.4"):

@@ -44,7 +44,7 @@ class Rest:
         self.tool = tool if tool is not None else roughing.cutter("torus", diameter=4.0, corner_radius=0.5,
                                                                   flute_length=15.0, stick_out=30.0)
         self.strategy, self.step, self.spacing = strategy, step, spacing
-        self.sweep_settings = dict(sweep_settings or {})
+        self.sweep_settings = {k: v for k, v in dict(sweep_settings or {}).items() if v is not None}  # None: default
         unknown = sorted(set(self.sweep_settings) - set(REST_SWEEP_KEYWORDS))
         if unknown:
             raise ValueError("rest roughing: %s is not a sweep setting a rest may set: use %s"
@@ -52,7 +52,8 @@ class Rest:
 
     @property
     def label(self):
-        settings = ", ".join("%s %g" % item for item in sorted(self.sweep_settings.items()))
+        settings = ", ".join("%s %s" % (k, "%g" % v if isinstance(v, (int, float)) else v)
+                             for k, v in sorted(self.sweep_settings.items()))
         return "step-up + rest %s Ø%g%s" % (self.strategy, self.tool.diameter, " (%s)" % settings if settings else "")
 
 
