@@ -83,7 +83,7 @@ def sweep_regions(name, part_brep, stock_brep, solids, tool=None, partition_sett
     for k, solid in enumerate(solids):
         share = (lambda done, k=k: progress((k + done) / len(solids))) if progress else None
         partition = roughing.partition(solid, part_brep, name, progress=share, **settings)
-        keywords = dict(dict(step_up_minimum=None if step_up else 0.0), **(sweep_settings or {}))
+        keywords = {"step_up_minimum": None if step_up else 0.0, **(sweep_settings or {})}
         swept.append(roughing.sweep(partition, solid, part_brep, stock_brep, tool=tool, rest=rest, **keywords))
     return swept
 
