@@ -79,6 +79,9 @@ class RestRoughingApi(unittest.TestCase):
             with self.subTest(keyword=keyword), self.assertRaisesRegex(
                     ValueError, "rest roughing: %s is not a sweep setting a rest may set: use .*mesh_deflection" % keyword):
                 roughing_study.Rest(sweep_settings={keyword: 1.0})
+        for wrong in ([1, 2], "fine", 0):
+            with self.subTest(wrong=wrong), self.assertRaisesRegex(TypeError, "sweep_settings must be a dict"):
+                roughing_study.Rest(sweep_settings=wrong)
         small, rest = roughing.cutter(**SMALL), self.left.rest
 
         def closest(**settings):

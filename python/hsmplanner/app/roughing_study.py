@@ -44,7 +44,10 @@ class Rest:
         self.tool = tool if tool is not None else roughing.cutter("torus", diameter=4.0, corner_radius=0.5,
                                                                   flute_length=15.0, stick_out=30.0)
         self.strategy, self.step, self.spacing = strategy, step, spacing
-        self.sweep_settings = {k: v for k, v in dict(sweep_settings or {}).items() if v is not None}  # None: default
+        if sweep_settings is not None and not isinstance(sweep_settings, dict):
+            raise TypeError("rest roughing: sweep_settings must be a dict of roughing.sweep's keywords, not %r"
+                            % (sweep_settings,))
+        self.sweep_settings = {k: v for k, v in (sweep_settings or {}).items() if v is not None}  # None: default
         unknown = sorted(set(self.sweep_settings) - set(REST_SWEEP_KEYWORDS))
         if unknown:
             raise ValueError("rest roughing: %s is not a sweep setting a rest may set: use %s"
