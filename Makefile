@@ -1,14 +1,37 @@
 # HSM Planner. Two commands matter (README): `make demo` runs the main job, `make test` runs every test.
 # Each target installs the Debian packages it misses, rebuilds what is stale and links the workbench.
-# HSM Planner is built for Debian 13 (FreeCAD 1.0): on an older Debian every target runs in a Debian 13 root
-# that scripts/debian13.sh makes and keeps (the repository and ../shared seen at the same paths).
-ifeq ($(shell scripts/debian13.sh needed),yes)
+#
+# Two FreeCADs from one checkout: FREECAD=1.1 (the default; Debian forky: Qt 6, Python 3.14, OCCT 7.9) and
+# FREECAD=1.0 (Debian 13: Qt 5, Python 3.13, OCCT 7.8). Each target runs where that FreeCAD is: natively on that
+# Debian, else in a root of it that scripts/freecad-env.sh makes and keeps (the repository and ../shared seen
+# at the same paths). `make test` without FREECAD tests both, one after the other.
+FREECAD_VERSIONS := 1.0 1.1
+ifeq ($(origin FREECAD),undefined)
+FREECAD := 1.1
+FREECAD_CHOSEN :=
+else
+FREECAD_CHOSEN := yes
+endif
+ifeq ($(filter $(FREECAD),$(FREECAD_VERSIONS)),)
+$(error FREECAD=$(FREECAD) is not supported: use FREECAD=1.1 (Debian forky) or FREECAD=1.0 (Debian 13))
+endif
+
+ifeq ($(FREECAD_CHOSEN)$(filter test,$(MAKECMDGOALS)),test)
+# `make test`: every level on each FreeCAD (the other goals given with it on the default one)
+.PHONY: test $(filter-out test,$(MAKECMDGOALS))
+test:
+	@scripts/test-versions.sh $(FREECAD_VERSIONS)
+$(filter-out test,$(MAKECMDGOALS)):
+	@$(MAKE) --no-print-directory FREECAD=$(FREECAD) $@
+else ifeq ($(shell scripts/freecad-env.sh $(FREECAD) needed),yes)
 .DEFAULT_GOAL := all
 .PHONY: all $(MAKECMDGOALS)
 all $(MAKECMDGOALS):
-	@scripts/debian13.sh run $(MAKE) --no-print-directory $@ $(MAKEOVERRIDES)
+	@scripts/freecad-env.sh $(FREECAD) run $(MAKE) --no-print-directory $@ $(MAKEOVERRIDES) FREECAD=$(FREECAD)
 else
-BUILD_DIR ?= build
+BUILD_DIR ?= build/freecad-$(FREECAD)
+# the tests and examples find hsm-feedsim and the other programs of this build there
+export HSM_BUILD_DIR := $(abspath $(BUILD_DIR))
 OUT ?= out
 JOBS ?= $(shell nproc)
 FREECADCMD ?= freecadcmd
@@ -17,7 +40,7 @@ PYTHON := /usr/bin/python3
 CMAKE := /usr/bin/cmake
 CTEST := /usr/bin/ctest
 
-ASAN_DIR ?= build-asan
+ASAN_DIR ?= build/asan-freecad-$(FREECAD)
 FUZZ_SECONDS ?= 60
 # `make deb`: a build of its own (installed layout, Debian's hardening flags), the package written here
 PACKAGE_DIR ?= $(BUILD_DIR)/package
@@ -72,7 +95,7 @@ test-asan: $(ASAN_DIR)/CMakeCache.txt
 # table of times and writes it to $(BUILD_DIR)/oracle/ (oracle.md, oracle.csv). Fails when LinuxCNC or
 # hsm-feedsim failed, or when a program's |error| exceeds 2 %.
 test-oracle: build
-	$(PYTHON) tests/oracle/run_oracle.py --out $(BUILD_DIR)/oracle --max-error 2
+	$(PYTHON) tests/oracle/run_oracle.py --out $(BUILD_DIR)/oracle --feedsim $(BUILD_DIR)/bin/hsm-feedsim --max-error 2
 
 # Each harness for FUZZ_SECONDS (default 60) on its corpus; new inputs are added to tests/fuzz/corpus/.
 fuzz: $(ASAN_DIR)/CMakeCache.txt
@@ -130,6 +153,6 @@ test-package: deb
 	tests/package/run.sh $$(ls freecad-hsmplanner_*.deb) $(BUILD_DIR)/package-test
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core*.so freecad-hsmplanner_*.deb
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core.cpython-*.so freecad-hsmplanner_*.deb
 
 endif

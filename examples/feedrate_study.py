@@ -10,7 +10,6 @@ _histograms.png/_map.png, and feedrate_comparison.csv/.md (simulated time agains
 import csv
 import json
 import os
-import shutil
 import subprocess
 
 import FreeCAD
@@ -18,14 +17,12 @@ import FreeCAD
 from hsmplanner import feedsim
 from hsmplanner.app import feedrate, master_feature_object, probe_paths
 from hsmplanner.app.compat import post_module
-from hsmplanner.scripting import output_dir, run_script
+from hsmplanner.scripting import build_program, output_dir, run_script
 
 FEED_MM_MIN = 4000.0
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 # the clone's build, or the command on the PATH (the Debian package's, with this example in /usr/share/doc)
-FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
-if not os.path.exists(FEEDSIM):
-    FEEDSIM = shutil.which("hsm-feedsim") or FEEDSIM
+FEEDSIM = build_program(REPO, "hsm-feedsim")
 
 
 def main(argv):

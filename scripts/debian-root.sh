@@ -1,39 +1,50 @@
-# Debian 13 (trixie) root folders made by debootstrap from Debian's archive, and commands run inside them;
-# sourced by scripts/debian13.sh (the build's root) and tests/package/run.sh (the package test's clean root).
+# Debian root folders made by debootstrap from Debian's archive (trixie for FreeCAD 1.0, forky for 1.1), and
+# commands run inside them; sourced by scripts/freecad-env.sh (the build's roots) and tests/package/run.sh (the
+# package test's clean roots).
 #
-#   debian_root_make ROOT [PACKAGE,...]          debootstrap (minbase) into ROOT unless it is complete
+#   debian_root_make ROOT SUITE [PACKAGE,...]    debootstrap (minbase) of SUITE into ROOT unless it is complete
 #   debian_root_run ROOT DIR [BIND...] -- CMD... runs CMD as root inside ROOT, in DIR, each BIND folder seen at
 #                                                the same path, in a private mount namespace (the binds vanish
 #                                                with it); the environment is HSM_*, CI and what a login sets
 debian_root_mirror=${HSM_DEBIAN_MIRROR:-http://deb.debian.org/debian}
-debian_root_suite=trixie
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"
   elif command -v sudo >/dev/null; then sudo "$@"
-  else echo "error: a Debian 13 root needs root (debootstrap, chroot): run as root or install sudo" >&2; exit 1
+  else echo "error: a Debian root needs root (debootstrap, chroot): run as root or install sudo" >&2; exit 1
   fi
 }
 
+# debootstrap on this machine (apt-get holds a lock: install it before anything else may run apt-get beside it)
+debian_root_tools() {
+  command -v debootstrap >/dev/null && return 0
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap
+}
+
 debian_root_make() {
-  local root=$1 include=${2:+,$2}
+  local root=$1 suite=$2 include=${3:+,$3}
   [ -f "$root/.hsm-complete" ] && return 0
-  echo "Making a Debian 13 ($debian_root_suite) root in $root (this machine is Debian $(cat /etc/debian_version))"
-  if ! command -v debootstrap >/dev/null; then
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap
-  fi
+  echo "Making a Debian $suite root in $root (this machine is Debian $(cat /etc/debian_version))"
+  debian_root_tools
+  # An older debootstrap has no script for a newer suite (Debian 12's knows no forky): sid's fits every one.
+  local script=/usr/share/debootstrap/scripts/$suite
+  [ -e "$script" ] || script=/usr/share/debootstrap/scripts/sid
   local partial="$root.partial" log
   log=$(mktemp /tmp/hsm-debootstrap.XXXXXX.log)
   as_root rm -rf "$partial"
   as_root mkdir -p "$(dirname "$root")"
-  as_root debootstrap --variant=minbase --include="ca-certificates$include" "$debian_root_suite" "$partial" \
-    "$debian_root_mirror" > "$log" 2>&1 || { tail -30 "$log" >&2; exit 1; }
+  as_root debootstrap --variant=minbase --include="ca-certificates$include" "$suite" "$partial" \
+    "$debian_root_mirror" "$script" > "$log" 2>&1 || { tail -30 "$log" >&2; exit 1; }
   rm -f "$log"
-  as_root tee "$partial/etc/apt/sources.list" > /dev/null <<EOF
-deb $debian_root_mirror $debian_root_suite main
-deb $debian_root_mirror $debian_root_suite-updates main
-EOF
+  if [ "$suite" = trixie ]; then
+    printf 'deb %s %s main\ndeb %s %s-updates main\n' "$debian_root_mirror" "$suite" "$debian_root_mirror" "$suite"
+  else
+    printf 'deb %s %s main\n' "$debian_root_mirror" "$suite"
+  fi | as_root tee "$partial/etc/apt/sources.list" > /dev/null
+  # The archive seen here may be a snapshot whose Release files are past their Valid-Until (a testing suite's
+  # is a week): apt would refuse every update of such a root.
+  echo 'Acquire::Check-Valid-Until "false";' | as_root tee "$partial/etc/apt/apt.conf.d/99hsm-snapshot" > /dev/null
   # Package scripts must not start services on the host's behalf.
   printf '#!/bin/sh\nexit 101\n' | as_root tee "$partial/usr/sbin/policy-rc.d" > /dev/null
   as_root chmod 755 "$partial/usr/sbin/policy-rc.d"

@@ -7,6 +7,7 @@ gives ['script.py', args…]) and exits on SystemExit without flushing Python's 
 printed last is lost unless flushed first.
 """
 import os
+import shutil
 import sys
 import traceback
 
@@ -32,6 +33,25 @@ def output_dir(argv, default="out"):
     folder = os.path.abspath(args[0] if args else default)
     os.makedirs(folder, exist_ok=True)
     return folder
+
+
+def build_program(repo, name):
+    """A program of the clone `repo`'s build for the FreeCAD running this (`make` names that build in
+    HSM_BUILD_DIR; else build/freecad-MAJOR.MINOR of the running FreeCAD), or the installed one on the PATH (the
+    Debian package's), or the build's path if neither exists (for the error that names it)."""
+    build = os.environ.get("HSM_BUILD_DIR") or os.path.join(repo, "build", "freecad-%s" % _freecad_release())
+    program = os.path.join(build, "bin", name)
+    if os.path.exists(program):
+        return program
+    return shutil.which(name) or program
+
+
+def _freecad_release():
+    try:
+        import FreeCAD
+    except ImportError:
+        return "1.1"
+    return "%s.%s" % tuple(FreeCAD.Version()[:2])
 
 
 def run_script(main):

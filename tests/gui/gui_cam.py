@@ -11,7 +11,7 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui as Gui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_harness import OUT, GuiRun  # noqa: E402

@@ -78,7 +78,7 @@ def analysis_draws_the_map_and_fills_the_panel(run):
     shown = table.viewport().height()
     rows = sum(table.rowHeight(i) for i in range(table.rowCount()))
     run.check("every summary row is shown without scrolling", shown >= rows, "%d px shown of %d" % (shown, rows))
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     metrics, cut = table.fontMetrics(), []
     for r in range(table.rowCount()):

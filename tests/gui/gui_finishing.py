@@ -111,7 +111,7 @@ def saved_documents_hold_no_absolute_icon_path(run):
 def escape_cancels_a_long_finishing_and_keeps_the_document(run):
     """A cusp of 0.001 mm takes seconds: its progress dialog shows, Esc stops it, the operation is marked
     cancelled, the document and its objects stay, and the next recompute works again."""
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     op = state["planes"]
     seen = {}

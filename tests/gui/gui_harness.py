@@ -16,7 +16,7 @@ import time
 import traceback
 
 import FreeCADGui as Gui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 OUT = os.environ.get("HSM_GUI_TEST_OUT", os.path.join(os.getcwd(), "gui-test"))
 
@@ -296,7 +296,7 @@ class GuiRun:
     def press_escape_on_progress(self, seen, image_name):
         """Called from a timer while a computation runs: records the visible progress dialogs in `seen`, saves the
         first as `image_name`.png and presses Esc where the user's key would go (the dialog's focus, Cancel)."""
-        from PySide2 import QtGui
+        from PySide import QtGui
         dialogs = [w for w in QtWidgets.QApplication.topLevelWidgets()
                    if isinstance(w, QtWidgets.QProgressDialog) and w.isVisible()]
         seen["dialogs"] = [(d.labelText(), d.value()) for d in dialogs]

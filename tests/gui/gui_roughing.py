@@ -10,7 +10,7 @@ import tempfile
 import FreeCAD
 import FreeCADGui as Gui
 import numpy as np
-from PySide2 import QtCore
+from PySide import QtCore
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_harness import OUT, GuiRun, scene_nodes, show_only  # noqa: E402
@@ -51,7 +51,7 @@ def palette_of(name):
 
 def hue_counts(name, bands):
     """Pixels of the 3D view (saved as an image, white background) in each hue band, of saturated colours."""
-    from PySide2 import QtGui
+    from PySide import QtGui
 
     path = os.path.join(OUT, name + ".png")
     Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
@@ -187,7 +187,7 @@ def bad_input_in_the_panel_and_ok(run):
 
 @run.step
 def impeller_cancel_keeps_the_previous_result(run):
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     document = FreeCAD.ActiveDocument
     Gui.runCommand("HSM_Impeller")
@@ -312,7 +312,7 @@ def a_jobs_stock_is_offered_first(run):
 def volume_roughing_operation_in_the_job(run):
     """The Volume roughing command in the Job of the last step: its panel takes the Roughing volume (S3 on the
     slot) and the trunnion machine; OK computes a tilted path clear of the part."""
-    from PySide2 import QtWidgets
+    from PySide import QtWidgets
 
     from hsmplanner.app import roughing_op
 
@@ -385,7 +385,7 @@ def legend_texts(node):
 def check_stock_map_legend(legend, thickness):
     """The 3D view's legend of the stock map: numbers in mm up to the map's scale, and, in the view as saved,
     a colour bar in the map's colours with white numbers beside it (not an empty dark box)."""
-    from PySide2 import QtGui
+    from PySide import QtGui
 
     from hsmplanner.gui.feedmap import LEGEND_X
     from hsmplanner.gui.stock_map_view import LEGEND_SPAN, thickness_colors

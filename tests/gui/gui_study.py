@@ -47,7 +47,7 @@ def table_rows(p):
 
 def scroll_to(widget):
     """The task view scrolls: bring `widget` into the screenshot."""
-    from PySide2 import QtWidgets
+    from PySide import QtWidgets
 
     parent = widget.parent()
     while parent is not None and not isinstance(parent, QtWidgets.QScrollArea):
@@ -127,7 +127,7 @@ def bad_ranges_are_said_in_the_panel(run):
 def escape_keeps_the_finished_rows(run):
     """Four plane angles in this process: Esc in the progress dialog after the first stops the study; the
     finished row stays in the table, the others say cancelled."""
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     p = panel()
     fill(p, planes="0,45,90,135", workers=1)
@@ -193,7 +193,7 @@ def a_small_grid_on_two_workers(run):
 
 @run.step
 def selected_rows_feed_maps(run):
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     p = panel()
     table = p.form.table
@@ -234,7 +234,7 @@ def selected_rows_feed_maps(run):
 
 @run.step
 def apply_adds_operations_that_compute(run):
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     p = panel()
     job = state["job"]
@@ -276,7 +276,7 @@ def apply_adds_operations_that_compute(run):
 
 @run.step
 def apply_is_one_undo_step_and_a_deleted_part_is_said(run):
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     from hsmplanner.app import strategy_study
 
@@ -310,7 +310,7 @@ def apply_is_one_undo_step_and_a_deleted_part_is_said(run):
 def closing_mid_run_stops_the_study_and_removes_the_map_and_the_cache(run):
     import multiprocessing
 
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     p = panel()
     cache = p.cache_dir

@@ -4,7 +4,7 @@ import sys
 
 import FreeCAD
 import FreeCADGui as Gui
-from PySide2 import QtWidgets
+from PySide import QtWidgets
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_harness import GuiRun  # noqa: E402

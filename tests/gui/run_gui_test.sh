@@ -12,12 +12,14 @@ failed=0
 # HSM_GUI_TESTS="feedrate direction" runs only those macros (gui_feedrate.py, gui_direction.py).
 for macro in "$here"/gui_*.py; do
   name=$(basename "$macro" .py)
-  [ "$name" = gui_harness ] && continue
+  case "$name" in gui_harness|gui_launch) continue ;; esac
   if [ -n "${HSM_GUI_TESTS:-}" ] && [[ " $HSM_GUI_TESTS " != *" ${name#gui_} "* ]]; then continue; fi
   out="$HSM_GUI_TEST_OUT/$name"
   mkdir -p "$out"
-  # The macro ends FreeCAD itself; `timeout` is the last resort if something blocks the event loop.
-  HSM_GUI_TEST_OUT=$out timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$macro" > "$out/freecad.log" 2>&1
+  # The macro ends FreeCAD itself (gui_launch.py ends it at once if the macro raises while loading); `timeout` is
+  # the last resort if something blocks the event loop.
+  HSM_GUI_TEST_OUT=$out HSM_GUI_MACRO=$macro timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" \
+    freecad "$here/gui_launch.py" > "$out/freecad.log" 2>&1
   status=$?
   result="$out/result.json"
   echo "--- $name"

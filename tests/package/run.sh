@@ -36,7 +36,7 @@ run_in_overlay() {
   local test=$run/root/tmp/hsm-package-test
   mkdir -p "$test"
   cp "$deb" "$here"/{inside.sh,as_user.sh,installed_study.py,gui_package.py} \
-    "$here"/../gui/{run_gui_test.sh,user.cfg,gui_harness.py,gui_workbench.py} "$test/"
+    "$here"/../gui/{run_gui_test.sh,user.cfg,gui_harness.py,gui_launch.py,gui_workbench.py} "$test/"
   chmod -R a+rX "$test"
   debian_root_run "$run/root" /tmp/hsm-package-test -- ./inside.sh
 }

@@ -127,9 +127,12 @@ def status_error(obj):
 
 
 def default_controller_finishing():
-    """The user switches a finishing operation to FreeCAD's default controller (a flat end mill at F0)."""
+    """The user switches a finishing operation to FreeCAD's default controller (a flat end mill at F0; its label
+    is "TC: Default Tool" on 1.0, "TC: 5mm Endmill" on 1.1)."""
+    from hsmplanner.app.compat import tool_shape_id
     op = new_planes()
-    op.ToolController = [o for o in op.Document.Objects if o.Label == "TC: Default Tool"][0]
+    op.ToolController = [o for o in op.Document.Objects if hasattr(o, "ToolNumber")
+                         and tool_shape_id(o.Tool) == "endmill"][0]
     return status_error(op)
 
 

@@ -13,9 +13,10 @@ import hsmplanner
 from hsmplanner import feedsim
 from hsmplanner.app import feedrate, feedrate_object, master_feature_object, probe_paths
 from hsmplanner.app.compat import post_module
+from hsmplanner.scripting import build_program
 from helpers import REPO, run, temporary_directory
 
-FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
+FEEDSIM = build_program(REPO, "hsm-feedsim")
 PROGRAM = "G21 G90\nG0 X0 Y0 Z5\nG1 Z0 F3000\nG1 X40\nG2 X40 Y20 I0 J10\nG1 X0\nG3 X0 Y40 I0 J10 F6000\nG0 Z5\n"
 
 

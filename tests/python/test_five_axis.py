@@ -12,10 +12,11 @@ from hsmplanner import _core, feedsim
 from hsmplanner.app import finishing, master_feature_object
 from hsmplanner.app.compat import cam_module, create_job
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
+from hsmplanner.scripting import build_program
 from helpers import REPO, check_golden, run, temporary_directory
 
 
-FEEDSIM = os.path.join(REPO, "build", "bin", "hsm-feedsim")
+FEEDSIM = build_program(REPO, "hsm-feedsim")
 TRUNNION = "mikron-ucp710-ac-840d"
 # TRAORI: the tip goes 50 mm out, C turns a full turn about it, then the tip moves while A tilts 20°.
 PROGRAM = "TRAORI\nG1 X50 Y0 Z0 F6000\nG1 C360 F100000\nG1 X0 Y20 A20 C400 F3000\n"

@@ -5,6 +5,7 @@ FreeCAD 1.0 renamed the workbench to CAM (CAMWorkbench, commands CAM_*, preferen
 Python package `Path`. Everything else in HSM Planner asks this module instead of importing those names.
 """
 import importlib
+import os
 
 import FreeCAD
 
@@ -78,16 +79,76 @@ def post_module(name):
     raise ImportError("FreeCAD has no post-processor named %r: check the name (e.g. 'linuxcnc', 'grbl')" % name)
 
 
-def create_tool_bit(name, shape_file):
-    """A ToolBit of `shape_file` in the active document, made inside the caller's transaction. Once CAM's GUI is
-    loaded, the module's Factory is its GUI factory, which opens and commits a transaction of its own ("Create
-    ToolBit"): that ends the caller's, and what the caller adds after it lands in no undo step. The App factory
-    makes the ToolBit here; in the GUI it gets the view provider the GUI factory would attach."""
+def has_tool_assets():
+    """True where FreeCAD's tool bits come from its tool library's assets (1.1: ToolBit.from_dict, shapes by
+    id such as 'bullnose'); False where a ToolBit is made from a shape file (0.20, 1.0)."""
+    try:
+        from Path.Tool.toolbit import ToolBit
+    except ImportError:
+        return False
+    return hasattr(ToolBit, "from_dict")
+
+
+def tool_shape_id(tool):
+    """The shape of a FreeCAD tool in lower case ('ballend', 'bullnose', 'endmill'…), whichever FreeCAD made it:
+    1.1's ShapeType ('Bullnose'), 1.0's and 0.20's shape file (…/bullnose.fcstd), a legacy tool's ToolType."""
+    for attribute in ("ShapeType", "ShapeID", "ShapeName", "BitShape"):
+        value = str(getattr(tool, attribute, "") or "")
+        if value and value != "Custom":
+            return os.path.splitext(os.path.basename(value))[0].lower().replace(" ", "")
+    return str(getattr(tool, "ToolType", "") or "").lower()
+
+
+def tool_corner_radius(tool):
+    """The corner radius of a bullnose tool, mm: 1.1's CornerRadius, or 1.0's Diameter / 2 − FlatRadius."""
+    if hasattr(tool, "CornerRadius"):
+        return float(tool.CornerRadius)
+    return 0.5 * float(tool.Diameter) - float(getattr(tool, "FlatRadius", 0.0))
+
+
+def create_tool_bit(name, label, shape_id, diameter, corner_radius=None):
+    """A ToolBit of FreeCAD's tool shape `shape_id` ('ballend', 'bullnose') in the active document, made inside
+    the caller's transaction: on 1.1 from its tool library (the shape asset), on 1.0 from the shape file.
+
+    Once CAM's GUI is loaded, 1.0's ToolBit module's Factory is its GUI factory, which opens and commits a
+    transaction of its own ("Create ToolBit"): that ends the caller's, and what the caller adds after it lands
+    in no undo step. The App factory makes the ToolBit here; in the GUI it gets the view provider the GUI
+    factory would attach (1.1's attach_to_doc attaches its own)."""
+    if has_tool_assets():
+        from Path.Tool.toolbit import ToolBit
+
+        parameters = {"Diameter": "%g mm" % diameter}
+        if corner_radius is not None:
+            parameters["CornerRadius"] = "%g mm" % corner_radius
+        bit = ToolBit.from_dict({"shape": shape_id, "name": label, "parameter": parameters})
+        tool = bit.attach_to_doc(FreeCAD.ActiveDocument, label=name)
+        tool.Label = label
+        return tool
     module = cam_module("tool_bit")
-    bit = module.ToolBitFactory().Create(name, shape_file)
-    if FreeCAD.GuiUp and getattr(bit, "ViewObject", None) is not None:
-        cam_module("icon_view_provider").Attach(bit.ViewObject, name)
-    return bit
+    shape_file = module.findToolShape(shape_id + ".fcstd")
+    if not shape_file:
+        raise RuntimeError("FreeCAD's %s.fcstd tool shape is missing from this installation" % shape_id)
+    tool = module.ToolBitFactory().Create(name, shape_file)
+    if FreeCAD.GuiUp and getattr(tool, "ViewObject", None) is not None:
+        cam_module("icon_view_provider").Attach(tool.ViewObject, name)
+    tool.Diameter = diameter
+    if corner_radius is not None:
+        tool.FlatRadius = 0.5 * diameter - corner_radius
+    tool.Label = label
+    return tool
+
+
+def set_shape(obj, shape):
+    """obj.Shape = shape. FreeCAD 1.1 names the new shape's elements after the old one's, and on an object
+    restored from a FreeCAD 0.20 document that naming fails ("Unknown C++ exception"): there the old shape is
+    dropped first, as an object with no shape yet takes any."""
+    try:
+        obj.Shape = shape
+    except getattr(FreeCAD.Base, "FreeCADError", RuntimeError):
+        import Part
+
+        obj.Shape = Part.Shape()
+        obj.Shape = shape
 
 
 def create_job(models, name="Job"):

@@ -10,7 +10,7 @@ import hsmplanner
 from hsmplanner.toolpaths import face_number
 
 from .job_controllers import usable_or_added
-from .compat import cam_menu_name, cam_module
+from .compat import cam_menu_name, cam_module, create_tool_bit, tool_shape_id
 from .guide_curve_net_object import net_curve_edges
 
 AREA_CHOICES = ["Elementary areas of the net", "Between the boundaries"]
@@ -46,8 +46,8 @@ def net_part(net):
 
 def is_ball_end(tool):
     """True for a ball end mill: a ToolBit on FreeCAD's ballend shape, or a legacy tool of type BallEndMill."""
-    shape = str(getattr(tool, "ShapeName", "") or getattr(tool, "BitShape", "") or "")
-    return "ballend" in shape.lower().replace(" ", "") or getattr(tool, "ToolType", "") == "BallEndMill"
+    shape = tool_shape_id(tool)
+    return "ballend" in shape
 
 
 def job_ball_end(document):
@@ -67,7 +67,7 @@ def check_tool(controller, tool):
     checks assume a ball), or a cutting feed of 0 (FreeCAD's default controller: the path would cut at F0)."""
     label = getattr(controller, "Label", "the tool controller")
     if not is_ball_end(tool):
-        kind = getattr(tool, "ShapeName", None) or getattr(tool, "ToolType", None) or type(tool).__name__
+        kind = tool_shape_id(tool) or type(tool).__name__
         raise ValueError("%s holds a %s tool (%s, Ø%s): ball-end finishing needs a ball end mill; add one "
                          "(%s ▸ ToolBit library, shape ballend) and choose its tool controller"
                          % (label, kind, getattr(tool, "Label", "?"), getattr(tool, "Diameter", "?"),
@@ -130,14 +130,8 @@ def ball_end_controller(job, diameter=4.0, feed_mm_min=4000.0, spindle_rpm=18000
             job.Document.removeObject(old.Name)
             if tool is not None and hasattr(tool, "Name") and job.Document.getObject(tool.Name):
                 job.Document.removeObject(tool.Name)
-    tool_bit = cam_module("tool_bit")
     tool_controller = cam_module("tool_controller")
-    shape = tool_bit.findToolShape("ballend.fcstd")
-    if not shape:
-        raise RuntimeError("FreeCAD's ballend.fcstd tool shape is missing from this installation")
-    bit = tool_bit.Factory.Create("Ball%g" % diameter, shape)
-    bit.Diameter = diameter
-    bit.Label = "Ball end mill Ø%g mm" % diameter
+    bit = create_tool_bit("Ball%g" % diameter, "Ball end mill Ø%g mm" % diameter, "ballend", diameter)
     controller = tool_controller.Create("TC: Ball Ø%g" % diameter, bit, number)
     controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
     controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % min(feed_mm_min, 2000.0))

@@ -13,6 +13,7 @@ from .properties import add_results
 from .guide_curve_net import DEFAULT_MODE, MODES, NetParameters, build_guide_curve_net
 from .progress import freecad_progress
 from .property_limits import PropertyLimits
+from .compat import set_shape
 from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
@@ -115,7 +116,7 @@ class GuideCurveNet(PropertyLimits, NoSavedState):
             faces += shape.Faces
             face_areas += [index] * len(shape.Faces)
         obj.CurveShapes = Part.Compound(result.edges)
-        obj.Shape = Part.Compound(faces + result.edges)
+        set_shape(obj, Part.Compound(faces + result.edges))
         obj.Curves = result.labels
         obj.CurveRoles = [c.role.name for c in result.net.curves]
         obj.ComposedAreas = result.composed_area_names()

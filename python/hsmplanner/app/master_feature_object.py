@@ -6,6 +6,7 @@ bottom face and of the boundary edges are published as read-only properties for 
 import FreeCAD
 
 from .master_feature import MasterFeatureParameters, make_master_bottom_feature
+from .compat import set_shape
 from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
@@ -42,7 +43,7 @@ class MasterBottomFeature(NoSavedState):
 
     def execute(self, obj):
         feature = make_master_bottom_feature(self.parameters(obj))
-        obj.Shape = feature.shape
+        set_shape(obj, feature.shape)
         obj.BottomFace, obj.Boundary1, obj.Boundary2 = feature.bottom_face, feature.boundary_1, feature.boundary_2
 
 

@@ -23,7 +23,7 @@ def freecad_progress(text):
         yield None
         return
     import FreeCADGui
-    from PySide2 import QtCore, QtWidgets
+    from PySide import QtCore, QtWidgets
 
     dialog = QtWidgets.QProgressDialog("%s…" % text, "Cancel", 0, STEPS, FreeCADGui.getMainWindow())
     dialog.setWindowTitle("HSM Planner")

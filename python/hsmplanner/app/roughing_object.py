@@ -31,6 +31,7 @@ from .properties import HIDDEN, add_inputs, add_results
 from .feedrate import is_job
 from .progress import freecad_progress
 from .property_limits import PropertyLimits
+from .compat import set_shape
 from .proxy_state import NoSavedState
 from .roughing_parts import is_test_part, is_test_part_stock, stock_of
 
@@ -391,7 +392,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
             warnings.append(DISPLAY_FALLBACK)
         if warnings != list(obj.Warnings):
             obj.Warnings = warnings
-        obj.Shape = shape.copy() if not shape.isNull() else Part.Shape()
+        set_shape(obj, shape.copy() if not shape.isNull() else Part.Shape())
         obj.FaceColorIndex = codes
 
     def failed(self, obj):
@@ -404,7 +405,7 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         obj.SubVolumeCount, obj.SubVolumes, obj.SubVolumeSlices, obj.SubVolumeRegions = 0, [], [], []
         obj.SetupDirection, obj.SetupReach = FreeCAD.Vector(), 0.0
         obj.Warnings = []
-        obj.Shape = Part.Shape()
+        set_shape(obj, Part.Shape())
         obj.FaceColorIndex = []
 
     def onDocumentRestored(self, obj):

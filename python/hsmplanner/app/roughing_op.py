@@ -11,7 +11,7 @@ import FreeCAD
 
 from hsmplanner import feedsim, roughing
 
-from .compat import cam_module, create_tool_bit
+from .compat import cam_module, create_tool_bit, tool_corner_radius, tool_shape_id
 from .job_controllers import usable_or_added
 from .op_comments import mend_leading_comments
 from .property_limits import PropertyLimits
@@ -29,16 +29,15 @@ REST_SPACING = 0.4  # mm between the points of the stock a rest roughing reads (
 
 def cutter_of(tool):
     """The core Cutter of a FreeCAD tool (ToolBit or legacy): its kind from the shape, diameter and corner."""
-    shape = str(getattr(tool, "ShapeName", "") or getattr(tool, "BitShape", "") or "").lower()
+    shape = tool_shape_id(tool)
     diameter = float(getattr(tool, "Diameter", 0.0))
     if diameter <= 0:
         raise ValueError("the tool controller's tool has no diameter: choose a torus, flat or ball end mill")
     if "bullnose" in shape or "torus" in shape:
-        flat = float(getattr(tool, "FlatRadius", 0.0))
-        return roughing.cutter("torus", diameter=diameter, corner_radius=0.5 * diameter - flat)
+        return roughing.cutter("torus", diameter=diameter, corner_radius=tool_corner_radius(tool))
     if "ballend" in shape:
         return roughing.cutter("ball", diameter=diameter)
-    if "endmill" in shape or getattr(tool, "ToolType", "") == "EndMill":
+    if "endmill" in shape:
         return roughing.cutter("flat", diameter=diameter)
     raise ValueError("tool shape '%s' is not a roughing cutter: use a bullnose (torus), endmill or ballend ToolBit"
                      % (shape or "unknown"))
@@ -53,14 +52,9 @@ def torus_controller(job, diameter=8.0, corner_radius=1.0, feed_mm_min=2000.0, s
         for old in list(job.Tools.Group):
             job.Tools.removeObject(old)
             job.Document.removeObject(old.Name)
-    tool_bit, tool_controller = cam_module("tool_bit"), cam_module("tool_controller")
-    shape = tool_bit.findToolShape("bullnose.fcstd")
-    if not shape:
-        raise RuntimeError("FreeCAD's bullnose.fcstd tool shape is missing from this installation")
-    bit = create_tool_bit("Torus%g" % diameter, shape)
-    bit.Diameter = diameter
-    bit.FlatRadius = 0.5 * diameter - corner_radius
-    bit.Label = "Torus Ø%g r%g" % (diameter, corner_radius)
+    tool_controller = cam_module("tool_controller")
+    bit = create_tool_bit("Torus%g" % diameter, "Torus Ø%g r%g" % (diameter, corner_radius), "bullnose", diameter,
+                          corner_radius)
     controller = tool_controller.Create("TC: Torus Ø%g r%g" % (diameter, corner_radius), bit, number)
     controller.HorizFeed = FreeCAD.Units.Quantity("%g mm/min" % feed_mm_min)
     controller.VertFeed = FreeCAD.Units.Quantity("%g mm/min" % (0.5 * feed_mm_min))

@@ -16,6 +16,7 @@ from hsmplanner._core import roughing as core
 
 from hsmplanner.geometry import shape_from_brep
 from .property_limits import PropertyLimits
+from .compat import set_shape
 from .proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
@@ -103,7 +104,7 @@ class _RoughingTestPart(PropertyLimits, NoSavedState):
         _, part, stock = self.built
         obj.StockShape = stock.copy()
         self.set_outputs(obj, dict(parameters))
-        obj.Shape = part.copy()
+        set_shape(obj, part.copy())
 
     def set_outputs(self, obj, parameters):
         pass
@@ -160,7 +161,7 @@ class TestPartStock(NoSavedState):
             raise ValueError("%s has no stock yet: fix its parameters and recompute" % part.Label)
         if obj.Placement != part.Placement:
             obj.Placement = part.Placement
-        obj.Shape = stock.copy()
+        set_shape(obj, stock.copy())
 
 
 def is_test_part(obj):

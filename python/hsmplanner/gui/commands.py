@@ -161,7 +161,7 @@ class _CommandRoughingTestPart:
         return part, stock
 
     def Activated(self):
-        from PySide2 import QtCore, QtWidgets
+        from PySide import QtCore, QtWidgets
 
         from hsmplanner.gui.view_providers import ViewProviderTestPartStock
 

@@ -1,7 +1,7 @@
 """Task panel of a machining direction analysis: the face, tool, scallop, feed (or feed range), machine; the
 three choices (beams, least predicted time, fastest simulated) with their plots; and a button that sets the
 angle of a Parallel plane finishing operation."""
-from PySide2 import QtWidgets
+from PySide import QtWidgets
 
 from hsmplanner.app import direction_object
 from hsmplanner.app.direction_object import CHOICES, FEED_FROM

@@ -1,5 +1,5 @@
 """Task panel of a feed-rate analysis: machine, summary table, histograms, report export."""
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 from hsmplanner import feedsim
 from hsmplanner.plots.feedrate import FEED_CLASS_LABELS, draw_feed_histograms

@@ -5,7 +5,7 @@ import os
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtWidgets
+from PySide import QtWidgets
 
 from hsmplanner import feedsim
 from hsmplanner.app import finishing, finishing_ops, roughing_commands, roughing_op

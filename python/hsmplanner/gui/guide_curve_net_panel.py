@@ -5,7 +5,7 @@ document object is written, and the face split into its areas, only on OK.
 """
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 from hsmplanner.app.guide_curve_net import FOUR_STEP, MODES, NetParameters, build_guide_curve_net
 from hsmplanner.app.guide_curve_net_object import LIMITS, linked_shape

@@ -8,7 +8,7 @@ result (computing first if the form changed), Cancel restores the object as it w
 (or removes the object the command had just added).
 """
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 from hsmplanner.app import roughing_object
 from hsmplanner.app.roughing_object import (DISPLAYS, LIMITS, STRATEGIES, STRATEGY_NONE, SUB_VOLUMES, has_solid,

@@ -3,7 +3,7 @@ table and the stock each leaves side by side, and apply the chosen one as a Volu
 Job (hsmplanner.app.roughing_study does the work; this module only shows it)."""
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 import hsmplanner
 from hsmplanner.app import roughing_object, roughing_study

@@ -10,7 +10,7 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 from hsmplanner import feedsim, study
 from hsmplanner.app import roughing_object, strategy_study

@@ -3,7 +3,7 @@ closing that ends the edit, and the frame of an analysis panel."""
 import FreeCADGui
 from matplotlib.backends.backend_qtagg import FigureCanvasQTAgg
 from matplotlib.figure import Figure
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtWidgets
 
 
 def selected_faces():

@@ -13,6 +13,7 @@ within their travel. G64 P blends within the tolerance; feeds in mm/min.
 import argparse
 import shlex
 
+from hsmplanner.app.posts.processor import processor_class
 from hsmplanner.app.posts.writer import (ROTARY, ProgramWriter, add_common_arguments, check_rotary_axes,
                                          operations_machine, post_machine, rotary_axes_of)
 
@@ -68,3 +69,10 @@ def export(objectslist, filename, argstring):
     writer.block("M5")
     writer.block("M2")
     return writer.text(filename)
+
+
+# FreeCAD 1.1's CAM takes this class (named after the linked file, hsm_linuxcnc5x_post.py) for its Post Process
+# command and a Job's post-processor list; on 1.0 it wraps export() above.
+_processor = processor_class("Hsm_Linuxcnc5X", export, TOOLTIP, parser)
+if _processor is not None:
+    Hsm_Linuxcnc5X = _processor

@@ -17,6 +17,7 @@ controller interpolates the tool axis on the great circle in the workpiece frame
 import argparse
 import shlex
 
+from hsmplanner.app.posts.processor import processor_class
 from hsmplanner.app.posts.writer import (ProgramWriter, add_common_arguments, check_rotary_axes, post_machine,
                                          rotary_axes_of)
 
@@ -58,3 +59,10 @@ def export(objectslist, filename, argstring):
     writer.block("M5")
     writer.block("M30")
     return writer.text(filename)
+
+
+# FreeCAD 1.1's CAM takes this class (named after the linked file, hsm_siemens840d_post.py) for its Post Process
+# command and a Job's post-processor list; on 1.0 it wraps export() above.
+_processor = processor_class("Hsm_Siemens840D", export, TOOLTIP, parser)
+if _processor is not None:
+    Hsm_Siemens840D = _processor

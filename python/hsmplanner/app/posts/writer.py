@@ -197,8 +197,22 @@ class ProgramWriter:
             self.block(" ".join(words))
 
     def objects(self, objectslist, tool_call="T%d D1 M6"):
-        """The tool controllers and operations of `objectslist` in their order."""
+        """The work offsets, tool controllers and operations of `objectslist` in their order. CAM's post list
+        holds a work-offset entry (not a document object: its Path is the G54… word, and a move up to the
+        clearance height before any but the first) ahead of each fixture's operations; a list without one (a
+        script's [job, controllers…, operations…]) gets the Job's first work offset ahead of everything, so that
+        both write the same program."""
+        if not any(_is_work_offset(obj) for obj in objectslist):
+            job = next((o for o in objectslist if hasattr(o, "Operations")), None)
+            fixtures = list(getattr(job, "Fixtures", []) or [])
+            if fixtures:
+                self.block(fixtures[0])
         for obj in objectslist:
+            if _is_work_offset(obj):
+                self.transform(False)  # the offset and the move up to the clearance height: 3 axes, as CAM's
+                for command in obj.Path.Commands:
+                    self.command(command)
+                continue
             if not hasattr(obj, "Path") or hasattr(obj, "Operations"):
                 continue
             if hasattr(obj, "ToolNumber"):
@@ -215,3 +229,9 @@ class ProgramWriter:
             with open(filename, "w") as stream:
                 stream.write(text)
         return text
+
+
+def _is_work_offset(obj):
+    """CAM's work-offset entry of a post list (Path.Post.Processor's fixture object): a Path, not a document
+    object."""
+    return hasattr(obj, "Path") and not hasattr(obj, "TypeId") and getattr(obj, "Name", "") == "Fixture"
