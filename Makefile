@@ -125,8 +125,10 @@ bench: build
 	scripts/run-freecadcmd.sh tests/bench/bench_partition.py
 	scripts/run-freecadcmd.sh tests/bench/bench_study.py
 
-# The Debian package (docs/packaging.md): freecad-hsmplanner_<version>_<arch>.deb in this folder, for
-# `apt install ./freecad-hsmplanner_*.deb`, checked by lintian (an error fails the target).
+# The Debian package (docs/packaging.md) for this FreeCAD's Debian: freecad-hsmplanner_<version>+<suite>_<arch>.deb
+# in this folder (+forky for FreeCAD 1.1, +trixie for 1.0), for `apt install ./freecad-hsmplanner_*.deb`, checked
+# by lintian (an error fails the target).
+SUITE := $(shell scripts/freecad-env.sh $(FREECAD) suite)
 package-deps: deps
 	@scripts/install-deps.sh scripts/debian-packages-deb.txt
 
@@ -141,18 +143,18 @@ deb: package-deps $(PACKAGE_DIR)/CMakeCache.txt
 	$(CMAKE) --build $(PACKAGE_DIR) -j $(JOBS)
 	rm -rf $(PACKAGE_DIR)/package
 	cd $(PACKAGE_DIR) && cpack -G DEB > cpack.log 2>&1 || { cat cpack.log; exit 1; }
-	rm -f freecad-hsmplanner_*.deb
-	cp $(PACKAGE_DIR)/package/freecad-hsmplanner_*.deb .
-	lintian --display-info freecad-hsmplanner_*.deb
-	@ls -l freecad-hsmplanner_*.deb
+	rm -f freecad-hsmplanner_*+$(SUITE)_*.deb
+	cp $(PACKAGE_DIR)/package/freecad-hsmplanner_*+$(SUITE)_*.deb .
+	lintian --display-info freecad-hsmplanner_*+$(SUITE)_*.deb
+	@ls -l freecad-hsmplanner_*+$(SUITE)_*.deb
 
-# The package installed into a clean Debian 13 root (debootstrap into $(BUILD_DIR)/package-test, FreeCAD from
+# The package installed into a clean root of its Debian (debootstrap into $(BUILD_DIR)/package-test, FreeCAD from
 # Debian's archive) and used there outside the source tree, then removed: nothing may be left (docs/packaging.md).
 # Not part of `make test`: the first run makes the root (minutes of downloads), later runs reuse it.
 test-package: deb
-	tests/package/run.sh $$(ls freecad-hsmplanner_*.deb) $(BUILD_DIR)/package-test
+	tests/package/run.sh $$(ls freecad-hsmplanner_*+$(SUITE)_*.deb) $(SUITE) $(BUILD_DIR)/package-test
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core.cpython-*.so freecad-hsmplanner_*.deb
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) python/hsmplanner/_core.cpython-*.so freecad-hsmplanner_*+$(SUITE)_*.deb
 
 endif

@@ -101,7 +101,7 @@ configure_file(packaging/prerm.in prerm @ONLY)
 
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME freecad-hsmplanner)
-set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION}+${HSM_DEBIAN_SUITE})
 set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
 set(CPACK_PACKAGE_DIRECTORY ${CMAKE_BINARY_DIR}/package)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
@@ -118,10 +118,10 @@ presets and the examples.")
 # Python version.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 math(EXPR hsm_next_minor "${Python3_VERSION_MINOR} + 1")
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "freecad (>= 1.0), \
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "freecad (>= ${HSM_FREECAD_RELEASE}), \
 python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}~), python3 (<< ${Python3_VERSION_MAJOR}.${hsm_next_minor}), \
 python3-numpy, python3-matplotlib, python3-pivy, \
-python3-pyside2.qtcore, python3-pyside2.qtgui, python3-pyside2.qtwidgets")
+python3-${HSM_PYSIDE}.qtcore, python3-${HSM_PYSIDE}.qtgui, python3-${HSM_PYSIDE}.qtwidgets")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-distributed")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${CMAKE_BINARY_DIR}/postinst ${CMAKE_BINARY_DIR}/prerm)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)

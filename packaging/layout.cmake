@@ -12,14 +12,25 @@ endif()
 execute_process(
   COMMAND ${HSM_FREECADCMD} -c "import os, FreeCAD, Path.Preferences as p; print('HSM_MOD=' + \
 os.path.realpath(FreeCAD.getResourceDir() + 'Mod')); print('HSM_POSTS=' + \
-os.path.realpath(os.path.join(p.pathPostSourcePath(), 'scripts')))"
+os.path.realpath(os.path.join(p.pathPostSourcePath(), 'scripts'))); \
+import PySide; print('HSM_FREECAD=%s.%s' % tuple(FreeCAD.Version()[:2])); print('HSM_PYSIDE=' + PySide.__version__)"
   OUTPUT_VARIABLE hsm_answer ERROR_VARIABLE hsm_errors RESULT_VARIABLE hsm_status)
-if(NOT hsm_answer MATCHES "HSM_MOD=([^\n]+)\nHSM_POSTS=([^\n]+)")
+if(NOT hsm_answer MATCHES "HSM_MOD=([^\n]+)\nHSM_POSTS=([^\n]+)\nHSM_FREECAD=([0-9.]+)\nHSM_PYSIDE=([0-9]+)")
   message(FATAL_ERROR "freecadcmd did not say where FreeCAD's modules are (exit ${hsm_status}): "
     "${hsm_answer}${hsm_errors}")
 endif()
 set(HSM_FREECAD_MOD_DIR "${CMAKE_MATCH_1}")
 set(HSM_FREECAD_POSTS_DIR "${CMAKE_MATCH_2}")
+# The package is for one FreeCAD of one Debian release: FreeCAD 1.0 (Qt 5, PySide2) on trixie, 1.1 (Qt 6,
+# PySide6) on forky. Its version carries the release (0.9.0+trixie, 0.9.0+forky), so both can sit in one folder.
+set(HSM_FREECAD_RELEASE "${CMAKE_MATCH_3}")
+set(HSM_PYSIDE "pyside${CMAKE_MATCH_4}")
+execute_process(COMMAND sh -c ". /etc/os-release && echo \"$VERSION_CODENAME\""
+  OUTPUT_VARIABLE HSM_DEBIAN_SUITE OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT HSM_DEBIAN_SUITE MATCHES "^[a-z]+$")
+  message(FATAL_ERROR "/etc/os-release names no Debian release (VERSION_CODENAME): the package is built on the "
+    "Debian it is for (scripts/freecad-env.sh)")
+endif()
 
 # Relative to the prefix (/usr), as CPack installs into its staging folder.
 function(hsm_relative_to_prefix variable path)

@@ -4,12 +4,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace hsm::geometry {
 
 namespace {
 constexpr double kCutTolerance = 1e-9;  // mm along d
+// A plane this close beyond the curve's end still cuts it there: a station placed at one curve's end misses a
+// curve that ends a rounding error short of it (a boundary read back from a saved document, a fitted curve).
+constexpr double kEndTolerance = 1e-6;  // mm along d
+
+std::string millimetres(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
 
 Eigen::Vector3d toEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 Eigen::Vector3d toEigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
@@ -85,9 +95,15 @@ PlaneCutter::Cuts PlaneCutter::cut(const std::vector<double>& stations) const {
         found.push_back(refine(t_[i], t_[i + 1], s));
       }
     }
+    if (found.empty()) {
+      const auto nearest = std::min_element(s_.begin(), s_.end(), [s](double a, double b) {
+        return std::abs(a - s) < std::abs(b - s);
+      });
+      if (std::abs(*nearest - s) <= kEndTolerance) found.push_back(t_[nearest - s_.begin()]);
+    }
     if (found.empty())
-      throw ComputationError("the plane at " + std::to_string(s) + " mm along the machining direction misses a curve "
-                             "it should cut (curve extent " + std::to_string(sMin_) + ".." + std::to_string(sMax_) +
+      throw ComputationError("the plane at " + millimetres(s) + " mm along the machining direction misses a curve "
+                             "it should cut (curve extent " + millimetres(sMin_) + ".." + millimetres(sMax_) +
                              " mm)");
     if (found.size() > 1) cuts.multiCutStations.push_back(static_cast<int>(k));
     // Continuation rule: the first cut at or after the previous one in the curve's order, else the closest.

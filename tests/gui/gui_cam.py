@@ -8,6 +8,7 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 
 import FreeCAD
 import FreeCADGui as Gui
@@ -15,6 +16,7 @@ from PySide import QtCore, QtWidgets
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_harness import OUT, GuiRun  # noqa: E402
+from hsmplanner.app.compat import tool_shape_id  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -27,9 +29,22 @@ def cam(name):
     return cam_command_name(name)
 
 
-def later(function, delay_ms=300):
-    """Runs function from the event loop while a command's modal dialog (exec_) blocks the step."""
-    QtCore.QTimer.singleShot(delay_ms, function)
+def when_modal(handle, timeout_s=20.0):
+    """Runs handle(dialog) from the event loop once a command's modal dialog (its exec) blocks the step: the
+    dialog is looked for every 100 ms (FreeCAD 1.1's Job dialog takes longer to show than 1.0's); after
+    `timeout_s` handle(None) runs, so that the step goes on and reports what it did not see."""
+    end = time.time() + timeout_s
+
+    def poll():
+        dialog = QtWidgets.QApplication.activeModalWidget()
+        if dialog is not None and dialog.isVisible():
+            handle(dialog)
+        elif time.time() >= end:
+            handle(None)
+        else:
+            QtCore.QTimer.singleShot(100, poll)
+
+    QtCore.QTimer.singleShot(100, poll)
 
 
 def feed_lines(text):
@@ -86,23 +101,22 @@ def job_from_cams_command(run):
     state.update(part=part, net=net)
     dialogs = []
 
-    def accept_the_job_dialog():
-        dialog = QtWidgets.QApplication.activeModalWidget()
+    def accept_the_job_dialog(dialog):
         dialogs.append((type(dialog).__name__, dialog.windowTitle() if dialog else None,
                         dialog.text() if isinstance(dialog, QtWidgets.QMessageBox) else ""))
-        if isinstance(dialog, QtWidgets.QMessageBox):  # the feed-unit warning: a failure, closed
+        if dialog is not None and "Job" not in dialog.windowTitle():  # the feed-unit warning: a failure, closed
             dialog.reject()
-            later(accept_the_job_dialog)
+            when_modal(accept_the_job_dialog)
         elif dialog is not None:
             dialog.accept()
 
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(part)
-    later(accept_the_job_dialog)
+    when_modal(accept_the_job_dialog)
     Gui.runCommand(cam("Job"))
     run.wait_until(lambda: any(hasattr(o, "Operations") for o in document.Objects), 20.0, "CAM's Job created")
     run.notes["dialogs of CAM's Job command"] = dialogs
-    run.check("no feed-unit warning", not [d for d in dialogs if d[0] == "QMessageBox"], str(dialogs))
+    run.check("no feed-unit warning", not [d for d in dialogs if d[1] is None or "Job" not in d[1]], str(dialogs))
     jobs = [o for o in document.Objects if hasattr(o, "Operations")]
     models = [jobs[0].Proxy.baseObject(jobs[0], m) for m in jobs[0].Model.Group] if len(jobs) == 1 else []
     run.check("one Job on the selected part", models == [part], "%s %s" % ([j.Name for j in jobs], models))
@@ -129,8 +143,66 @@ def library_working_dir():
 
 @run.step
 def controller_from_the_toolbit_library(run):
-    """CAM's ToolBit dock: the library's ball end selected, "Add to Job" makes its tool controller."""
+    """CAM's tool library, as a user takes a tool from it: the library's ball end selected, "Add to Job" makes its
+    tool controller (FreeCAD 1.1: the Toolbit Selector dialog; 1.0: the ToolBit dock)."""
+    from hsmplanner.app.compat import has_tool_assets
+
     job = state["job"]
+    before = list(job.Tools.Group)
+    if has_tool_assets():
+        _add_from_the_toolbit_selector(run)
+    else:
+        _add_from_the_toolbit_dock(run)
+    added = [c for c in job.Tools.Group if c not in before]
+    run.check("the library's tool controller added to the Job", len(added) == 1, str([c.Label for c in added]))
+    if added:
+        controller = added[0]
+        controller.HorizFeed = FreeCAD.Units.Quantity("3000 mm/min")
+        controller.VertFeed = FreeCAD.Units.Quantity("1000 mm/min")
+        controller.SpindleSpeed = 16000
+        state["controller"] = controller
+        run.notes["library controller"] = [controller.Label, controller.Tool.Label, tool_shape_id(controller.Tool)]
+
+
+def _add_from_the_toolbit_selector(run):
+    """FreeCAD 1.1: CAM's ToolBitDock command opens the Toolbit Selector (a modal dialog on the tool library's
+    assets): the library's ball end picked in its list, "Add to Job", "Close"."""
+    seen = {}
+
+    def pick_and_add(dialog):
+        lists = [w for w in dialog.findChildren(QtWidgets.QListWidget) if hasattr(w, "get_selected_toolbit_uris")]
+        items = [lists[0].item(i) for i in range(lists[0].count())] if lists else []
+        labels = [_bit_label(item) for item in items]
+        seen["labels"] = labels
+        if LIBRARY_BIT in labels:
+            lists[0].setCurrentItem(items[labels.index(LIBRARY_BIT)])
+            _button(dialog, "Add to Job").click()
+        seen["image"] = os.path.join(OUT, "cam_toolbit_selector.png")
+        dialog.grab().save(seen["image"])
+        _button(dialog, "Close").click()
+
+    when_modal(pick_and_add)
+    Gui.runCommand(cam("ToolBitDock"))
+    run.wait_until(lambda: "labels" in seen, 20.0, "CAM's Toolbit Selector")
+    run.check("the library lists %s" % LIBRARY_BIT, LIBRARY_BIT in seen.get("labels", []), str(seen.get("labels")))
+    if "image" in seen:
+        run.screenshots.append(seen["image"])
+
+
+def _bit_label(item):
+    """The label of the tool bit an item of 1.1's tool list shows (its URI names the asset: toolbit://ID)."""
+    from Path.Tool.toolbit.ui.toollist import ToolBitUriRole
+
+    uri = str(item.data(ToolBitUriRole) or "")
+    return uri.split("://", 1)[-1].replace("_", " ")
+
+
+def _button(dialog, text):
+    return next(b for b in dialog.findChildren(QtWidgets.QPushButton) if b.text().replace("&", "") == text)
+
+
+def _add_from_the_toolbit_dock(run):
+    """FreeCAD 1.0: CAM's ToolBit dock, the library's ball end selected, "Add to Job"."""
     library_working_dir()
     Gui.runCommand(cam("ToolBitDock"))
     run.wait_until(lambda: _library_dock() is not None, 10.0, "CAM's ToolBit dock open")
@@ -143,22 +215,11 @@ def controller_from_the_toolbit_library(run):
     rows = [r for r in range(model.rowCount()) if model.index(r, 1).data() == LIBRARY_BIT]
     run.check("the library lists %s" % LIBRARY_BIT, bool(rows),
               str([model.index(r, 1).data() for r in range(model.rowCount())]))
-    if not rows:
-        return
-    tools.selectionModel().select(model.index(rows[0], 0), QtCore.QItemSelectionModel.ClearAndSelect
-                                  | QtCore.QItemSelectionModel.Rows)
-    before = list(job.Tools.Group)
-    dock.findChild(QtWidgets.QPushButton, "addToolController").click()
-    added = [c for c in job.Tools.Group if c not in before]
-    run.check("the library's tool controller added to the Job", len(added) == 1, str([c.Label for c in added]))
+    if rows:
+        tools.selectionModel().select(model.index(rows[0], 0), QtCore.QItemSelectionModel.ClearAndSelect
+                                      | QtCore.QItemSelectionModel.Rows)
+        dock.findChild(QtWidgets.QPushButton, "addToolController").click()
     dock.close()
-    if added:
-        controller = added[0]
-        controller.HorizFeed = FreeCAD.Units.Quantity("3000 mm/min")
-        controller.VertFeed = FreeCAD.Units.Quantity("1000 mm/min")
-        controller.SpindleSpeed = 16000
-        state["controller"] = controller
-        run.notes["library controller"] = [controller.Label, controller.Tool.Label, str(controller.Tool.BitShape)]
 
 
 def _library_dock():
@@ -229,8 +290,7 @@ def show_path_only(op):
 def cams_inspect_shows_our_path(run):
     op, seen = state["op"], {}
 
-    def read_and_close():
-        dialog = QtWidgets.QApplication.activeModalWidget()
+    def read_and_close(dialog):
         editor = getattr(dialog, "editor", None)
         seen["lines"] = len(editor.toPlainText().splitlines()) if editor is not None else None
         if dialog is not None:
@@ -241,7 +301,7 @@ def cams_inspect_shows_our_path(run):
 
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(op)
-    later(read_and_close, 800)
+    when_modal(read_and_close)
     Gui.runCommand(cam("Inspect"))
     run.wait_until(lambda: "lines" in seen, 20.0, "CAM's Inspect dialog")
     run.check("Inspect lists every command of our path", seen.get("lines") == len(op.Path.Commands),
@@ -320,7 +380,7 @@ def jobs_export_template_carries_our_controller(run):
     run.check("a Job from the template has the controller", len(same) == 1, str([t.Label for t in copy.Tools.Group]))
     if same:
         run.check("and our finishing can use it (a ball end with its feed)", finishing.is_usable(same[0]),
-                  "%s %s %s" % (same[0].Tool.BitShape, same[0].Tool.Diameter, same[0].HorizFeed))
+                  "%s %s %s" % (tool_shape_id(same[0].Tool), same[0].Tool.Diameter, same[0].HorizFeed))
     state["template job"] = copy
 
 

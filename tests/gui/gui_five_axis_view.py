@@ -35,7 +35,10 @@ def program_tips(commands):
 
 
 def viewport():
-    return Gui.ActiveDocument.ActiveView.getViewer().getSoRenderManager().getViewportRegion()
+    """The 3D view's viewport, from its size: FreeCAD 1.1.3 crashes when a document whose view was asked for its
+    viewer (ActiveView.getViewer()) closes (the viewer's Python object is freed twice)."""
+    width, height = Gui.ActiveDocument.ActiveView.getSize()
+    return coin.SbViewportRegion(width, height)
 
 
 def box_of(node):

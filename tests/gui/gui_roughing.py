@@ -13,7 +13,7 @@ import numpy as np
 from PySide import QtCore
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import OUT, GuiRun, scene_nodes, show_only  # noqa: E402
+from gui_harness import OUT, GuiRun, image_pixels, scene_nodes, show_only  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -51,15 +51,11 @@ def palette_of(name):
 
 def hue_counts(name, bands):
     """Pixels of the 3D view (saved as an image, white background) in each hue band, of saturated colours."""
-    from PySide import QtGui
-
     path = os.path.join(OUT, name + ".png")
     Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
     run.screenshots.append(path)
-    image = QtGui.QImage(path).convertToFormat(QtGui.QImage.Format_RGB32)
-    bits = image.constBits()
-    pixels = np.frombuffer(bits, dtype=np.uint8, count=image.byteCount()).reshape(image.height(), image.width(), 4)
-    model = pixels[:, : int(0.7 * image.width())]  # the legend (at the right) has a square of each colour
+    pixels = image_pixels(path)
+    model = pixels[:, : int(0.7 * pixels.shape[1])]  # the legend (at the right) has a square of each colour
     rgb = model[:, :, [2, 1, 0]].reshape(-1, 3).astype(float) / 255.0
     saturated = rgb[(rgb.max(axis=1) - rgb.min(axis=1)) > 0.15]
     hues = np.array([colorsys.rgb_to_hsv(*p)[0] * 360.0 for p in saturated[:: max(1, len(saturated) // 40000)]])
@@ -385,8 +381,6 @@ def legend_texts(node):
 def check_stock_map_legend(legend, thickness):
     """The 3D view's legend of the stock map: numbers in mm up to the map's scale, and, in the view as saved,
     a colour bar in the map's colours with white numbers beside it (not an empty dark box)."""
-    from PySide import QtGui
-
     from hsmplanner.gui.feedmap import LEGEND_X
     from hsmplanner.gui.stock_map_view import LEGEND_SPAN, thickness_colors
 
@@ -399,9 +393,7 @@ def check_stock_map_legend(legend, thickness):
     path = os.path.join(OUT, "view3d_stock_map.png")
     Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
     run.screenshots.append(path)
-    image = QtGui.QImage(path).convertToFormat(QtGui.QImage.Format_RGB32)
-    pixels = np.frombuffer(image.constBits(), dtype=np.uint8, count=image.byteCount()).reshape(
-        image.height(), image.width(), 4)[:, :, [2, 1, 0]].astype(float) / 255.0
+    pixels = image_pixels(path)[:, :, [2, 1, 0]].astype(float) / 255.0
     # the legend's place in the view's [-1, 1] square: the bar over LEGEND_X, the numbers right-aligned left of it
     (x0, x1), (y0, y1) = LEGEND_X, LEGEND_SPAN
     column_of, row_of = (lambda x: int(round((x + 1.0) / 2.0 * 900))), (lambda y: int(round((1.0 - y) / 2.0 * 700)))

@@ -4,8 +4,12 @@
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 : "${HSM_GUI_TEST_OUT:?set HSM_GUI_TEST_OUT to the folder for screenshots}"
-mkdir -p "$HOME/.config/FreeCAD" "$HSM_GUI_TEST_OUT"
-cp "$here/user.cfg" "$HOME/.config/FreeCAD/user.cfg"
+# The preferences where this FreeCAD reads them (1.1 keeps them per version: ~/.config/FreeCAD/v1-1/).
+config=$(freecadcmd -c 'import FreeCAD; print("HSM_CONFIG=" + FreeCAD.ConfigGet("UserConfigPath"))' 2>/dev/null |
+         sed -n 's/^HSM_CONFIG=//p')
+[ -n "$config" ] || { echo "freecadcmd did not say where FreeCAD keeps its preferences" >&2; exit 1; }
+mkdir -p "$config" "$HSM_GUI_TEST_OUT"
+cp "$here/user.cfg" "$config/user.cfg"
 
 export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
 failed=0

@@ -1,5 +1,5 @@
 #!/bin/bash
-# `make test-package`, inside the clean Debian 13 root, as the user hsm, with the package installed and no clone
+# `make test-package`, inside the clean root of the package's Debian, as the user hsm, with the package installed and no clone
 # in sight: the installed study script, the examples from /usr/share/doc, the commands, the GUI under Xvfb, and
 # a developer's copy in the user's Mod folder taking precedence. Prints each step; exit status 1 if one failed.
 #   as_user.sh OUTPUT_DIR VERSION
@@ -8,7 +8,9 @@ tests=$(cd "$(dirname "$0")" && pwd)
 out=$1 version=$2
 doc=/usr/share/doc/freecad-hsmplanner
 mod=/usr/share/freecad/Mod/HSMPlanner
-user_mod=$HOME/.local/share/FreeCAD/Mod
+# the user's Mod folder, where this FreeCAD keeps it (1.1: ~/.local/share/FreeCAD/v1-1/Mod)
+user_mod=$(freecadcmd -c 'import FreeCAD; print("HSM_MOD=" + FreeCAD.getUserAppDataDir() + "Mod")' 2>/dev/null |
+           sed -n 's/^HSM_MOD=//p')
 failed=()
 cd "$out"
 

@@ -1,5 +1,5 @@
 #!/bin/bash
-# `make test-package`, inside the clean Debian 13 root, as root, in the folder tests/package/run.sh filled:
+# `make test-package`, inside the clean root of its Debian, as root, in the folder tests/package/run.sh filled:
 # installs the package with apt as a user would, has the user hsm use it (as_user.sh), removes it with its
 # dependencies, and checks that the root then holds no file of it and no path or package it did not hold before.
 set -uo pipefail

@@ -1,4 +1,4 @@
-"""`make test-package`, in the clean Debian 13 root, as a user, no clone in sight: HSM Planner from the package.
+"""`make test-package`, in the clean root of its Debian, as a user, no clone in sight: HSM Planner from the package.
 
     freecadcmd installed_study.py OUTPUT_DIR VERSION
 
@@ -43,8 +43,9 @@ def check_installation(version):
     check("the core found through the package's link", os.path.realpath(hsmplanner._core.__file__).startswith(
         "/usr/lib/freecad-hsmplanner/"), hsmplanner._core.__file__)
     metadata = FreeCAD.Metadata(os.path.join(mod_dir, "package.xml"))
+    upstream = version.split("+")[0]  # the package's version names its Debian release: 0.9.0+forky
     check("one version: package, package.xml, hsmplanner.__version__",
-          version == metadata.Version == hsmplanner.__version__,
+          upstream == metadata.Version == hsmplanner.__version__,
           "%s, %s, %s" % (version, metadata.Version, hsmplanner.__version__))
     check("FreeCAD loaded the workbench folder", mod_dir in [os.path.normpath(d) for d in FreeCAD.__ModDirs__])
     check("icons installed", os.path.isfile(resources.icon("HSMPlanner")), resources.icon("HSMPlanner"))

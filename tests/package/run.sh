@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# `make test-package` (docs/packaging.md): the Debian package installed into a clean Debian 13 root and used
+# `make test-package` (docs/packaging.md): the Debian package installed into a clean root of its Debian (trixie or forky) and used
 # there as a user would, outside the source tree; then removed, and the root checked for anything left.
 #
-#   tests/package/run.sh PACKAGE.deb FOLDER
+#   tests/package/run.sh PACKAGE.deb SUITE FOLDER
 #
-# FOLDER/base is the clean root: debootstrap (minbase) with FreeCAD, Xvfb and a user "hsm" from Debian's
+# FOLDER/base is the clean root: debootstrap (minbase) of the Debian SUITE the package is for (trixie, forky)
+# with FreeCAD, Xvfb and a user "hsm" from Debian's
 # archive, made by the first run and kept (remove it to make it again). Each run installs into a fresh overlay
 # of it (FOLDER/run, kept until the next run: its upper/ holds what the run changed, and the test's outputs in
 # upper/tmp/hsm-package-test), so every run starts from the same clean root. apt's downloads are kept in
@@ -15,9 +16,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../scripts/debian-root.sh"
 
 make_base() {
-  local base=$1
+  local base=$1 suite=$2
   [ -f "$base/.hsm-test-root" ] && return 0
-  debian_root_make "$base" passwd
+  debian_root_make "$base" "$suite" passwd
   echo "Installing FreeCAD, Xvfb and the user hsm into $base (log: $base.log)"
   debian_root_run "$base" / -- /bin/bash -c 'export DEBIAN_FRONTEND=noninteractive
     apt-get update && apt-get install -y --no-install-recommends freecad xvfb xauth && apt-get clean &&
@@ -45,12 +46,13 @@ if [ "${1:-}" = --in-namespace ]; then
   run_in_overlay "$2" "$3"
   exit
 fi
-[ $# -eq 2 ] && [ -f "$1" ] || { echo "usage: $0 PACKAGE.deb FOLDER" >&2; exit 2; }
+[ $# -eq 3 ] && [ -f "$1" ] || { echo "usage: $0 PACKAGE.deb SUITE FOLDER" >&2; exit 2; }
 deb=$(realpath "$1")
-mkdir -p "$2"
-folder=$(cd "$2" && pwd -P)
+suite=$2
+mkdir -p "$3"
+folder=$(cd "$3" && pwd -P)
 start=$(date +%s)
-make_base "$folder/base"
+make_base "$folder/base" "$suite"
 echo "Clean root ready ($(( $(date +%s) - start )) s): $folder/base"
 status=0
 as_root unshare --mount --propagation "$(debian_root_propagation)" -- "$0" --in-namespace "$deb" "$folder" || status=$?

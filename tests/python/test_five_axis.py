@@ -10,6 +10,7 @@ import numpy as np
 import hsmplanner
 from hsmplanner import _core, feedsim
 from hsmplanner.app import finishing, master_feature_object
+from hsmplanner.app import compat
 from hsmplanner.app.compat import cam_module, create_job
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
 from hsmplanner.scripting import build_program
@@ -176,6 +177,33 @@ class Posts(unittest.TestCase):
             self.assertLessEqual(line.count("("), 1, line)
         self.assertIn("[table-table, tool tip programmed]", text.splitlines()[0])
         check_golden(self, text, "linuxcnc_5axis_trt.ngc")
+
+    def test_cam_post_process_writes_the_golden_programs(self):
+        """CAM's Post Process as its command runs it: the Job's post-processor chosen in its list, its arguments,
+        and the factory's processor, which on FreeCAD 1.1 is our class-based post (Hsm_Siemens840D,
+        Hsm_Linuxcnc5X) and on 1.0 CAM's wrapper of the script. Either way the golden files' programs."""
+        import Path.Preferences
+        from Path.Post.Processor import PostProcessorFactory
+
+        available = Path.Preferences.allAvailablePostProcessors()
+        cases = [("hsm_siemens840d", "Hsm_Siemens840D", "--machine=mikron-ucp710-ac-840d", "siemens840d_5axis_angles.mpf"),
+                 ("hsm_siemens840d", "Hsm_Siemens840D", "--machine=mikron-ucp710-ac-840d --orientation=vectors",
+                  "siemens840d_5axis_vectors.mpf"),
+                 ("hsm_linuxcnc5x", "Hsm_Linuxcnc5X", "", "linuxcnc_5axis_trt.ngc")]
+        class_based = compat.freecad_version() >= (1, 1)
+        saved = self.job.PostProcessor, self.job.PostProcessorArgs
+        try:
+            for name, class_name, arguments, golden in cases:
+                self.assertIn(name, available)
+                self.job.PostProcessor = name
+                self.job.PostProcessorArgs = arguments
+                processor = PostProcessorFactory.get_post_processor(self.job, name)
+                self.assertEqual(type(processor).__name__, class_name if class_based else "WrapperPost")
+                sections = processor.export()
+                self.assertEqual([section for section, _ in sections], ["allitems"])
+                check_golden(self, sections[0][1], golden)
+        finally:
+            self.job.PostProcessor, self.job.PostProcessorArgs = saved
 
     def test_feed_rate_analysis_of_a_five_axis_operation(self):
         """The document's analysis reads the operation's A and C as the Job machine's, the tip programmed."""

@@ -121,7 +121,12 @@ def create_tool_bit(name, label, shape_id, diameter, corner_radius=None):
         if corner_radius is not None:
             parameters["CornerRadius"] = "%g mm" % corner_radius
         bit = ToolBit.from_dict({"shape": shape_id, "name": label, "parameter": parameters})
+        transaction = FreeCAD.getActiveTransaction()
         tool = bit.attach_to_doc(FreeCAD.ActiveDocument, label=name)
+        if transaction is not None and FreeCAD.getActiveTransaction() is None:
+            # 1.1's GUI ends the caller's transaction when the tool library makes the bit's body (in a document of
+            # its own): what the caller adds next must still be undoable, under the same name
+            FreeCAD.ActiveDocument.openTransaction(transaction[0])
         tool.Label = label
         return tool
     module = cam_module("tool_bit")

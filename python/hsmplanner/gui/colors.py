@@ -19,6 +19,14 @@ def area_color(index):
     return AREA_PALETTE[index % len(AREA_PALETTE)]
 
 
+def view_color(rgb, transparency=0.0):
+    """A colour of a view object's DiffuseColor or LineColorArray, `transparency` in [0, 1]: FreeCAD 1.0 reads
+    the fourth value as the transparency, 1.1 as the alpha (1 − transparency; 0 would draw nothing)."""
+    from hsmplanner.app.compat import freecad_version
+
+    return tuple(rgb) + ((1.0 - transparency) if freecad_version() >= (1, 1) else transparency,)
+
+
 # Roughing volume: the faces' classes, and the sub-volumes in alternating colours by slice: the PNG
 # pictures' colours (hsmplanner.plots.palette), in FaceColorIndex order.
 FACE_CLASS_COLORS = [_PALETTE.FACE_CLASS_COLORS[name] for name in ("crossable", "facing_crossable", "not_crossable")]

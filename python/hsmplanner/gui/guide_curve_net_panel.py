@@ -229,7 +229,7 @@ class GuideCurveNetPanel(TaskPanel):
 
     # --- task dialog --------------------------------------------------------------------------------------
     def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+        return QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel
 
     def accept(self):
         obj = self.obj

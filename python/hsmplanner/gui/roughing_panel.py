@@ -298,7 +298,7 @@ class RoughingPanel(TaskPanel):
 
     # --- task dialog ----------------------------------------------------------------------------------------
     def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+        return QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel
 
     def accept(self):
         self.store_form()

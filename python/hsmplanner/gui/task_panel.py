@@ -43,7 +43,7 @@ class TaskPanel:
             FreeCADGui.ActiveDocument.resetEdit()
 
     def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Close)
+        return QtWidgets.QDialogButtonBox.Close
 
     def reject(self):
         self.close_edit()

@@ -2,7 +2,7 @@
 from hsmplanner.app.proxy_state import NoSavedState
 from hsmplanner.resources import icon
 
-from .colors import CURVE_COLORS, REGION_BORDER, area_color
+from .colors import CURVE_COLORS, REGION_BORDER, area_color, view_color
 
 
 class _StatelessViewProvider(NoSavedState):
@@ -75,9 +75,9 @@ class ViewProviderGuideCurveNet(_StatelessViewProvider):
         roles = display_edge_roles(obj)
         if view is None or roles is None:
             return  # mid-recompute: the properties do not match yet
-        view.DiffuseColor = [area_color(index) + (0.0,) for index in obj.FaceAreas]
+        view.DiffuseColor = [view_color(area_color(index)) for index in obj.FaceAreas]
         lift_over_the_part(obj)
-        view.LineColorArray = [(REGION_BORDER if role is None else CURVE_COLORS.get(role, (0, 0, 0))) + (0.0,)
+        view.LineColorArray = [view_color(REGION_BORDER if role is None else CURVE_COLORS.get(role, (0, 0, 0)))
                                for role in roles]
 
     def doubleClicked(self, view_object):
@@ -319,7 +319,7 @@ class ViewProviderRoughingVolume(_StatelessViewProvider):
         from .roughing_view import palette
 
         colors, _ = palette(sub_volumes)
-        obj.ViewObject.DiffuseColor = [tuple(colors[code % len(colors)]) + (transparency,) for code in codes]
+        obj.ViewObject.DiffuseColor = [view_color(colors[code % len(colors)], transparency) for code in codes]
 
     def doubleClicked(self, view_object):
         import FreeCADGui

@@ -1,11 +1,15 @@
 #include "common/error.hpp"
 #include "geometry/bspline.hpp"
+#include "geometry/plane_cutter.hpp"
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRep_Builder.hxx>
 #include <GC_MakeCircle.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
 #include <gtest/gtest.h>
 
@@ -64,5 +68,36 @@ TEST(CurveSampling, BadInputsAreRefused) {
     FAIL() << "disconnected edges were accepted";
   } catch (const hsm::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("2 pieces"), std::string::npos) << error.what();
+  }
+}
+
+namespace {
+Handle(Geom_BSplineCurve) straightCurve(gp_Pnt a, gp_Pnt b) {
+  TColgp_Array1OfPnt poles(1, 2);
+  poles(1) = a;
+  poles(2) = b;
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0.0;
+  knots(2) = 1.0;
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities(1) = multiplicities(2) = 2;
+  return new Geom_BSplineCurve(poles, knots, multiplicities, 1);
+}
+}  // namespace
+
+// A net's first plane lies at one boundary's end; a curve that ends a rounding error short of it (a boundary read
+// back from a saved document) is cut at its end, while a plane clearly beyond the curve is an error naming both.
+TEST(PlaneCutter, APlaneARoundingErrorBeyondTheEndCutsAtTheEnd) {
+  const PlaneCutter cutter(straightCurve(gp_Pnt(1e-9, 0, 0), gp_Pnt(10, 5, 0)), Eigen::Vector3d::UnitX());
+  const auto cuts = cutter.cut({-1e-9, 5.0, 10.0 + 1e-8});
+  EXPECT_NEAR(cuts.points(0, 1), 0.0, 1e-6);
+  EXPECT_NEAR(cuts.points(1, 1), 2.5, 1e-9);
+  EXPECT_NEAR(cuts.points(2, 1), 5.0, 1e-6);
+  try {
+    cutter.cut({-0.001});
+    FAIL() << "a plane 0.001 mm before the curve cut it";
+  } catch (const hsm::ComputationError& error) {
+    EXPECT_NE(std::string(error.what()).find("the plane at -0.001 mm"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("curve extent 1e-09..10 mm"), std::string::npos) << error.what();
   }
 }

@@ -1,11 +1,10 @@
-"""Documents saved with FreeCAD 0.20.2 (../shared/data/freecad-0.20), opened in the running FreeCAD: what must
-have come through, and how each recomputed path may differ from the one saved. Shared by
-test_documents_020.py (freecadcmd) and tests/gui/gui_documents_020.py (the GUI): each check returns the list
-of its problems, empty when the document is fine.
+"""Documents saved by HSM Planner with earlier FreeCADs (../shared/data/freecad-0.20 and freecad-1.0), opened in
+the running FreeCAD: what must have come through, and how each recomputed path may differ from the one saved.
+Shared by test_saved_documents.py (freecadcmd) and tests/gui/gui_saved_documents.py (the GUI): each check
+returns the list of its problems, empty when the document is fine.
 
 EXPECTED_DIFFERENCES is the one table of the paths that do not come out as saved, each with its reason and
-a rule that accepts that difference and nothing else; docs/freecad-versions.md ("Documents saved with
-FreeCAD 0.20") gives the same table.
+a rule that accepts that difference and nothing else; docs/freecad-versions.md gives the same table.
 """
 import json
 import math
@@ -15,26 +14,35 @@ import shutil
 import FreeCAD
 
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-DATA = os.environ.get("HSM_FREECAD020_DATA",
-                      os.path.normpath(os.path.join(REPO, "..", "shared", "data", "freecad-0.20")))
-DOCUMENTS = ["master_study.FCStd", "slot_job.FCStd", "impeller_job.FCStd"]
+SHARED_DATA = os.environ.get("HSM_SHARED_DATA", os.path.normpath(os.path.join(REPO, "..", "shared", "data")))
+# The FreeCAD each set was saved with -> its documents
+SAVED_WITH = {
+    "0.20": ["master_study.FCStd", "slot_job.FCStd", "impeller_job.FCStd"],
+    "1.0": ["guide_finishing.FCStd", "slot_roughing.FCStd", "slot_roughing_study.FCStd", "strategy_study.FCStd"],
+}
 LENGTH_TOLERANCE_MM = 1e-3  # documents.json keeps lengths to 3 decimals
 
 
-def saved_record():
-    """documents.json: per document, its objects and each path's command count and length as saved."""
-    path = os.path.join(DATA, "documents.json")
+def data_folder(saved_with):
+    return os.path.join(SHARED_DATA, "freecad-" + saved_with)
+
+
+def saved_record(saved_with):
+    """documents.json of the documents saved with FreeCAD `saved_with`: per document, its objects and each
+    path's command count and length as saved."""
+    path = os.path.join(data_folder(saved_with), "documents.json")
     if not os.path.isfile(path):
-        raise FileNotFoundError("%s is missing: the FreeCAD 0.20 documents live in ../shared/data/freecad-0.20 "
-                                "beside the repository (or set HSM_FREECAD020_DATA to their folder)" % path)
+        raise FileNotFoundError("%s is missing: the documents saved with FreeCAD %s live in ../shared/data/freecad-%s"
+                                " beside the repository (or set HSM_SHARED_DATA to the data folder)"
+                                % (path, saved_with, saved_with))
     with open(path) as stream:
         return json.load(stream)
 
 
-def open_copy(name, folder):
+def open_copy(saved_with, name, folder):
     """Opens a copy of the saved document `name` made in `folder` (the shared original is never written)."""
     copy = os.path.join(folder, name)
-    shutil.copyfile(os.path.join(DATA, name), copy)
+    shutil.copyfile(os.path.join(data_folder(saved_with), name), copy)
     return FreeCAD.openDocument(copy)
 
 
@@ -259,22 +267,22 @@ def rebuilt_sweep(passes, saved_cutting_mm):
 
 
 class Difference:
-    """How a recomputed path differs from the one saved on FreeCAD 0.20.2, and why."""
+    """How a recomputed path differs from the one saved, and why."""
 
     def __init__(self, reason, rule, commands=None, length_mm=None):
         self.reason, self.rule = reason, rule
         self.commands, self.length_mm = commands, length_mm  # as recomputed on FreeCAD 1.0, for the docs' table
 
 
-# (document, object) -> Difference. Every other path must come out as saved.
+# (FreeCAD it was saved with, document, object) -> Difference. Every other path must come out as saved.
 EXPECTED_DIFFERENCES = {
-    ("master_study.FCStd", "GuideCurveFinishing"): Difference(
+    ("0.20", "master_study.FCStd", "GuideCurveFinishing"): Difference(
         "our code: retracts at the Safe height, 4.000 (the stock's exact top 1.000 + SafeHeightOffset 3), where "
         "0.20 added the 0.0117 mm by which the triangulation of the displayed part rose above its exact top "
         "(the core reads exact bounds now); the head comment '(guide B→median K0.5 P20 (study))' is written "
         "'[study]' (0.20 dropped the inner '(' and left 'study))')",
         only_retract_heights(4.01171, 4.0), commands=1502, length_mm=5220.472),
-    ("impeller_job.FCStd", "VolumeRoughing"): Difference(
+    ("0.20", "impeller_job.FCStd", "VolumeRoughing"): Difference(
         "our code: the sweep keeps the part out by the cutter grown by the allowance point by point (its corner "
         "narrower than its flutes, the hub curving up under it taken per point, not as one lift of every band), "
         "and its flat scales hold over the tool's reach where the hub's normal lines converge; where the hub's "
@@ -286,7 +294,7 @@ EXPECTED_DIFFERENCES = {
 }
 
 
-def path_problems(name, record, saved_paths, document):
+def path_problems(saved_with, name, record, saved_paths, document):
     """Each recomputed path against documents.json (count, length): equal, or differing only as the table
     says; the table's entries must still be needed."""
     problems = []
@@ -296,7 +304,7 @@ def path_problems(name, record, saved_paths, document):
         count, length = len(now), path_length(now)
         same = count == as_saved["commands"] and abs(length - as_saved["length_mm"]) <= LENGTH_TOLERANCE_MM
         same = same and [c.toGCode() for c in now] == [c.toGCode() for c in saved_paths[obj_name]]
-        difference = EXPECTED_DIFFERENCES.get((name, obj_name))
+        difference = EXPECTED_DIFFERENCES.get((saved_with, name, obj_name))
         if difference is None:
             if not same:
                 problems.append("%s %s: %d commands, %.3f mm after recompute; saved %d, %.3f mm: explain it in "

@@ -1,6 +1,6 @@
-"""Documents saved with FreeCAD 0.20.2 open in this FreeCAD: every object with its proxy (ours and the Job's),
-every property today's code defines, and paths that recompute as saved or differ only as
-documents_020.EXPECTED_DIFFERENCES says, and why."""
+"""Documents saved by HSM Planner with FreeCAD 0.20.2 and 1.0.0 open in this FreeCAD: every object with its proxy
+(ours and the Job's), every property today's code defines, and paths that recompute as saved or differ only as
+saved_documents.EXPECTED_DIFFERENCES says, and why."""
 import os
 import tempfile
 import unittest
@@ -8,21 +8,21 @@ import unittest
 import FreeCAD
 import Path
 
-import documents_020 as documents
+import saved_documents as documents
 
 
 class _SavedDocument:
     """One saved document, opened from a copy; test_a/b before any recompute, test_c recomputes."""
 
-    NAME = None
+    SAVED_WITH, NAME = None, None
 
     @classmethod
     def setUpClass(cls):
-        cls.record = documents.saved_record()[cls.NAME]
+        cls.record = documents.saved_record(cls.SAVED_WITH)[cls.NAME]
         folder = tempfile.TemporaryDirectory(prefix="hsm-test-")
         cls.addClassCleanup(folder.cleanup)
         cls.folder = folder.name
-        cls.document = documents.open_copy(cls.NAME, cls.folder)
+        cls.document = documents.open_copy(cls.SAVED_WITH, cls.NAME, cls.folder)
         cls.saved_paths = documents.paths_of(cls.document)
 
     @classmethod
@@ -35,7 +35,7 @@ class _SavedDocument:
         self.assertEqual(documents.saved_path_problems(self.record, self.saved_paths), [])
 
     def test_b_our_objects_have_every_property_of_today(self):
-        scratch = FreeCAD.newDocument("Fresh020")
+        scratch = FreeCAD.newDocument("FreshObjects")
         try:
             fresh = documents.fresh_objects(scratch)
             self.assertEqual(documents.property_problems(self.document, fresh), [])
@@ -44,19 +44,21 @@ class _SavedDocument:
 
     def test_c_recomputed_paths_are_as_saved_or_as_explained(self):
         self.assertEqual(documents.recompute_all(self.document), [])
-        self.assertEqual(documents.path_problems(self.NAME, self.record, self.saved_paths, self.document), [])
+        self.assertEqual(documents.path_problems(self.SAVED_WITH, self.NAME, self.record, self.saved_paths, self.document), [])
 
 
-class MasterStudy(_SavedDocument, unittest.TestCase):
-    NAME = "master_study.FCStd"
+def _test_class(saved_with, name):
+    """A TestCase of one saved document, named after it (test_saved_documents.Saved020MasterStudy…)."""
+    title = "".join(part.title() for part in name.replace(".FCStd", "").split("_"))
+    class_name = "Saved%s%s" % (saved_with.replace(".", ""), title)
+    return type(class_name, (_SavedDocument, unittest.TestCase), {"SAVED_WITH": saved_with, "NAME": name})
 
 
-class SlotJob(_SavedDocument, unittest.TestCase):
-    NAME = "slot_job.FCStd"
-
-
-class ImpellerJob(_SavedDocument, unittest.TestCase):
-    NAME = "impeller_job.FCStd"
+for _saved_with, _names in documents.SAVED_WITH.items():
+    for _name in _names:
+        _case = _test_class(_saved_with, _name)
+        globals()[_case.__name__] = _case
+del _case
 
 
 def command(text):
@@ -116,13 +118,15 @@ class _Sweep:
 
 
 class TheDataIsThere(unittest.TestCase):
-    def test_the_three_documents_and_their_record(self):
-        record = documents.saved_record()
-        self.assertEqual(sorted(record), sorted(documents.DOCUMENTS))
-        for name in documents.DOCUMENTS:
-            self.assertTrue(os.path.isfile(os.path.join(documents.DATA, name)), name)
-        for (name, obj), difference in documents.EXPECTED_DIFFERENCES.items():
-            self.assertIn(obj, record[name]["path_commands_and_length_as_saved"], (name, obj))
+    def test_each_set_of_documents_and_its_record(self):
+        for saved_with, names in documents.SAVED_WITH.items():
+            record = documents.saved_record(saved_with)
+            self.assertEqual(sorted(record), sorted(names), saved_with)
+            for name in names:
+                self.assertTrue(os.path.isfile(os.path.join(documents.data_folder(saved_with), name)), name)
+        for (saved_with, name, obj), difference in documents.EXPECTED_DIFFERENCES.items():
+            record = documents.saved_record(saved_with)
+            self.assertIn(obj, record[name]["path_commands_and_length_as_saved"], (saved_with, name, obj))
             self.assertTrue(difference.reason)
 
 
