@@ -162,7 +162,13 @@ class GuiRun:
             self.check("%s is shown in the Combo View's task view" % name, False)
             return
         window = Gui.getMainWindow()
-        window.resizeDocks([dock], [COMBO_VIEW_WIDTH], QtCore.Qt.Horizontal)
+        # FreeCAD 1.0 shows task panels in the Combo View, which takes the width set; 1.1 in its own Tasks dock
+        # laid over the 3D view (its default width is more, and the main window cannot resize an overlaid dock:
+        # it would say so in a notification): there the panel must need no more than the Combo View would give
+        # it, and scroll nowhere as shown.
+        overlaid = self._overlaid(window, dock)
+        if not overlaid:
+            window.resizeDocks([dock], [COMBO_VIEW_WIDTH], QtCore.Qt.Horizontal)
         # the dock takes the width over a few events; it stays wider when the panel's minimum needs more (the
         # check below then fails, saying how much the panel needs)
         self.process_events(0.5)
@@ -171,10 +177,6 @@ class GuiRun:
         widths = self.notes.setdefault("panel widths (px)", {})
         widths[name] = {"Combo View needed": needed, "Combo View shown": dock.width(),
                         "form minimum": form.minimumSizeHint().width()}
-        # FreeCAD 1.0 shows task panels in the Combo View, which takes the width set; 1.1 in its own Tasks dock
-        # laid over the 3D view (its default width is more, and resizeDocks cannot change an overlaid dock):
-        # there the panel must need no more than the Combo View would give it, and scroll nowhere as shown.
-        overlaid = dock.width() > COMBO_VIEW_WIDTH and self._overlaid(window, dock)
         widths[name]["task view laid over the 3D view"] = overlaid
         self.check("%s fits the %d px Combo View" % (name, COMBO_VIEW_WIDTH),
                    needed <= COMBO_VIEW_WIDTH and (dock.width() <= COMBO_VIEW_WIDTH or overlaid)
