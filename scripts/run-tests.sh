@@ -20,12 +20,28 @@ run_cpp() {
   /usr/bin/ctest --test-dir "$build_dir" --output-on-failure -j 2
 }
 
+# The FreeCAD layer in HSM_PYTHON_PROCESSES freecadcmd processes (default: one per core) sharing the test
+# modules (HSM_TEST_CLAIMS, see tests/python/run_tests.py); each one's output is shown after it ends, and a
+# process that did not say what it ran fails the level (freecadcmd may exit 0 without running the script).
 run_python() {
-  local home
+  local home claims processes status=0 i
   home=$(fresh_home) || return 1
-  HOME=$home "$repo/scripts/run-freecadcmd.sh" "$repo/tests/python/run_tests.py"
-  local status=$?
-  rm -rf "$home"
+  claims=$(mktemp -d /tmp/hsm-test-claims.XXXXXX)
+  processes=${HSM_PYTHON_PROCESSES:-$(nproc)}
+  local pids=()
+  for i in $(seq 1 "$processes"); do
+    HOME=$home HSM_TEST_CLAIMS=$claims "$repo/scripts/run-freecadcmd.sh" "$repo/tests/python/run_tests.py" \
+      > "$claims.out$i" 2>&1 &
+    pids+=($!)
+  done
+  for i in $(seq 1 "$processes"); do
+    wait "${pids[$((i - 1))]}" || status=1
+    echo "--- freecadcmd process $i of $processes"
+    cat "$claims.out$i"
+    grep -q "^this process: " "$claims.out$i" || { echo "freecadcmd process $i ran no test script"; status=1; }
+    rm -f "$claims.out$i"
+  done
+  rm -rf "$home" "$claims"
   return "$status"
 }
 

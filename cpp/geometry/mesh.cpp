@@ -8,6 +8,9 @@
 #include <RWStl.hxx>
 #include <Standard_Failure.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <IMeshTools_Parameters.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <TopExp_Explorer.hxx>
 #include <BRepTools.hxx>
@@ -22,6 +25,8 @@
 #include <TopoDS_Face.hxx>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <fstream>
 #include <functional>
 #include <list>
@@ -36,7 +41,46 @@ Eigen::AlignedBox3d TriangleMesh::bounds() const {
   return box;
 }
 
-TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces) {
+namespace {
+// OCCT's mesher asks its progress indicator whether to stop between nodes and faces, from every thread it
+// runs on: this one says stop once the time is up.
+class Deadline : public Message_ProgressIndicator {
+public:
+  explicit Deadline(double seconds)
+      : end_(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                    std::chrono::duration<double>(seconds))) {}
+  bool passed() const { return passed_; }
+
+protected:
+  void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
+  Standard_Boolean UserBreak() override {
+    if (!passed_ && std::chrono::steady_clock::now() > end_) passed_ = true;
+    return passed_;
+  }
+
+private:
+  std::chrono::steady_clock::time_point end_;
+  std::atomic<bool> passed_{false};
+};
+}  // namespace
+
+void meshShape(const TopoDS_Shape& shape, double deflection, double angle, bool parallel, double seconds) {
+  IMeshTools_Parameters parameters;
+  parameters.Deflection = deflection;
+  parameters.Angle = angle;
+  parameters.Relative = Standard_False;
+  parameters.InParallel = parallel;
+  Handle(Deadline) deadline = new Deadline(seconds);
+  BRepMesh_IncrementalMesh(shape, parameters, deadline->Start());
+  if (deadline->passed())
+    throw ComputationError("OCCT's mesher had not meshed the faces (within " + std::to_string(deflection) +
+                           " mm) after " + std::to_string(static_cast<int>(seconds)) + " s and was stopped: a "
+                           "face is probably malformed; check the shape (FreeCAD: Part > Check geometry) and "
+                           "refine or rebuild the faces it names");
+}
+
+TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces,
+                       double seconds) {
   if (!(deflection > 0.0)) throw InputError("mesh deflection must be positive, got " + std::to_string(deflection));
   TopTools_IndexedMapOfShape map;
   TopExp::MapShapes(shape, TopAbs_FACE, map);
@@ -53,7 +97,7 @@ TriangleMesh meshFaces(const TopoDS_Shape& shape, double deflection, const std::
                        std::to_string(map.Extent()) + " faces");
     builder.Add(selected, map(index));
   }
-  BRepMesh_IncrementalMesh(selected, deflection, Standard_False, 0.5, occtMayRunInParallel());
+  meshShape(selected, deflection, 0.5, occtMayRunInParallel(), seconds);
   TriangleMesh mesh;
   for (int index : wanted) {
     const TopoDS_Face face = TopoDS::Face(map(index));
@@ -105,7 +149,8 @@ std::string facesBrep(const TopTools_IndexedMapOfShape& map, const std::vector<i
 }
 }  // namespace
 
-TriangleMesh meshFacesKept(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces) {
+TriangleMesh meshFacesKept(const TopoDS_Shape& shape, double deflection, const std::vector<int>& faces,
+                           double seconds) {
   static std::mutex mutex;
   static std::list<KeptMesh> kept;  // most recent first
   TopTools_IndexedMapOfShape map;
@@ -123,7 +168,7 @@ TriangleMesh meshFacesKept(const TopoDS_Shape& shape, double deflection, const s
         return it->mesh;
       }
   }
-  TriangleMesh mesh = meshFaces(shape, deflection, faces);  // outside the lock: meshing takes its time
+  TriangleMesh mesh = meshFaces(shape, deflection, faces, seconds);  // outside the lock: meshing takes its time
   std::vector<std::pair<int, Handle(Poly_Triangulation)>> triangulations;
   for (int index = 1; index <= map.Extent(); ++index) {
     TopLoc_Location location;

@@ -12,7 +12,6 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepLProp_SLProps.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -335,7 +334,7 @@ void SlicingFamily::axisField(const TopoDS_Shape& slice, double d, std::vector<E
   // Mesh nodes of the slice that lie on its slicing surface, at most about 50, with the depth's gradient
   // reversed there: the tool axis points out of the volume, towards the reference surface.
   const Box box = boxOf(slice);
-  BRepMesh_IncrementalMesh(slice, 2e-3 * box.size, Standard_False, 0.3, Standard_False);
+  geometry::meshShape(slice, 2e-3 * box.size, 0.3, false);
   std::vector<Eigen::Vector3d> on;
   for (TopExp_Explorer it(slice, TopAbs_FACE); it.More(); it.Next()) {
     TopLoc_Location location;

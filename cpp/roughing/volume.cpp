@@ -1,6 +1,7 @@
 #include "roughing/roughing.hpp"
 #include "common/fork_safety.hpp"
 #include "geometry/bounds.hpp"
+#include "geometry/mesh.hpp"
 
 #include "common/error.hpp"
 #include "common/occt_progress.hpp"
@@ -8,7 +9,6 @@
 #include "roughing/rays.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <Bnd_Box.hxx>
 #include <Poly_Triangulation.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
@@ -250,7 +250,7 @@ VolumeToRemove volumeToRemove(const TopoDS_Shape& stock, const TopoDS_Shape& par
   {
     Bnd_Box box = geometry::exactBounds(part);
     const double size = std::sqrt(box.SquareExtent());
-    BRepMesh_IncrementalMesh(part, 2e-3 * size, Standard_False, 0.5, occtMayRunInParallel());
+    geometry::meshShape(part, 2e-3 * size, 0.5, occtMayRunInParallel());
     BRepClass3d_SolidClassifier inStock(stock);
     for (TopExp_Explorer it(part, TopAbs_FACE); it.More(); it.Next()) {
       TopLoc_Location location;

@@ -37,6 +37,7 @@
 #pragma once
 
 #include "common/progress.hpp"
+#include "geometry/mesh.hpp"
 #include "toolpath/dropcutter.hpp"
 
 #include <Geom_BSplineCurve.hxx>
@@ -67,6 +68,7 @@ struct FinishingSettings {
   double clearance = 5.0;       // mm: rapids at the part's top + clearance
   double extension = -1.0;      // mm past open boundaries; < 0: the tool radius
   double meshDeflection = 0.004;  // mm, for the faces around the bottom face
+  double meshSeconds = geometry::kMeshSeconds;  // s OCCT's mesher may take on them (a malformed face: for ever)
   double sampling = 0.25;       // mm between cutter positions before refinement
   int threads = 0;              // 0: all cores
   ProgressCallback progress;    // share of the passes done; returning false cancels (throws Cancelled)

@@ -40,6 +40,9 @@ void validate(const FinishingSettings& s) {
   checkRange(s.sampling, kMinSampling, s.toolRadius, "sampling", "cutter positions every 0.25 mm by default");
   checkRange(s.clearance, 0.0, kMaxClearance, "clearance", "rapids run this far above the part, e.g. 5 mm");
   checkRange(s.meshDeflection, 1e-3, 1.0, "mesh deflection", "0.004 mm by default");
+  if (!(s.meshSeconds > 0.0 && s.meshSeconds <= 3600.0))
+    throw InputError("mesh time limit " + std::to_string(s.meshSeconds) + " s must be in ]0, 3600] s (" +
+                     std::to_string(static_cast<int>(geometry::kMeshSeconds)) + " s by default)");
   if (!(s.extension <= 10.0 * s.toolRadius) || std::isnan(s.extension))
     throw InputError("extension " + mm(s.extension) + " past open boundaries must be at most ten tool radii (" +
                      mm(10.0 * s.toolRadius) + "); a negative value means the tool radius");
@@ -74,7 +77,8 @@ Context::Context(const TopoDS_Shape& part, int bottomFace, const FinishingSettin
     if ((i != bottomFace || reach.up < 1.0) && nearInPlan) others.push_back(i);
   }
   geometry::TriangleMesh mesh =
-      others.empty() ? geometry::TriangleMesh{} : geometry::meshFacesKept(part, settings.meshDeflection, others);
+      others.empty() ? geometry::TriangleMesh{} : geometry::meshFacesKept(part, settings.meshDeflection, others,
+                                                                     settings.meshSeconds);
   geometry::addFaceBoundary(mesh, part, bottomFace, 0.05);
   cutter_ = std::make_unique<BallDropCutter>(mesh, settings.toolRadius);
   exact_ = std::make_unique<SurfaceBallDrop>(bottom_, settings.toolRadius, reach.toolSide);

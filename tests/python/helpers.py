@@ -2,6 +2,7 @@
 import os
 import subprocess
 import tempfile
+import unittest
 
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SYSTEM_PYTHON = "/usr/bin/python3"
@@ -53,3 +54,13 @@ def slot_roughing_job(name, strategy, **slot):
     op = roughing_op.CreateVolumeRoughing("Roughing", parentJob=job)
     op.Volume = volume
     return document, part, stock, job, controller, op
+
+
+def only_on_freecad(release, why):
+    """A test that can hold on one FreeCAD release only ("1.1", "1.0"): skipped on the others with a reason that
+    says where it holds and why (run_tests.py counts and lists these)."""
+    from hsmplanner.app.compat import freecad_version
+
+    running = "%d.%d" % freecad_version()
+    return unittest.skipUnless(running == release, "holds on FreeCAD %s only (this is %s): %s"
+                               % (release, running, why))

@@ -29,6 +29,23 @@ class RunningFreeCAD(unittest.TestCase):
 class FreeCAD1x(unittest.TestCase):
     """FreeCAD 1.x seen through fakes: version 1.0 and Path.Op.Base present."""
 
+    def test_year_numbered_releases_are_later_than_1_1(self):
+        """FreeCAD numbers its releases by year after 1.1 (26.3 is the next): every version check holds for it."""
+        from hsmplanner.gui import colors
+
+        for reported, expected in ((["26", "3", "0", ""], (26, 3)), (["26", "3dev", "", ""], (26, 3)),
+                                   (["1", "1", "3", ""], (1, 1))):
+            with mock.patch.object(compat.FreeCAD, "Version", return_value=reported):
+                self.assertEqual(compat.freecad_version(), expected)
+                self.assertGreaterEqual(compat.freecad_version(), (1, 1))
+                self.assertTrue(compat.is_cam_era())
+                self.assertAlmostEqual(colors.view_color((1, 0, 0), 0.3)[3], 0.7)  # alpha, as 1.1 reads it
+        with mock.patch.object(compat.FreeCAD, "Version", return_value=["1", "0", "0", ""]):
+            self.assertAlmostEqual(colors.view_color((1, 0, 0), 0.3)[3], 0.3)  # 1.0 reads the transparency
+        with mock.patch.object(compat.FreeCAD, "Version", return_value=["weekly", "", "", ""]):
+            with self.assertRaisesRegex(ValueError, "no number to read"):
+                compat.freecad_version()
+
     def test_command_names_and_preferences(self):
         with mock.patch.object(compat.FreeCAD, "Version", return_value=["1", "0", "2", ""]):
             self.assertEqual(compat.cam_command_name("Job"), "CAM_Job")

@@ -11,9 +11,20 @@ import FreeCAD
 
 
 def freecad_version():
-    """(major, minor) of the running FreeCAD as integers."""
-    major, minor = FreeCAD.Version()[:2]
-    return int(major), int(minor)
+    """(major, minor) of the running FreeCAD as integers: (1, 1) for 1.1.3, (26, 3) for the year-numbered 26.3 that
+    follows 1.1 (so comparisons such as >= (1, 1) hold for it), a development suffix ("3dev") left out."""
+    return tuple(_leading_number(part) for part in FreeCAD.Version()[:2])
+
+
+def _leading_number(text):
+    digits = ""
+    for character in str(text).strip():
+        if not character.isdigit():
+            break
+        digits += character
+    if not digits:
+        raise ValueError("FreeCAD reports version %r: no number to read" % (FreeCAD.Version()[:2],))
+    return int(digits)
 
 
 def is_cam_era():
@@ -70,12 +81,17 @@ def cam_module(role):
 
 
 def post_module(name):
-    """A FreeCAD post-processor module by short name, e.g. post_module('linuxcnc')."""
-    for module in ("Path.Post.scripts.%s_post" % name, "PathScripts.post.%s_post" % name):
+    """A FreeCAD post-processor script by short name, e.g. post_module('linuxcnc'): a module whose
+    export(objects, filename, arguments) writes the program. From 26.3 on FreeCAD's class-based posts took the
+    short names and the scripts are `NAME_legacy_post`."""
+    for module in ("Path.Post.scripts.%s_post" % name, "Path.Post.scripts.%s_legacy_post" % name,
+                   "PathScripts.post.%s_post" % name):
         try:
-            return importlib.import_module(module)
+            found = importlib.import_module(module)
         except ImportError:
             continue
+        if hasattr(found, "export"):
+            return found
     raise ImportError("FreeCAD has no post-processor named %r: check the name (e.g. 'linuxcnc', 'grbl')" % name)
 
 

@@ -1,9 +1,11 @@
 #include "common/error.hpp"
 #include "geometry/brep.hpp"
+#include "geometry/mesh.hpp"
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,4 +65,18 @@ TEST(Brep, MalformedTextThatMadeOcctLoopForEverIsRefused) {
       "\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\nCurve2ds 0\nCurves 2\n1 0 0 0 1 0 0 \n"
       "1 0 20 0 0.99920095872178938 0.n039968038348871575 0 \nPolygon3D 0\n";
   EXPECT_THROW(hsm::geometry::readBrep(text), hsm::InputError);
+}
+
+// OCCT 7.9's mesher can run for ever on a malformed face: every mesh of the core is stopped at a time limit and
+// refused with a message that says what to check. Here a fine mesh of a sphere, given no time at all.
+TEST(Mesh, AMesherPastItsTimeLimitIsStoppedAndRefused) {
+  const TopoDS_Shape sphere = BRepPrimAPI_MakeSphere(50.0).Shape();
+  try {
+    meshFaces(sphere, 0.001, {}, 1e-9);
+    FAIL() << "a mesh with no time left was made";
+  } catch (const hsm::ComputationError& error) {
+    EXPECT_NE(std::string(error.what()).find("OCCT's mesher had not meshed the faces"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("Check geometry"), std::string::npos);
+  }
+  EXPECT_GT(meshFaces(BRepPrimAPI_MakeSphere(50.0).Shape(), 0.1).triangles.size(), 100u);  // in time: meshed
 }

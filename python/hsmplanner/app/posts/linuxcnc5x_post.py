@@ -14,7 +14,7 @@ import argparse
 import shlex
 
 from hsmplanner.app.posts.processor import processor_class
-from hsmplanner.app.posts.writer import (ROTARY, ProgramWriter, add_common_arguments, check_rotary_axes,
+from hsmplanner.app.posts.writer import (ROTARY, ProgramWriter, add_common_arguments, check_rotary_axes, job_of,
                                          operations_machine, post_machine, rotary_axes_of)
 
 TOOLTIP = "LinuxCNC 2.9, 5 axes with TCP kinematics (xyzac-trt): tool tip X Y Z and A B C, G64 P, feeds in mm/min"
@@ -59,7 +59,7 @@ def export(objectslist, filename, argstring):
     check_rotary_axes(rotary_axes_of(objectslist), machine)
     check_travel(objectslist, machine)
     writer = ProgramWriter(args, comment_format="(%s)")
-    job = next((o for o in objectslist if hasattr(o, "Operations")), None)
+    job = job_of(objectslist)
     name = args.program_name or (job.Label if job is not None else "program")
     writer.comment("%s - LinuxCNC 5-axis post of HSM Planner, machine %s (%s, tool tip programmed)"
                    % (name, machine.name, machine.kinematics))

@@ -18,8 +18,8 @@ import argparse
 import shlex
 
 from hsmplanner.app.posts.processor import processor_class
-from hsmplanner.app.posts.writer import (ProgramWriter, add_common_arguments, check_rotary_axes, post_machine,
-                                         rotary_axes_of)
+from hsmplanner.app.posts.writer import (ProgramWriter, add_common_arguments, check_rotary_axes, job_of,
+                                         post_machine, rotary_axes_of)
 
 TOOLTIP = "Siemens 840D: CYCLE832(tolerance), G642, SOFT, ';' comments, N numbers, feeds in mm/min"
 
@@ -44,7 +44,7 @@ def export(objectslist, filename, argstring):
         check_rotary_axes(rotary, machine)
     writer = ProgramWriter(args, radius_letter="CR=", rotary_mode=args.orientation if rotary else "angles",
                            machine=machine)
-    job = next((o for o in objectslist if hasattr(o, "Operations")), None)
+    job = job_of(objectslist)
     name = args.program_name or (job.Label if job is not None else "program")
     writer.comment("%s - Siemens 840D post of HSM Planner" % name)
     writer.block("G17 G90 G71 G94 G40")

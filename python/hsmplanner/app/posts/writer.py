@@ -203,7 +203,7 @@ class ProgramWriter:
         script's [job, controllers…, operations…]) gets the Job's first work offset ahead of everything, so that
         both write the same program."""
         if not any(_is_work_offset(obj) for obj in objectslist):
-            job = next((o for o in objectslist if hasattr(o, "Operations")), None)
+            job = job_of(objectslist)
             fixtures = list(getattr(job, "Fixtures", []) or [])
             if fixtures:
                 self.block(fixtures[0])
@@ -229,6 +229,22 @@ class ProgramWriter:
             with open(filename, "w") as stream:
                 stream.write(text)
         return text
+
+
+def job_of(objects):
+    """The Job the objects to post belong to: the one among them (a script's [job, …]), else the Job holding
+    their operations (CAM's post list, as 1.0's Post Process gives a script, holds none); None if neither."""
+    job = next((o for o in objects if hasattr(o, "Operations")), None)
+    if job is not None:
+        return job
+    for obj in objects:
+        for parent in getattr(obj, "InList", []) or []:
+            if hasattr(parent, "Operations"):
+                return parent
+            job = next((p for p in getattr(parent, "InList", []) or [] if hasattr(p, "Operations")), None)
+            if job is not None:
+                return job
+    return None
 
 
 def _is_work_offset(obj):
