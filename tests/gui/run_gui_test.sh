@@ -13,6 +13,29 @@ cp "$here/user.cfg" "$config/user.cfg"
 
 export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
 failed=0
+
+# run_macro MACRO OUT: FreeCAD's GUI on MACRO through gui_launch.py, its log in OUT/freecad.log.
+run_macro() {
+  # The macro ends FreeCAD itself (gui_launch.py ends it at once if the macro raises while loading); `timeout` is
+  # the last resort if something blocks the event loop.
+  HSM_GUI_TEST_OUT=$2 HSM_GUI_MACRO=$1 timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" \
+    freecad "$here/gui_launch.py" > "$2/freecad.log" 2>&1
+}
+
+# The launcher itself: a macro that raises while loading ends FreeCAD at once with its traceback in the verdict.
+if [ -z "${HSM_GUI_TESTS:-}" ] || [[ " $HSM_GUI_TESTS " == *" launch "* ]]; then
+  out="$HSM_GUI_TEST_OUT/gui_launch_check"
+  mkdir -p "$out"
+  printf 'raise RuntimeError("the launcher check raised this")\n' > "$out/gui_raises.py"
+  begin=$(date +%s)
+  run_macro "$out/gui_raises.py" "$out"
+  took=$(( $(date +%s) - begin ))
+  echo "--- gui_launch_check (a macro that raises while loading: FreeCAD ended after $took s)"
+  if ! grep -q "the launcher check raised this" "$out/result.json" 2>/dev/null || [ "$took" -gt 120 ]; then
+    echo "GUI test launcher: FreeCAD did not end with the macro's traceback (after $took s)" >&2
+    failed=1
+  fi
+fi
 # HSM_GUI_TESTS="feedrate direction" runs only those macros (gui_feedrate.py, gui_direction.py).
 for macro in "$here"/gui_*.py; do
   name=$(basename "$macro" .py)
@@ -20,10 +43,7 @@ for macro in "$here"/gui_*.py; do
   if [ -n "${HSM_GUI_TESTS:-}" ] && [[ " $HSM_GUI_TESTS " != *" ${name#gui_} "* ]]; then continue; fi
   out="$HSM_GUI_TEST_OUT/$name"
   mkdir -p "$out"
-  # The macro ends FreeCAD itself (gui_launch.py ends it at once if the macro raises while loading); `timeout` is
-  # the last resort if something blocks the event loop.
-  HSM_GUI_TEST_OUT=$out HSM_GUI_MACRO=$macro timeout 600 xvfb-run -a -s "-screen 0 1280x1024x24" \
-    freecad "$here/gui_launch.py" > "$out/freecad.log" 2>&1
+  run_macro "$macro" "$out"
   status=$?
   result="$out/result.json"
   echo "--- $name"
