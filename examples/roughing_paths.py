@@ -19,7 +19,7 @@ import numpy as np
 
 from hsmplanner import feedsim, roughing
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
-from hsmplanner.app.roughing_commands import ProgramSource, sweep_commands
+from hsmplanner.app.roughing.commands import ProgramSource, sweep_commands
 from hsmplanner.plots.roughing import save_sweeps
 from hsmplanner.scripting import output_dir, run_script
 

@@ -23,7 +23,7 @@ import sys
 import time
 
 from hsmplanner import roughing
-from hsmplanner.app.roughing_study import COLUMNS, DEFAULT_FEED_MM_MIN, Rest, add_stock_mesh, study_strategy
+from hsmplanner.app.roughing.study import COLUMNS, DEFAULT_FEED_MM_MIN, Rest, add_stock_mesh, study_strategy
 from hsmplanner.geometry import shape_from_brep
 from hsmplanner.plots.roughing_study import save_pareto, save_stock_maps, save_study_bars
 from hsmplanner.scripting import output_dir, run_script, script_arguments
@@ -84,8 +84,12 @@ def main(argv):
     wheel = roughing.impeller()
     volume = Channels(roughing.volume_to_remove(wheel.stock_brep, wheel.part_brep), channels)
     rows, maps, meshes = [], [], []
-    for name in strategies:
+    for number, name in enumerate(strategies, 1):
         common = dict(resolution=resolution)
+        print("%s (%d of %d), %d channel%s: as the paper, with step-up, with step-up and a rest roughing (%.0f s so "
+              "far)" % (name, number, len(strategies), len(volume.solids), "" if len(volume.solids) == 1 else "s",
+                        time.perf_counter() - started))
+        sys.stdout.flush()
         for variant in (dict(step_up=False), dict(program=os.path.join(out, "roughing_study_%s_840d.mpf" % name)),
                         dict(rest=Rest(), stock_mesh_stride=STOCK_BLOCK_RAYS)):
             result = study_strategy(name, wheel.part_brep, wheel.stock_brep, volume, **common, **variant)

@@ -1,4 +1,4 @@
-"""The guidance-curve paper's hand study done by the machine (issue 18): on the master bottom feature at
+"""The guidance-curve paper's hand study done by the machine: on the master bottom feature at
 4 m/min on the paper's Mikron UCP 710 / 840D, 40 finishing variants — parallel planes every 15°, guide nets for
 K in {0.25, 0.5, 0.75} x P in {5, 10, 20} x {B1 to B2, median to the boundaries, boundaries to the median}, and
 the paper's 4-step method — each generated, simulated and scored, ranked by simulated time, with the Pareto

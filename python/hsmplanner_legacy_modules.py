@@ -1,5 +1,6 @@
-"""FreeCAD 0.20's Path module names, resolved to their FreeCAD 0.21+/1.x successors, so that documents saved
-with FreeCAD 0.20 restore the proxies of their Job, stock, setup sheet, tool controllers and tool bits.
+"""Module names that saved documents hold and that moved, resolved to their successors: FreeCAD 0.20's Path
+modules (so that documents saved with FreeCAD 0.20 restore the proxies of their Job, stock, setup sheet, tool
+controllers and tool bits), and HSM Planner's own roughing modules, gathered into hsmplanner.app.roughing.
 
 A saved document records each proxy by module and class ("PathScripts.PathJob", "ObjectJob"). FreeCAD 0.21
 moved those modules to Path.* (Path.Main.Job…) and FreeCAD 1.0 keeps no alias for them (only
@@ -31,6 +32,12 @@ RENAMED = {
     "PathScripts.PathToolBitGui": "Path.Tool.Gui.Bit",
     "PathScripts.PathIconViewProvider": "Path.Base.Gui.IconViewProvider",
     "PathScripts.PathPropertyBagGui": "Path.Base.Gui.PropertyBag",
+    # HSM Planner's own roughing modules, gathered into hsmplanner.app.roughing (their classes kept their names)
+    "hsmplanner.app.roughing_parts": "hsmplanner.app.roughing.parts",
+    "hsmplanner.app.roughing_object": "hsmplanner.app.roughing.volume",
+    "hsmplanner.app.roughing_op": "hsmplanner.app.roughing.operation",
+    "hsmplanner.app.roughing_commands": "hsmplanner.app.roughing.commands",
+    "hsmplanner.app.roughing_study": "hsmplanner.app.roughing.study",
 }
 
 

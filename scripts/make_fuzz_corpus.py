@@ -2,8 +2,8 @@
 
     freecadcmd scripts/make_fuzz_corpus.py
 
-Seeds are real inputs the harnesses accept (the master bottom feature and small parts), and the bad inputs
-of issue 10, so that fuzzing starts from both sides of the parsers. Inputs found by `make fuzz` are kept
+Seeds are real inputs the harnesses accept (the master bottom feature and small parts), and bad inputs
+that once crashed or hung the core, so that fuzzing starts from both sides of the parsers. Inputs found by `make fuzz` are kept
 beside them under their libFuzzer names; `make test` replays every file.
 """
 import os

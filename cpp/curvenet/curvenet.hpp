@@ -22,7 +22,7 @@
 //   ends. The
 //   default gap, 2 mm, the radius of the paper's 4 mm ball, reproduces the curve counts of Tables 1 and 2.
 //
-// Bounded work (issue 10): a net has at most kMaxPlanes planes (a step P that would need more is refused
+// Bounded work: a net has at most kMaxPlanes planes (a step P that would need more is refused
 // with the step that fits), P at least kMinStep, the fit tolerance in [kMinFitTolerance, 1] mm, and at
 // most maxCurvesPerNet curves per net: a K that would need more (each curve closes the share K of the
 // gap left, so about log(gap/width)/log(1 − K) curves) is refused before any is built. A minimum gap as

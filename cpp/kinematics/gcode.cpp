@@ -79,6 +79,7 @@ struct GcodeReader::Impl {
   Impl(std::istream& input, const ReaderOptions& options) : source(input), interpreter(options) {}
 
   bool next(Block& block) {
+    if (interpreter.takeQueued(block)) return true;  // the rest of a canned cycle's moves
     std::string_view raw;
     while (source.next(raw)) {
       ++lineNumber;

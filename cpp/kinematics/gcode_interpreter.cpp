@@ -18,6 +18,13 @@ bool isFrameKeyword(std::string_view name) {
 }
 }  // namespace
 
+bool Interpreter::takeQueued(Block& block) {
+  if (queued_.empty()) return false;
+  block = queued_.front();
+  queued_.pop_front();
+  return true;
+}
+
 bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
   lineNumber_ = lineNumber;
   LineWords words;
@@ -67,10 +74,15 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
 
 void Interpreter::applyModes(const LineWords& w) {
   if (w.hasFeed && !w.dwell) {
-    if (w.fWord <= 0.0 || !std::isfinite(w.fWord))
-      throw ParseError(lineNumber_, "feed rate F" + std::to_string(w.fWord) + " must be positive");
+    // F0 is legal where no feed move follows it (FreeCAD CAM's area operations write `G0 F0 Z…`, as LinuxCNC
+    // reads it): a feed move at F0 is the error, named with the line that set it.
+    if (w.fWord < 0.0 || !std::isfinite(w.fWord))
+      throw ParseError(lineNumber_, "feed rate F" + std::to_string(w.fWord) + " must be positive (or 0 on a rapid)");
     // G93: F is the inverse of the block's time in minutes, given on every feed move.
-    if (!inverseTime_) feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
+    if (!inverseTime_) {
+      feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
+      zeroFeedLine_ = w.fWord == 0.0 ? lineNumber_ : 0;
+    }
   }
   if (w.dwell) {
     const double seconds = w.pWord >= 0.0 ? w.pWord : w.hasFeed ? w.fWord : -1.0;  // LinuxCNC G4 P, Siemens G4 F
@@ -88,9 +100,16 @@ void Interpreter::applyModes(const LineWords& w) {
     mergeTolerance_ = (w.hasQ ? w.qWord : std::max(0.0, w.pWord)) * unit_;
   }
   if (w.newMotion >= 0) motion_ = w.newMotion;
+  // G0-G3 and G80 end a canned cycle (one modal group); a cycle's G word starts one, from the Z it is at.
+  if (w.newMotion >= 0 || w.cancelCycle) cycle_ = 0;
+  if (w.cycle > 0) {
+    if (cycle_ == 0) cycleStartZ_ = position_.z();
+    cycle_ = w.cycle;
+  }
 }
 
 bool Interpreter::makeBlock(const LineWords& w, Block& block) {
+  if (cycle_ != 0 && (w.cycle > 0 || w.anyAxis())) return cycleBlocks(w, block);
   if ((w.newMotion == 2 || w.newMotion == 3) && !w.anyAxis() && !w.anyOffset() && !w.hasRadius)
     throw ParseError(lineNumber_, "G" + std::to_string(w.newMotion) + " without an end point or a centre: an arc "
                                   "needs X/Y/Z and I/J/K (or R); the line moves nothing");
@@ -136,7 +155,11 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
     block.feed = w.fWord / 60.0;
     block.motion = motion_ == 1 ? Motion::Linear : motion_ == 2 ? Motion::ArcClockwise : Motion::ArcCounterClockwise;
   } else {
-    if (feed_ <= 0.0) throw ParseError(lineNumber_, "no feed rate: program F before the first G1/G2/G3 move");
+    if (feed_ <= 0.0)
+      throw ParseError(lineNumber_, zeroFeedLine_ > 0
+                                        ? "a feed move at F0 (set at line " + std::to_string(zeroFeedLine_) +
+                                              "): program a positive F before G1/G2/G3"
+                                        : "no feed rate: program F before the first G1/G2/G3 move");
     block.feed = feed_;
     block.motion = motion_ == 1 ? Motion::Linear : motion_ == 2 ? Motion::ArcClockwise : Motion::ArcCounterClockwise;
   }
@@ -151,6 +174,88 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   orientation_ = orientationTarget;
   ++stats_.motionBlocks;
   return true;
+}
+
+Block Interpreter::straightBlock(const Eigen::Vector3d& target, bool rapid) const {
+  Block block;
+  block.start = position_;
+  block.end = target;
+  block.line = lineNumber_;
+  block.motion = rapid ? Motion::Rapid : Motion::Linear;
+  block.feed = rapid ? 0.0 : feed_;
+  block.pathMode = pathMode_;
+  block.tolerance = tolerance_;
+  block.mergeTolerance = pathMode_ == PathMode::Rounding ? mergeTolerance_ : 0.0;
+  block.compressor = compressor_;
+  block.jerkLimited = jerkLimited_;
+  block.rotary = rotarySeen_;
+  if (rotarySeen_) {
+    block.rotaryEnd = rotary_;
+    block.orientationEnd = orientation_;
+    block.orientationByAxes = orientationByAxes_;
+    block.toolTip = toolTip_;
+  }
+  return block;
+}
+
+// LinuxCNC's canned cycles (its G-code reference, "G81 Drilling Cycle" and the following sections): the tool
+// goes up to R if below it, across to X Y, down to R, then drills to Z (G81, G82 with a dwell of P s, G86; G83
+// in pecks of Q, back to R after each and rapidly down to 0.254 mm above the last depth; G73 in pecks of Q
+// breaking the chip by a 0.254 mm retract; G85, G89 and G84 feed back out), and retracts to R (G99) or to the
+// Z the cycles started from if higher (G98).
+bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
+  const std::string name = "G" + std::to_string(cycle_);
+  if (plane_ != 17) throw ParseError(lineNumber_, name + " in G" + std::to_string(plane_) + ": canned cycles are read in "
+                                                  "the XY plane (G17) only");
+  if (!absolute_) throw ParseError(lineNumber_, name + " in G91: canned cycles are read in absolute coordinates (G90)");
+  if (inverseTime_) throw ParseError(lineNumber_, name + " in G93: give the cycle's feed per minute (G94)");
+  if (w.hasRadius) cycleR_ = w.radiusWord * unit_;
+  if (w.hasAxis[2]) cycleZ_ = w.axis[2] * unit_;
+  if (w.hasQ) cycleQ_ = w.qWord * unit_;
+  if (w.hasP) cycleP_ = w.pWord;
+  if (!std::isfinite(cycleR_) || !std::isfinite(cycleZ_))
+    throw ParseError(lineNumber_, name + " needs R (the retract plane) and Z (the hole's bottom), given on its line "
+                                         "or an earlier cycle's");
+  if (cycleZ_ > cycleR_)
+    throw ParseError(lineNumber_, name + ": the bottom Z" + number(cycleZ_) + " is above the retract plane R" +
+                                      number(cycleR_));
+  const bool pecks = cycle_ == 83 || cycle_ == 73;
+  if (pecks && !(cycleQ_ > 0.0))
+    throw ParseError(lineNumber_, name + " needs Q > 0: the depth of each peck (mm)");
+  if (pecks && (cycleR_ - cycleZ_) / cycleQ_ > 1e5)
+    throw ParseError(lineNumber_, name + ": " + number(cycleR_ - cycleZ_) + " mm in pecks of Q" + number(cycleQ_) +
+                                      " is over 100,000 pecks: give a larger Q");
+  if (feed_ <= 0.0)
+    throw ParseError(lineNumber_, name + " drills at F0: program a positive F before the cycle");
+  const double x = w.hasAxis[0] ? w.axis[0] * unit_ : position_.x();
+  const double y = w.hasAxis[1] ? w.axis[1] * unit_ : position_.y();
+  const double clear = retractToR_ ? cycleR_ : std::max(cycleStartZ_, cycleR_);
+  constexpr double kPeckClearance = 0.254;  // mm: LinuxCNC's 0.010 inch above the last peck, or back for G73
+  auto go = [&](double tx, double ty, double tz, bool rapid) {
+    const Eigen::Vector3d target(tx, ty, tz);
+    if ((target - position_).squaredNorm() == 0.0) return;
+    queued_.push_back(straightBlock(target, rapid));
+    position_ = target;
+    ++stats_.motionBlocks;
+  };
+  if (position_.z() < cycleR_) go(position_.x(), position_.y(), cycleR_, true);
+  go(x, y, position_.z(), true);
+  go(x, y, cycleR_, true);
+  if (pecks) {
+    for (double depth = cycleR_; depth > cycleZ_;) {
+      const double next = std::max(cycleZ_, depth - cycleQ_);
+      if (cycle_ == 83 && depth < cycleR_) go(x, y, depth + kPeckClearance, true);
+      go(x, y, next, false);
+      depth = next;
+      if (depth > cycleZ_) go(x, y, cycle_ == 83 ? cycleR_ : depth + kPeckClearance, true);
+    }
+  } else {
+    go(x, y, cycleZ_, false);
+  }
+  if (cycle_ == 82 || cycle_ == 86 || cycle_ == 89) stats_.dwellTime += cycleP_;
+  if (cycle_ == 84 || cycle_ == 85 || cycle_ == 89) go(x, y, cycleR_, false);
+  go(x, y, clear, true);
+  return takeQueued(block);
 }
 
 void Interpreter::unknown(std::string_view word) {
@@ -190,8 +295,12 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
     // canned-cycle cancel, feed per minute, exact-stop windows, return modes, machine coordinates.
     case 930: inverseTime_ = true; break;
     case 940: inverseTime_ = false; break;
+    case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 890: words.cycle = int(code / 10); break;
+    case 800: words.cancelCycle = true; break;
+    case 980: retractToR_ = false; break;
+    case 990: retractToR_ = true; break;
     case 400: case 410: case 420: case 430: case 431: case 490: case 530: case 540: case 550: case 560:
-    case 570: case 580: case 590: case 800: case 980: case 990: case 6010: case 6020: case 6030:
+    case 570: case 580: case 590: case 6010: case 6020: case 6030:
     case 150: case 160: case 5000: case 5010:
       break;
     default: unknown(w.text);

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <deque>
+#include <limits>
 #include <string_view>
 
 namespace hsm::kinematics::detail {
@@ -13,6 +15,8 @@ namespace hsm::kinematics::detail {
 // What one line says, before it is applied to the modal state.
 struct LineWords {
   int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3
+  int cycle = 0;       // 73, 81…86, 89 when the line has that canned cycle's G word
+  bool cancelCycle = false;  // G80
   bool exactStopHere = false, dwell = false, g64 = false;
   bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
@@ -33,6 +37,8 @@ public:
 
   // Applies one line (number `lineNumber`); true when it produced a motion block.
   bool interpret(const Line& line, long lineNumber, Block& block);
+  // The next block a line made beyond its first (a canned cycle's moves), if any: taken before the next line.
+  bool takeQueued(Block& block);
   ReaderStats& stats() { return stats_; }
   const ReaderStats& stats() const { return stats_; }
 
@@ -52,6 +58,9 @@ private:
   // within it, SOFT and the compressor; no argument (or 0) deselects it (G64, BRISK).
   void cycle832(std::string_view arguments);
   void arc(Block& block, const LineWords& words);
+  // A canned cycle's moves at the line's X Y (LinuxCNC's semantics, G17, G90): queued, the first in `block`.
+  bool cycleBlocks(const LineWords& words, Block& block);
+  Block straightBlock(const Eigen::Vector3d& target, bool rapid) const;
   void rotaryWord(int axis, double value, std::string_view text, LineWords& words);
   // The orientation at the end of the line (A3 B3 C3, a component not given is 0), unit; throws on zero length.
   Eigen::Vector3d orientationTarget(const LineWords& words) const;
@@ -68,6 +77,7 @@ private:
   bool arcCentreAbsolute_ = false;
   double unit_ = 1.0;  // mm per program unit
   double feed_ = 0.0;  // mm/s
+  long zeroFeedLine_ = 0;  // the line that set F0 (legal until a feed move: CAM writes it on rapids)
   PathMode pathMode_ = PathMode::Continuous;
   double tolerance_ = 0.0;
   double roundingTolerance_ = 0.0;  // from CYCLE832 or ADIS; used by G641/G642
@@ -77,6 +87,14 @@ private:
   Eigen::Vector3d rotary_ = Eigen::Vector3d::Zero();       // A B C, deg
   Eigen::Vector3d orientation_ = Eigen::Vector3d::Zero();  // last A3 B3 C3 (unit), zero before any
   bool rotarySeen_ = false, toolTip_ = false, orientationByAxes_ = false, inverseTime_ = false;
+
+  // Canned cycles: the cycle in effect (0: none), its sticky words (R, Z, Q in mm; P in s), the Z the cycles
+  // started from (G98 returns there, or to R if higher; G99 to R), and the blocks still to hand out.
+  int cycle_ = 0;
+  bool retractToR_ = false;
+  double cycleR_ = std::numeric_limits<double>::quiet_NaN(), cycleZ_ = std::numeric_limits<double>::quiet_NaN();
+  double cycleQ_ = 0.0, cycleP_ = 0.0, cycleStartZ_ = 0.0;
+  std::deque<Block> queued_;
 };
 
 }  // namespace hsm::kinematics::detail

@@ -1,7 +1,7 @@
 // 3-axis ball-end finishing of a bottom face: parallel planes, and passes morphed between guide curves
 // (guidance-curve paper §2.2, §3).
 //
-// How (where the paper and the issue are silent, the choices are ours):
+// How (where the paper is silent, the choices are ours, as a CAM programmer expects them):
 // - Gouge-free positions: the ball dropped exactly on the bottom face (its centre on the offset surface,
 //   found by Newton: no mesh error where the finish matters) and by drop-cutter on a mesh of every face
 //   touching it (flanks, within 0.004 mm) and on the bottom face's own edges; the highest contact wins.
@@ -22,7 +22,7 @@
 //   downward the other way. Zigzag alternates pass directions and links neighbours by a G1 move that
 //   follows the surface when they are within ten tool radii and the link would not climb a wall;
 //   otherwise, and for one-way, the tool retracts to the safe height, moves in G0 and plunges in G1.
-// - Reach (issue 10): the drop-cutter holds the tool off every face of the part, not only the bottom
+// - Reach: the drop-cutter holds the tool off every face of the part, not only the bottom
 //   face's neighbours, so no pass can cut through the part to a face below. A face the tool along +Z
 //   cannot reach (a wall, a face that looks down) is refused by name; where only part of it is out of
 //   reach, that part is left with a warning (toolpath/reach.hpp).

@@ -1,5 +1,5 @@
-// Which parts of a face a 3-axis tool along +Z can reach (issue 10: a face that looks down, or a wall,
-// was "finished" by passes through the part).
+// Which parts of a face a 3-axis tool along +Z can reach: without this check a face that looks down, or a
+// wall, would be "finished" by passes through the part.
 //
 // The face is sampled on a grid of its parameters, inside its boundaries. The tool is on the side the
 // face's normal points to, as FreeCAD shows it (the surface's normal, turned when the face is reversed):

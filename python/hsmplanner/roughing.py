@@ -14,6 +14,8 @@ cpp/roughing/sweep.hpp) with an independent clearance check (cpp/roughing/cleara
 
 Shapes are FreeCAD Part shapes or BREP text; results carry BREP text (`brep`) and plain attributes.
 """
+import math
+
 from . import _core
 from .core_settings import core_settings, enum_value
 from .geometry import as_brep
@@ -155,6 +157,9 @@ def check_clearance(paths, part, tool=None, limit=None, spacing=1.0, deflection=
     tool = tool if tool is not None else _core.roughing.Cutter()
     if limit is None:
         limit = _core.roughing.SweepSettings().allowance - 0.01
+    if not math.isfinite(float(limit)) or not float(limit) >= 0.0:
+        raise ValueError("clearance limit %r mm must be a finite distance of 0 or more: the closest the tool may "
+                         "come to the part (e.g. the allowance - 0.01 mm)" % (limit,))
     return _core.roughing.check_clearance(moves["tip"], moves["axis"], as_brep(part), tool, float(limit),
                                           float(spacing), float(deflection))
 
@@ -258,7 +263,15 @@ def save_stl(mesh, path, name="stock left"):
     import numpy as np
 
     points, triangles = (np.asarray(a) for a in mesh)
-    corners = points[triangles.reshape(-1, 3)].reshape(-1, 3, 3)
+    if points.ndim != 2 or points.shape[1:] != (3,) or triangles.size % 3:
+        raise ValueError("save_stl takes ((N, 3) points, (M, 3) triangles), got arrays of shapes %s and %s"
+                         % (points.shape, triangles.shape))
+    triangles = triangles.reshape(-1, 3)
+    if triangles.size and (not np.issubdtype(triangles.dtype, np.integer) or triangles.min() < 0
+                           or triangles.max() >= len(points)):
+        raise ValueError("save_stl: triangle corners must be indices of the %d points (0 to %d), got %s to %s"
+                         % (len(points), len(points) - 1, triangles.min(), triangles.max()))
+    corners = points[triangles].reshape(-1, 3, 3)
     normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
     lengths = np.linalg.norm(normals, axis=1)
     normals = normals / np.where(lengths > 0, lengths, 1.0)[:, None]

@@ -1,4 +1,4 @@
-"""Automatic strategy study of finishing (issue 18, first part): a grid of variants — parallel planes at an
+"""Automatic strategy study of finishing: a grid of variants — parallel planes at an
 angle, guide curves (net mode, K, P, median or not), the 4-step method — at feed set points on machine models,
 each generated, simulated on its machine and scored; the rows ranked by simulated time, by the share of time
 below half the feed, or as a Pareto front of both.
@@ -229,7 +229,7 @@ def score(variant, stats, result):
 
 
 def _slow_cutting(blocks):
-    """Per block: a cutting block whose mean feed is below half the programmed one (the issue's 'below 0.5·F')."""
+    """Per block: a cutting block whose mean feed is below half the programmed one (slower than 0.5·F: where the machine loses time)."""
     feed = np.asarray(blocks["programmed_feed"])
     return (np.asarray(blocks["motion"]) != 0) & (np.asarray(blocks["mean_feed"]) < 0.5 * feed)
 
@@ -332,8 +332,14 @@ def study(part, face, b1, b2, grid, workers=0, cache_dir=None, finishing=None, p
 
 
 def _inputs(part, face, b1, b2):
-    """What every variant runs on, as it travels to workers: the shapes as BREP text (no boundaries: None)."""
-    return (as_brep(part), face, *(None if b is None else as_brep(b) for b in (b1, b2)))
+    """What every variant runs on, as it travels to workers: the shapes as BREP text (no boundaries: None). A
+    bottom face the part does not have is refused here, naming the faces it has."""
+    brep = as_brep(part)
+    count = _core.summarize_brep(brep).faces
+    number = toolpaths.face_number(face)
+    _check(number <= count, "bottom face %r does not exist: the part has %d faces, Face1 to Face%d"
+           % (face, count, count))
+    return (brep, face, *(None if b is None else as_brep(b) for b in (b1, b2)))
 
 
 def _collect(futures, ready, finished, idle, failed_row):
@@ -603,9 +609,3 @@ def write_json(rows, path):
 
 
 __all__ = ["parse_range", "variants", "paper_grid", "variant_name", "short_name", "variant_moves", "simulate_variant", "run_variant", "score", "worst_slowdowns", "local_cluster", "study", "refine_k", "rank", "pareto_front", "write_csv", "write_json", "_core"]
-
-
-if __name__ == "__main__":  # python3 -m hsmplanner.study …: the command line (study_cli), as hsm-study
-    from hsmplanner.study_cli import console_main
-
-    sys.exit(console_main("python3 -m hsmplanner.study"))

@@ -1,5 +1,5 @@
 """Command line of the strategy study, for batch use (`hsm-study --help` where the package is installed,
-python3 -m hsmplanner.study --help from a clone).
+python3 -m hsmplanner.study_cli --help from a clone).
 
     hsm-study part.step --face Face4 --b1 Edge12 --b2 Edge20 --planes 0:180:15 \\
         --k 0.25,0.5,0.75 --p 5,10,20 --four-step --feeds 4000 --workers 2 --csv study.csv
@@ -21,7 +21,7 @@ def _numbers(text, what):
         raise argparse.ArgumentTypeError(str(error)) from None
 
 
-def parser(prog="python3 -m hsmplanner.study"):
+def parser(prog="python3 -m hsmplanner.study_cli"):
     p = argparse.ArgumentParser(prog=prog, description="Rank finishing strategies of a face "
                                 "between two boundaries by simulated machining time and slowdowns.")
     p.add_argument("part", help="the part, a BREP or STEP file")
@@ -74,7 +74,7 @@ def element(shape, name, kind):
 
 
 def console_main(prog):
-    """The command line run by /usr/bin/python3 (hsm-study, python3 -m hsmplanner.study): FreeCAD's modules are
+    """The command line run by /usr/bin/python3 (hsm-study, python3 -m hsmplanner.study_cli): FreeCAD's modules are
     found in Debian's place first."""
     from hsmplanner.geometry import FREECAD_LIB
 
@@ -126,3 +126,7 @@ def main(argv=None, prog="python3 -m hsmplanner.study"):
     if args.json:
         study.write_json(rows, args.json)
     return 0 if any(not r.get("error") for r in rows) else 1
+
+
+if __name__ == "__main__":  # python3 -m hsmplanner.study_cli …: the command line of hsm-study, from a clone
+    sys.exit(console_main("python3 -m hsmplanner.study_cli"))

@@ -1,4 +1,4 @@
-// Curve nets on the master bottom feature. Issue figure: 13 curves at P = 5 mm in under 50 ms, so that the
+// Curve nets on the master bottom feature. Target: 13 curves at P = 5 mm in under 50 ms, so that the
 // K/P preview stays interactive. Run: build/bin/bench_curvenet
 #include "curvenet/curvenet.hpp"
 #include "curvenet/regions.hpp"

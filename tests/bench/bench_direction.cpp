@@ -1,4 +1,4 @@
-// The optimal machining direction. Issue figure: a 100 × 100 mm face sampled on a 50 × 50 grid, directions
+// The optimal machining direction. Target: a 100 × 100 mm face sampled on a 50 × 50 grid, directions
 // at 1°, in under 1 s. The face: the case-2-like valleys (15 mm deep, 45 mm apart, running at 45°), a
 // bicubic B-spline as a CAD system gives it. Run: build/bin/bench_direction
 #include "direction/direction.hpp"

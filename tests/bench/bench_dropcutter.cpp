@@ -20,7 +20,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// The spatial search alone, hand-written grid against OCCT's BVH (issue 12: keep the grid only if it is
+// The spatial search alone, hand-written grid against OCCT's BVH (keep the grid only if it is
 // faster): the triangles whose plan box grown by the radius may hold the ball at each raster point.
 void compareSpatialSearch(const TriangleMesh& mesh, const hsm::geometry::PointArray& raster, double radius) {
   std::vector<Eigen::AlignedBox2d> boxes;
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   const double buildTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - build).count();
   std::printf("%zu triangles, %.0f x %.0f mm, %ld cutter-location points; index built in %.3f s\n",
               mesh.triangles.size(), box.sizes().x(), box.sizes().y(), static_cast<long>(raster.rows()), buildTime);
-  // Why equal halves scaled 1.3-1.7x (issue 18): the cost of a point follows the mesh's density under it, so
+  // Why equal halves scaled 1.3-1.7x: the cost of a point follows the mesh's density under it, so
   // the two contiguous halves of the raster cost unequally and one thread waited for the other. Chunks taken
   // in turn (parallelChunks) balance it; the halves' times on one thread show the imbalance they had.
   const Eigen::Index half = raster.rows() / 2;

@@ -1,7 +1,7 @@
 // Feed-rate simulation throughput, measured in one run: reading alone, reading + simulating with the 840D
 // model (summary only), and the heap in use while simulating 1 M and 4 M blocks (it must not grow); then the same
 // moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
-// Issue figures: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes). Times are the
+// Targets: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes). Times are the
 // process's CPU time.
 // Run: build/bin/bench_feedsim [five-axis [blocks]]   (five-axis: only the 5-axis program, e.g. under perf)
 #include "kinematics/simulation.hpp"

@@ -2,7 +2,7 @@
 cutter-location points per second, on one core and on all, measured in one run; the best of three calls on
 the same part (its mesh kept from the first: a study's next variant, a preview after a change), and the first
 call on a part not meshed yet (the part moved by a micrometre each time, so that no kept mesh fits it).
-Issue figure: guide-curve finishing in under 2 s on one core. Run: freecadcmd tests/bench/bench_finishing.py
+Target: guide-curve finishing in under 2 s on one core. Run: freecadcmd tests/bench/bench_finishing.py
 """
 import sys
 import time

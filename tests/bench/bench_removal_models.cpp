@@ -1,4 +1,4 @@
-// Issue 17: the material-removal model chosen by measurement. The same case — the slanted slot block's S3
+// The material-removal model chosen by measurement. The same case — the slanted slot block's S3
 // path (the paper's Ø8 r1 torus), at 0.4 and 0.2 mm (or the resolutions given) — simulated by our tri-dexel model
 // (roughing/removal.hpp) and by a narrow-band level set in OpenVDB (Debian's libopenvdb-dev, MPL-2.0): the
 // stock and the part as level sets from their meshes, the tool meshed once, placed at each position by its

@@ -1,9 +1,9 @@
-// 5-axis roughing on the paper's test part, the 7-blade impeller. Part 1 (issue 14's figures: stock − part
+// 5-axis roughing on the paper's test part, the 7-blade impeller. Part 1 (stock − part
 // < 2 s, each partition of a channel < 5 s, the setup search of S3 < 5 s, one core): each step's time (best of
 // `runs`), the counts and the check that the sub-volumes add up; the setup search on 1 and 2 threads in the
-// same run. Part 2 (issue 16: one strategy's toolpaths on the impeller < 10 s): the sweeps (S1-S5) of every
+// same run. Part 2 (one strategy's toolpaths on the impeller < 10 s): the sweeps (S1-S5) of every
 // channel, and the 2-D offsets of one level by Clipper and by OCCT's BRepOffsetAPI_MakeOffset.
-// Part 3 (issue 17): material removal of each strategy on the whole impeller, 1 and 2 threads.
+// Part 3: material removal of each strategy on the whole impeller, 1 and 2 threads.
 // Run: build/bin/bench_roughing [runs] [removal [S1..S5|all] [threads]]   ("removal": part 3 only, the best
 // of `runs` of each simulation, of one strategy and on one thread count when named). Under `valgrind
 // --tool=cachegrind --cache-sim=no --instr-at-start=no` (or callgrind with --instr-atstart=no) only the
@@ -182,7 +182,7 @@ double machineSpeedUp() {
   return 2.0 * one / two;
 }
 
-// Part 3 (issue 17: material removal of one strategy on the impeller at 0.2 mm < 10 s on two cores; issue 27:
+// Part 3 (material removal of one strategy on the impeller at 0.2 mm < 10 s on two cores;
 // < 3 s on two threads and >= 1.8 x over one): each strategy's sweeps of all channels simulated on 1 and 2
 // threads (or on `threads` alone when > 0), the best of `runs` each (taken in turn), the speed-up and the CPU
 // seconds in the same run, and what the machine gave two threads of plain arithmetic just before.

@@ -1,4 +1,4 @@
-"""The strategy study's engines measured in one run (issue 18's figures): the paper's 40-variant grid on the
+"""The strategy study's engines measured in one run: the paper's 40-variant grid on the
 master bottom feature at 4 m/min, on 1 worker, on 2 worker processes, and on a local Dask cluster of 2 workers
 (processes of one thread; the cluster's start-up timed apart from the study on it). No cache: every variant is
 computed each time. Prints the wall times, the 2-worker speed-up and Dask's overhead against the process pool.

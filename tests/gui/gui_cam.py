@@ -272,6 +272,36 @@ def cams_operation_and_ours_in_the_job(run):
     run.screenshot("cam_job_with_our_operation")
 
 
+@run.step
+def cycle_time_of_the_job(run):
+    """HSM Planner's Cycle time on CAM's Job: a row per operation, CAM's and ours, with CAM's estimate, length /
+    feed and the simulated time, then the Job's total; the times also land on the operations."""
+    from hsmplanner.gui.cycle_time_panel import CycleTimePanel
+
+    job = state["job"]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(job)
+    Gui.runCommand("HSM_CycleTime")
+    run.wait_until(lambda: CycleTimePanel.active is not None, 30.0, "the Cycle time panel open")
+    panel = CycleTimePanel.active
+    if panel is None:
+        return
+    ops = [o for o in job.Operations.Group if o.Active]
+    table = panel.table
+    cells = [[table.item(r, c).text() if table.item(r, c) else "" for c in range(table.columnCount())]
+             for r in range(table.rowCount())]
+    run.notes["cycle time table"] = cells
+    run.check("a row per operation and the Job's", table.rowCount() == len(ops) + 1, str(cells))
+    run.check("every row simulated", all(row[3] for row in cells), str(cells))
+    run.check("the simulated time on each operation and the Job",
+              all(getattr(o, "SimulatedCycleTime", 0) > 0 for o in ops + [job]),
+              str([(o.Label, getattr(o, "SimulatedCycleTime", None)) for o in ops + [job]]))
+    run.check_fits_combo_view("Cycle time panel", panel.form)
+    run.screenshot("cam_cycle_time")
+    panel.reject()
+    run.wait_until(lambda: not run.task_dialog_open(), 10.0, "the Cycle time panel closed")
+
+
 def select_controller(controller):
     """The tool controller selected in the tree: CAM's next new operation takes it."""
     Gui.Selection.clearSelection()

@@ -141,6 +141,23 @@ def other_machine_colours_and_export(run):
 
 
 @run.step
+def a_second_run_opens_the_same_analysis(run):
+    """The command on a source that has its analysis opens that one (its machine kept), not another object."""
+    count = len([o for o in FreeCAD.ActiveDocument.Objects if hasattr(o, "Source")])
+    source = FreeCAD.ActiveDocument.getObject("FeedRateAnalysis").Source
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(source)
+    Gui.runCommand("HSM_FeedRateAnalysis")
+    run.wait_until(lambda: panel() is not None, 20.0, "the analysis's panel open again")
+    run.check("no second analysis object", len([o for o in FreeCAD.ActiveDocument.Objects if hasattr(o, "Source")])
+              == count, str([o.Name for o in FreeCAD.ActiveDocument.Objects]))
+    run.check("the panel is the first analysis's, on its machine", panel().obj.Name == "FeedRateAnalysis"
+              and panel().machine.currentText() == "grbl", panel().obj.Name)
+    panel().reject()
+    run.wait_until(lambda: panel() is None and not run.task_dialog_open(), 10.0, "the feed-rate panel closed")
+
+
+@run.step
 def an_operation_at_f0_gives_one_clear_message_in_the_panel(run):
     """FreeCAD's default tool controller has feeds of 0: the analysis of such a path says so, once, in its
     panel, instead of tracebacks and an empty panel."""

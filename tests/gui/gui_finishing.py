@@ -93,6 +93,27 @@ def parallel_plane_finishing_from_its_panel(run):
 
 
 @run.step
+def a_face_picked_before_the_command_is_taken(run):
+    """The user picks the bottom face, then Parallel plane finishing: the panel shows the face, OK computes."""
+    part = state["part"]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(part, part.BottomFace)
+    Gui.runCommand("HSM_ParallelPlaneFinishing")
+    run.wait_until(lambda: panel_open("ParallelPlaneFinishing001"), 30.0, "a second Parallel plane finishing panel")
+    op = FreeCAD.ActiveDocument.getObject("ParallelPlaneFinishing001")
+    panel = operation_panel(op)
+    page = panel.featurePages[-1]
+    run.check("the preselected face in the panel", page.form.face.text().endswith(part.BottomFace),
+              page.form.face.text())
+    panel.accept()
+    run.wait_until(lambda: accepted(op), 60.0, "the panel closed and the operation computed")
+    run.check("OK computes the operation on that face", op.isValid() and op.Passes > 100, "%s %s" % (op.State,
+                                                                                               op.Passes))
+    FreeCAD.ActiveDocument.removeObject(op.Name)
+    FreeCAD.ActiveDocument.recompute()
+
+
+@run.step
 def saved_documents_hold_no_absolute_icon_path(run):
     import tempfile
     import zipfile

@@ -118,7 +118,7 @@ def check_drawn_at_the_tips(op, label):
 
 @run.step
 def five_axis_roughing_op(run):
-    from hsmplanner.app import roughing_object, roughing_op, roughing_parts
+    from hsmplanner.app.roughing import volume as roughing_object, operation as roughing_op, parts as roughing_parts
     from hsmplanner.app.compat import create_job
     from hsmplanner.gui.finishing_ops_gui import COMMANDS
 

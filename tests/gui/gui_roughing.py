@@ -310,7 +310,7 @@ def volume_roughing_operation_in_the_job(run):
     slot) and the trunnion machine; OK computes a tilted path clear of the part."""
     from PySide import QtWidgets
 
-    from hsmplanner.app import roughing_op
+    from hsmplanner.app.roughing import operation as roughing_op
 
     document = FreeCAD.ActiveDocument
     job = next(o for o in document.Objects if hasattr(o, "Operations"))

@@ -26,10 +26,10 @@ def names(document):
 
 
 def new_part_with_volume_and_job(make, region):
-    """A test part and its stock (hsmplanner.app.roughing_parts), its Roughing volume made by the command from
+    """A test part and its stock (hsmplanner.app.roughing.parts), its Roughing volume made by the command from
     both selected (`region`: 0 for all), and a Job on the part with FreeCAD's default tool controller only (feeds
     of 0: no roughing tool)."""
-    from hsmplanner.app import roughing_parts
+    from hsmplanner.app.roughing import parts as roughing_parts
     from hsmplanner.app.compat import create_job
 
     document = FreeCAD.ActiveDocument
@@ -52,7 +52,7 @@ def new_part_with_volume_and_job(make, region):
 
 @run.step
 def slot_with_a_job_without_a_roughing_tool(run):
-    from hsmplanner.app.roughing_op import is_roughing_controller
+    from hsmplanner.app.roughing.operation import is_roughing_controller
 
     Gui.activateWorkbench("HSMPlannerWorkbench")
     FreeCAD.newDocument("RoughingPaths")
@@ -228,7 +228,7 @@ def check_refused(key, strategy, volume):
 
 
 def every_strategy(key, op, volume, stock, timeout):
-    from hsmplanner.app import roughing_object
+    from hsmplanner.app.roughing import volume as roughing_object
 
     document = FreeCAD.ActiveDocument
     for strategy in STRATEGIES:
@@ -259,7 +259,7 @@ def every_strategy_drawn_on_the_slot(run):
 def the_operation_panel_shows_and_sets_the_push_out(run):
     """The Volume roughing panel as a user opens it (double click: setEdit) has the push-out at its default, fits
     the Combo View, and its value reaches the operation, which recomputes with it."""
-    from hsmplanner.app import roughing_object
+    from hsmplanner.app.roughing import volume as roughing_object
 
     op, volume = state["slot_op"], state["slot"][2]
     volume.Strategy = roughing_object.strategy_label("S1")  # levels across the slot's leaning walls
@@ -287,7 +287,7 @@ def the_operation_panel_shows_and_sets_the_push_out(run):
 @run.step
 def every_strategy_drawn_on_an_impeller_channel(run):
     """One channel of the seven (region 1, the largest) at the volume's default step: seconds a strategy."""
-    from hsmplanner.app import roughing_op
+    from hsmplanner.app.roughing import operation as roughing_op
     from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
 
     part, stock, volume, job = new_part_with_volume_and_job("create_impeller", 1)

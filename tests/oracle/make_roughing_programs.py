@@ -14,8 +14,8 @@ import sys
 
 from hsmplanner import feedsim, roughing
 from hsmplanner.app.posts import linuxcnc5x_post
-from hsmplanner.app.roughing_commands import ProgramSource, sweep_commands
-from hsmplanner.app.roughing_study import DEFAULT_FEED_MM_MIN
+from hsmplanner.app.roughing.commands import ProgramSource, sweep_commands
+from hsmplanner.app.roughing.study import DEFAULT_FEED_MM_MIN
 from hsmplanner.scripting import run_script, script_arguments
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -1,4 +1,4 @@
-"""Bad inputs of every public function and document-object property (issue 10), run in child processes.
+"""Bad inputs of every public function and document-object property, run in child processes.
 
 Each case is code run in a namespace that holds the master bottom feature (`part`, boundaries `b1`, `b2`,
 bottom `face`) and helpers; it must raise the exception named with the words given (the input and the fix),
@@ -29,7 +29,7 @@ def holds(name, code, check):
 
 
 CASES = [
-    # --- the issue's crashes -------------------------------------------------------------------------------
+    # --- inputs that once crashed -------------------------------------------------------------------------------
     raises("curve_net P 0.003 (crashed OCCT)", "h.curve_net(b1, b2, 0.5, 0.003, face=face)", "ValueError",
            "step P = 0.003 mm must be at least"),
     raises("parallel_finishing on the wall Face1", "h.parallel_finishing(part, 'Face1')", "ValueError",
@@ -46,7 +46,7 @@ CASES = [
           "result[1]['passes'] > 5"),
     raises("parallel_finishing with a 60 mm ball", "h.parallel_finishing(part, 'Face4', tool_diameter=60)",
            "ValueError", "no pass of the 60 mm ball rests on Face4"),
-    # --- the issue's hangs ------------------------------------------------------------------------------------
+    # --- inputs that once hung ------------------------------------------------------------------------------------
     raises("curve_net P 1e-6", "h.curve_net(b1, b2, 0.5, 1e-6, face=face)", "ValueError", "step P = 1e-06 mm"),
     raises("curve_net P 0.05 needs 2800 planes", "h.curve_net(b1, b2, 0.5, 0.05, face=face)", "ValueError",
            "the limit is 2000 planes: use P of at least"),
@@ -101,6 +101,8 @@ CASES = [
            "ball-end finishing needs a ball end mill"),
     raises("feed-rate analysis of an operation with feeds of 0", "feedrate_of_zero_feed()", "ValueError",
            "cuts at F0"),
+    holds("F0 on a rapid, as FreeCAD CAM's area operations end", "result = h.simulate('G1 X1 F100\\nG0 F0.000000 Z5\\n', 'linuxcnc-2.9').summary.block_count", "result == 2"),
+    raises("a feed move after F0", "h.simulate('G1 X1 F100\\nG0 F0 Z5\\nG1 X2\\n', 'linuxcnc-2.9')", "ValueError", "line 3: a feed move at F0 (set at line 2)"),
     raises("G4 P-5", "h.simulate('G4 P-5\\n', 'linuxcnc-2.9')", "ValueError", "G4 P-5: a dwell lasts 0 s or more"),
     # --- numbers in G-code that are not numbers ---------------------------------------------------------------
     raises("X1e400", "h.simulate('G1 X1e400 F100\\n', 'linuxcnc-2.9')", "ValueError", "line 1: 'X1E400': G-code numbers have no exponent"),
@@ -233,16 +235,16 @@ CASES = [
     holds("a master feature of zero length is invalid, with a message, and the document lives",
           "m = new_master(); m.Length = 0; m.recompute(); result = m.isValid()", "result is False"),
     # --- 5-axis roughing: the test parts and the Roughing volume (one line, the object stays valid) ----------
-    raises("slanted slot deeper than the block", "from hsmplanner.app import roughing_parts\n"
+    raises("slanted slot deeper than the block", "from hsmplanner.app.roughing import parts as roughing_parts\n"
            "s, _ = roughing_parts.create_slanted_slot_block(new_document()); s.SlotDepth = 40; status_error(s)",
            "ValueError", "does not fit in the block: make it smaller or the block larger"),
-    holds("slanted slot tilted 75° is clamped to 59°", "from hsmplanner.app import roughing_parts\n"
+    holds("slanted slot tilted 75° is clamped to 59°", "from hsmplanner.app.roughing import parts as roughing_parts\n"
           "s, _ = roughing_parts.create_slanted_slot_block(new_document()); s.Tilt = 75; result = s.Tilt.Value",
           "result == 59.0"),
-    raises("impeller blades too thick for the inlet", "from hsmplanner.app import roughing_parts\n"
+    raises("impeller blades too thick for the inlet", "from hsmplanner.app.roughing import parts as roughing_parts\n"
            "d = new_document(); w = d.addObject('Part::FeaturePython', 'W'); roughing_parts.Impeller(w); "
            "w.Thickness = 30; status_error(w)", "ValueError", "the blades are too thick for the inlet"),
-    holds("impeller of 100 blades is clamped to 24", "from hsmplanner.app import roughing_parts\n"
+    holds("impeller of 100 blades is clamped to 24", "from hsmplanner.app.roughing import parts as roughing_parts\n"
           "d = new_document(); w = d.addObject('Part::FeaturePython', 'W'); roughing_parts.Impeller(w); "
           "w.Blades = 100; result = w.Blades", "result == 24"),
     raises("roughing volume without a part", "o = new_slot_roughing(); o.Part = None; roughing_error(o)", "ValueError",
@@ -274,7 +276,7 @@ CASES = [
            "o = new_slot_roughing(Strategy='S2'); roughing_error(o)", "ValueError",
            "S2 needs a cylindrical crossable face (an outlet cylinder) and this volume has none: use S1, S3, S4 or S5"),
     raises("roughing volume S1 between two spheres (no planar crossable face)",
-           "d = new_document(); from hsmplanner.app import roughing_object\n"
+           "d = new_document(); from hsmplanner.app.roughing import volume as roughing_object\n"
            "o = roughing_object.create(new_solid(Part.makeSphere(10), 'Ball', d), "
            "new_solid(Part.makeSphere(20), 'Blank', d), Strategy='S1'); roughing_error(o)", "ValueError",
            "S1 needs a planar crossable face"),
@@ -286,7 +288,7 @@ CASES = [
            "roughing_error(o)", "ValueError", "use a coarser grid"),
     holds("roughing volume cancelled keeps its previous result and stays valid", "result = cancelled_roughing()",
           "result == (True, True, True)"),
-    # --- roughing sweep and clearance, 5-axis kinematics (issues 15, 16): absurd numbers and shapes ---------
+    # --- roughing sweep and clearance, 5-axis kinematics: absurd numbers and shapes ---------
     raises("sweep radial engagement NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, radial_engagement=float('nan'))",
            "ValueError", "radial engagement = nan must be in [0.01, 1]"),
     raises("sweep radial engagement 1e-9 (endless rings)", "from hsmplanner import roughing as r\nw = r.slanted_slot_block(); v = r.volume_to_remove(w.stock_brep, w.part_brep); p = r.partition(v, w.part_brep, 'S1')\nr.sweep(p, v, w.part_brep, w.stock_brep, radial_engagement=1e-9)",
@@ -357,7 +359,7 @@ CASES = [
     raises("slanted slot block 1e6 mm long", "from hsmplanner import roughing as r\nr.slanted_slot_block(length=1e6)",
            "ValueError", "length = 1e+06 mm is larger than a test part's 1000 mm"),
     holds("a 5-axis block turning C 1e9 degrees is bounded work", "result = h.simulate('TRAORI\\nG1 X1 C999999999 F100\\n', "
-          "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),    # --- material removal and joined regions (issue 17): absurd settings, bounded work ----------------------
+          "'mikron-ucp710-ac-840d').summary.total_time", "result > 1000"),    # --- material removal and joined regions: absurd settings, bounded work ----------------------
     raises("removal resolution NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=float('nan'))",
            "ValueError", "resolution nan mm is outside [0.005, 50] mm"),
     raises("removal resolution 1e-6 (endless rays)", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, resolution=1e-6)",
@@ -396,25 +398,25 @@ CASES = [
            "ValueError", "s of splitting on a 2-core machine, more than the 60 s a partition may take; use a step of at least 0.12 mm"),
     raises("partition of a ball in a box by 1331 spheres (S5, step 0.05)", "import Part, FreeCAD\nfrom hsmplanner import roughing as r\nb = Part.makeSphere(20.0)\nv = r.volume_to_remove(Part.makeBox(100, 100, 100, FreeCAD.Vector(-50, -50, -50)), b)\nr.partition(v, b, 'S5', step=0.05)",
            "ValueError", "by 1331 offsets of the hub: about"),
-    raises("program clearance with max turn NaN", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0, 'A': 5.0})], m, max_turn_deg=float('nan'))",
+    raises("program clearance with max turn NaN", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0, 'A': 5.0})], m, max_turn_deg=float('nan'))",
            "ValueError", "max_turn_deg nan must be within [0.0001, 10] degrees"),
-    raises("program clearance with max turn 1e-9", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0, 'A': 5.0})], m, max_turn_deg=1e-9)",
+    raises("program clearance with max turn 1e-9", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0, 'A': 5.0})], m, max_turn_deg=1e-9)",
            "ValueError", "max_turn_deg 1e-09 must be within"),
-    raises("program clearance with orientation None", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([], m, orientation=None)",
+    raises("program clearance with orientation None", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([], m, orientation=None)",
            "ValueError", "orientation None must be 'angles'"),
-    raises("program clearance of an angle NaN", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0}), Path.Command('G1', {'X': 2.0, 'A': float('nan')})], m)",
+    raises("program clearance of an angle NaN", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0}), Path.Command('G1', {'X': 2.0, 'A': float('nan')})], m)",
            "ValueError", "block 1 has a position or angle that is not a finite number"),
-    raises("program clearance of A1e9", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0}), Path.Command('G1', {'X': 2.0, 'A': 1e9})], m)",
+    raises("program clearance of A1e9", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.interpolated_program([Path.Command('G1', {'X': 1.0}), Path.Command('G1', {'X': 2.0, 'A': 1e9})], m)",
            "ValueError", "use a larger max_turn_deg"),
-    raises("program clearance of a number", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nrc.program_clearance(5, m, w.part_brep)",
+    raises("program clearance of a number", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nrc.program_clearance(5, m, w.part_brep)",
            "TypeError", "commands must be FreeCAD Path commands"),
-    raises("program clearance of a posted arc", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.posted_program('G17 G90\\nG1 X0 Y0 Z50 F100\\nG2 X10 Y0 I5 J0 F100\\n', m)",
+    raises("program clearance of a posted arc", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.posted_program('G17 G90\\nG1 X0 Y0 Z50 F100\\nG2 X10 Y0 I5 J0 F100\\n', m)",
            "ValueError", "line 3 is an arc"),
-    raises("program clearance of a malformed posted line", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.posted_program('G1 X1 Y\\n', m)",
+    raises("program clearance of a malformed posted line", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nrc.posted_program('G1 X1 Y\\n', m)",
            "ValueError", "line 1: 'Y' is not a letter followed by a number"),
-    holds("program clearance of no commands", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nreport, block = rc.program_clearance([], m, w.part_brep)\nresult = (report.positions, block)",
+    holds("program clearance of no commands", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nreport, block = rc.program_clearance([], m, w.part_brep)\nresult = (report.positions, block)",
           "result == (0, -1)"),
-    holds("program clearance of an empty posted text", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app import roughing_commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nreport, block = rc.program_clearance('', m, w.part_brep)\nresult = (report.positions, block)",
+    holds("program clearance of an empty posted text", "import Path\nfrom hsmplanner import feedsim, roughing as r\nfrom hsmplanner.app.roughing import commands as rc\nm = feedsim.load_machine('linuxcnc-2.9-xyzac-trt')\nw = r.slanted_slot_block()\nreport, block = rc.program_clearance('', m, w.part_brep)\nresult = (report.positions, block)",
           "result == (0, -1)"),
     raises("removal chip section 0", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.simulate_removal(m, w.stock_brep, w.part_brep, chip_section=0.0)",
            "ValueError", "chip section 0"),
@@ -435,7 +437,7 @@ CASES = [
           "abs(result - 100.0) < 1e-9"),
     raises("join with a NaN clearance", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nm = {'tip': np.array([[0.0, 0, 40], [10.0, 20, 28]]), 'axis': np.array([[0.0, 0, 1], [0.0, 0, 1]]), 'kind': np.array([0, 3])}\nr.join_paths([m, m], w.stock_brep, clearance=float('nan'))",
            "ValueError", "clearance nan mm is outside [0, 1000] mm"),
-    # --- the strategy study (issue 18): absurd grids and settings, refused before anything runs ------------------
+    # --- the strategy study: absurd grids and settings, refused before anything runs ------------------
     raises("study K NaN", "from hsmplanner import study as st\nst.variants(k=(float('nan'),), p=(10,))", "ValueError", "K = nan is outside ]0, 1["),
     raises("study P -1", "from hsmplanner import study as st\nst.variants(k=(0.5,), p=(-1,))", "ValueError", "P = -1 mm must be positive"),
     raises("study feed NaN", "from hsmplanner import study as st\nst.variants(planes_deg=(0,), feeds_mm_min=(float('nan'),))", "ValueError", "feed nan mm/min must be positive"),
@@ -455,6 +457,16 @@ CASES = [
     raises("study range NaN step", "from hsmplanner import study as st\nst.parse_range('0:10:nan', 'K')", "ValueError", "K: 'nan' is not a finite number"),
     raises("study range of a list", "from hsmplanner import study as st\nst.parse_range([1, 2], 'K')", "ValueError", "K: [1, 2] is not text"),
     raises("refine K bounds NaN", "from hsmplanner import study as st\nst.refine_k(part, 'Face4', b1, b2, low=float('nan'))", "ValueError", "K bounds [nan"),
+    raises("refine K on a face the part has not", "from hsmplanner import study as st\nst.refine_k(part, 'Face99', b1, b2)", "ValueError", "bottom face 'Face99' does not exist: the part has"),
+    raises("study of a face the part has not", "from hsmplanner import study as st\nst.study(part, 'Face99', b1, b2, st.variants(planes_deg=(0,)))", "ValueError", "Face99' does not exist"),
+    raises("clearance limit NaN", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nr.check_clearance({'tip': [[0, 0, 40]], 'axis': [[0, 0, 1]]}, w.part_brep, limit=float('nan'))",
+           "ValueError", "clearance limit nan mm must be a finite distance"),
+    raises("clearance limit -1", "from hsmplanner import roughing as r\nw = r.slanted_slot_block()\nr.check_clearance({'tip': [[0, 0, 40]], 'axis': [[0, 0, 1]]}, w.part_brep, limit=-1)",
+           "ValueError", "clearance limit -1 mm"),
+    raises("STL of a triangle past the points", "from hsmplanner import roughing as r\nr.save_stl((np.zeros((3, 3)), np.array([[0, 1, 7]])), '/tmp/hsm-bad.stl')",
+           "ValueError", "triangle corners must be indices of the 3 points (0 to 2), got 0 to 7"),
+    raises("STL of 2-D points", "from hsmplanner import roughing as r\nr.save_stl((np.zeros((3, 2)), np.array([[0, 1, 2]])), '/tmp/hsm-bad.stl')",
+           "ValueError", "save_stl takes ((N, 3) points"),
     # --- the FreeCAD 1.0 port's helpers: comments, script arguments, exact boxes -----------------------------
     holds("a head comment of nested parentheses, a 1e6-character label and a number",
           "from hsmplanner.app.op_comments import comment_text\n"

@@ -153,7 +153,7 @@ def new_custom(job):
 
 def new_slot_roughing(**properties):
     """A roughing volume of the slanted slot block in its stock, computed (S1 unless told)."""
-    from hsmplanner.app import roughing_object, roughing_parts
+    from hsmplanner.app.roughing import volume as roughing_object, parts as roughing_parts
     part, stock = roughing_parts.create_slanted_slot_block(new_document())
     properties.setdefault("Strategy", "S1")
     obj = roughing_object.create(part, stock, **properties)
@@ -191,7 +191,7 @@ def cancelling_progress(label):
 
 def cancelled_roughing():
     """A roughing volume recomputed with Cancel pressed: (cancelled, still valid, its previous sub-volumes kept)."""
-    from hsmplanner.app import roughing_object
+    from hsmplanner.app.roughing import volume as roughing_object
     obj = new_slot_roughing()
     before = list(obj.SubVolumes)
     obj.Strategy = roughing_object.strategy_label("S5")

@@ -40,7 +40,7 @@ def slot_roughing_job(name, strategy, **slot):
     with the paper's torus and a Volume roughing of that volume: (document, part, stock, job, controller, op).
     Not recomputed."""
     import FreeCAD
-    from hsmplanner.app import roughing_object, roughing_op, roughing_parts
+    from hsmplanner.app.roughing import volume as roughing_object, operation as roughing_op, parts as roughing_parts
     from hsmplanner.app.compat import create_job
 
     document = FreeCAD.newDocument(name)
@@ -64,3 +64,28 @@ def only_on_freecad(release, why):
     running = "%d.%d" % freecad_version()
     return unittest.skipUnless(running == release, "holds on FreeCAD %s only (this is %s): %s"
                                % (release, running, why))
+
+
+def motions(op):
+    """The motion commands of an operation's path (comments left out)."""
+    from hsmplanner.app.clearance_moves import MOTION
+
+    return [c for c in op.Path.Commands if c.Name in MOTION]
+
+
+def check_clearance_start_and_end(test_case, op, height):
+    """As CAM's own operations: up to `height` first (G0 Z only), across at it, the operation's first move at or
+    below it, and back up to it at the end (G0 Z only)."""
+    moves = motions(op)
+    test_case.assertGreater(len(moves), 3, op.Label)
+    up, across, first, last = moves[0], moves[1], moves[2], moves[-1]
+    test_case.assertEqual((up.Name, set(up.Parameters)), ("G0", {"Z"}), up.toGCode())
+    test_case.assertAlmostEqual(up.Parameters["Z"], height, places=6)
+    test_case.assertEqual(across.Name, "G0")
+    test_case.assertTrue({"X", "Y", "Z"} <= set(across.Parameters), across.toGCode())
+    test_case.assertAlmostEqual(across.Parameters["Z"], height, places=6)
+    test_case.assertEqual((across.Parameters["X"], across.Parameters["Y"]),
+                          (first.Parameters["X"], first.Parameters["Y"]), "across to above the first move")
+    test_case.assertLessEqual(first.Parameters["Z"], height + 1e-6)
+    test_case.assertEqual((last.Name, set(last.Parameters)), ("G0", {"Z"}), last.toGCode())
+    test_case.assertAlmostEqual(last.Parameters["Z"], height, places=6)

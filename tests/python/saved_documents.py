@@ -102,8 +102,8 @@ def job_problems(document):
 def fresh_objects(document):
     """One object of each of our proxy classes, made by today's code in `document`: what a restored object
     must have (by class name)."""
-    from hsmplanner.app import (feedrate_object, finishing_ops, guide_curve_net_object, master_feature_object,
-                                roughing_object, roughing_op, roughing_parts)
+    from hsmplanner.app import feedrate_object, finishing_ops, guide_curve_net_object, master_feature_object
+    from hsmplanner.app.roughing import operation as roughing_op, parts as roughing_parts, volume as roughing_object
     from hsmplanner.app.compat import create_job
 
     block, block_stock = roughing_parts.create_slanted_slot_block(document)
@@ -294,13 +294,34 @@ EXPECTED_DIFFERENCES = {
 }
 
 
+def as_written_when_saved(obj, commands):
+    """Our operation's commands without what every one of them gained after these documents were saved: the
+    moves up to the clearance height, across and back up at the end (clearance_moves.via_clearance), and the
+    warning comment of a rotary program whose Job's post is not a tool-centre-point one. Only moves that are
+    exactly those are taken out."""
+    from hsmplanner.app.clearance_moves import MOTION
+
+    if not is_ours(obj):
+        return commands
+    kept = [c for c in commands if not c.Name.startswith("(WARNING: this program turns rotary axes")]
+    moves = [i for i, c in enumerate(kept) if c.Name in MOTION]
+    if len(moves) < 4:
+        return kept
+    up, across, back = (kept[i] for i in (moves[0], moves[1], moves[-1]))
+    height = up.Parameters.get("Z")
+    added = (up.Name == across.Name == back.Name == "G0" and set(up.Parameters) == {"Z"} == set(back.Parameters)
+             and across.Parameters.get("Z") == height == back.Parameters["Z"])
+    return [c for i, c in enumerate(kept) if not (added and i in (moves[0], moves[1], moves[-1]))]
+
+
 def path_problems(saved_with, name, record, saved_paths, document):
     """Each recomputed path against documents.json (count, length): equal, or differing only as the table
-    says; the table's entries must still be needed."""
+    says; the table's entries must still be needed. Our operations' paths are compared as they were written
+    when the documents were saved (as_written_when_saved)."""
     problems = []
     for obj_name, as_saved in record["path_commands_and_length_as_saved"].items():
         obj = document.getObject(obj_name)
-        now = list(obj.Path.Commands)
+        now = as_written_when_saved(obj, list(obj.Path.Commands))
         count, length = len(now), path_length(now)
         same = count == as_saved["commands"] and abs(length - as_saved["length_mm"]) <= LENGTH_TOLERANCE_MM
         same = same and [c.toGCode() for c in now] == [c.toGCode() for c in saved_paths[obj_name]]

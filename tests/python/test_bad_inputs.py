@@ -1,4 +1,4 @@
-"""Every bad input of issue 10 and more (tests/python/bad_inputs.py): each must raise the error that names
+"""Every bad input (tests/python/bad_inputs.py): each must raise the error that names
 the input and the fix, or give a result that holds. The cases run in child processes, so that a crash, a
 hang or runaway memory fails its case instead of killing this runner."""
 import json

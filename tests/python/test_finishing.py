@@ -13,7 +13,7 @@ from hsmplanner.app import finishing, finishing_ops, guide_curve_net_object, mas
 from hsmplanner.app.compat import cam_module, create_job, post_module
 from hsmplanner.app.master_feature import make_master_bottom_feature
 from hsmplanner.app.posts import siemens840d_post
-from helpers import REPO, check_golden, temporary_directory
+from helpers import REPO, check_clearance_start_and_end, check_golden, temporary_directory
 
 FEATURE = make_master_bottom_feature()
 
@@ -117,6 +117,12 @@ class Operations(unittest.TestCase):
             self.assertGreater(op.Passes, 100)
             feeds = [c.Parameters["F"] for c in op.Path.Commands if c.Name == "G1" and "F" in c.Parameters]
             self.assertAlmostEqual(max(feeds), 4000.0 / 60.0, places=6)  # the tool controller's feed, mm/s
+
+    def test_each_starts_and_ends_at_the_clearance_height_as_cams_own(self):
+        for op in (self.guide, self.planes):
+            with self.subTest(op=op.Label):
+                self.assertGreater(op.ClearanceHeight.Value, op.SafeHeight.Value)
+                check_clearance_start_and_end(self, op, op.ClearanceHeight.Value)
 
     def test_simulated_through_both_posts(self):
         folder = temporary_directory(self)

@@ -9,7 +9,7 @@ import Path
 
 from hsmplanner import feedsim, roughing
 from hsmplanner.app.posts import linuxcnc5x_post
-from hsmplanner.app.roughing_commands import (ProgramSource, interpolated_program, posted_program,
+from hsmplanner.app.roughing.commands import (ProgramSource, interpolated_program, posted_program,
                                               program_clearance, sweep_commands)
 
 TRT = "linuxcnc-2.9-xyzac-trt"

@@ -6,7 +6,7 @@ import FreeCAD
 import numpy as np
 
 from hsmplanner import roughing
-from hsmplanner.app import roughing_object, roughing_op, roughing_study
+from hsmplanner.app.roughing import volume as roughing_object, operation as roughing_op, study as roughing_study
 from helpers import slot_roughing_job
 
 SMALL = dict(diameter=4.0, corner_radius=0.5, flute_length=15.0, stick_out=30.0)

@@ -1,6 +1,6 @@
 """5-axis roughing part 1 through the Python API (hsmplanner.roughing): the slanted slot's closed-form volume and
 face classes, the slicings and their tool axes, S3's setup direction, results as plain attributes and BREP that
-FreeCAD reads back as valid solids, progress and cancellation, and the issue's bad inputs."""
+FreeCAD reads back as valid solids, progress and cancellation, and bad inputs."""
 import math
 import os
 import unittest

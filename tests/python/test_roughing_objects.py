@@ -1,4 +1,4 @@
-"""The FreeCAD layer of 5-axis roughing (issue 14, part 1): the test parts and their stocks, and the Roughing
+"""The FreeCAD layer of 5-axis roughing : the test parts and their stocks, and the Roughing
 volume document object (volumes, face classes, partitions; it follows its inputs, switches its display and
 survives saving without computing again; bad inputs are one line and the object stays valid)."""
 import os
@@ -9,8 +9,8 @@ import FreeCAD
 import Part
 
 from hsmplanner import roughing
-from hsmplanner.app import roughing_object, roughing_parts
-from hsmplanner.app.roughing_object import CLASS_NAMES, FACE_CLASSES, SUB_VOLUMES, strategy_label
+from hsmplanner.app.roughing import volume as roughing_object, parts as roughing_parts
+from hsmplanner.app.roughing.volume import CLASS_NAMES, FACE_CLASSES, SUB_VOLUMES, strategy_label
 from helpers import temporary_directory
 
 SLOT_VOLUME = 15360.0  # 16 × 24 × 40 mm, the slot's closed form

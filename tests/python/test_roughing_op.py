@@ -9,11 +9,11 @@ import numpy as np
 
 import hsmplanner
 from hsmplanner import roughing
-from hsmplanner.app import roughing_object, roughing_op, roughing_parts
+from hsmplanner.app.roughing import volume as roughing_object, operation as roughing_op, parts as roughing_parts
 from hsmplanner.app.compat import create_job, post_module
-from hsmplanner.app.roughing_commands import sweep_commands
+from hsmplanner.app.roughing.commands import sweep_commands
 from hsmplanner.app.posts import linuxcnc5x_post, siemens840d_post
-from helpers import check_golden, slot_roughing_job, temporary_directory
+from helpers import check_clearance_start_and_end, check_golden, motions, slot_roughing_job, temporary_directory
 
 
 class VolumeRoughing(unittest.TestCase):
@@ -38,6 +38,16 @@ class VolumeRoughing(unittest.TestCase):
         angles = [c.Parameters["A"] for c in commands if "A" in c.Parameters]
         self.assertTrue(angles and all(abs(a) > 1.0 for a in angles), "S3 tilts the A axis off zero")
 
+    def test_it_starts_and_ends_above_the_stock_as_cams_own_operations(self):
+        """A roughing operation has no height properties: it goes up to the highest point of its own links, at
+        least 5 mm above the stock, across, and down to its first point on the links' sphere."""
+        height = max(c.Parameters["Z"] for c in self.op.Path.Commands if "Z" in c.Parameters)
+        stock_top = self.op.Volume.Proxy.inputs(self.op.Volume)[1].optimalBoundingBox(False, False).ZMax
+        self.assertGreaterEqual(height, stock_top + 5.0 - 1e-6)
+        check_clearance_start_and_end(self, self.op, height)
+        across = motions(self.op)[1]
+        self.assertIn("A", across.Parameters, "the table turns at the clearance height, before going down")
+
     def test_posts_are_read_back_on_their_machines(self):
         folder = temporary_directory(self)
         mpf = os.path.join(folder, "roughing.mpf")
@@ -52,6 +62,31 @@ class VolumeRoughing(unittest.TestCase):
             self.assertGreater(hsmplanner.simulate(text, "linuxcnc-2.9-xyzac-trt").summary.cutting_blocks, 50)
         finally:
             self.op.Machine = roughing_op.DEFAULT_MACHINE
+            self.document.recompute()
+
+    def test_a_five_axis_path_with_a_three_axis_post_says_so_in_the_program(self):
+        """FreeCAD's linuxcnc post writes X Y Z A C as they are: without tool-centre-point control the tool leaves
+        the path. Chosen as the Job's post, the operation warns in its program (and the Report view); with our
+        TCP posts, or no post chosen yet, it does not."""
+        saved = self.job.PostProcessor
+        try:
+            for post, warned in (("linuxcnc", True), ("hsm_siemens840d", False), ("", False)):
+                self.job.PostProcessor = post
+                self.op.touch()
+                self.document.recompute()
+                comments = [c.Name for c in self.op.Path.Commands[:6] if c.Name.startswith("(")]
+                self.assertEqual(any("WARNING" in c and "tool-centre-point" in c and "'%s'" % post in c
+                                     for c in comments), warned, (post, comments))
+            self.job.PostProcessor = "linuxcnc"
+            self.op.touch()
+            self.document.recompute()
+            path = os.path.join(temporary_directory(self), "tcp.ngc")
+            post_module("linuxcnc").export([self.job, self.op], path, "--no-show-editor")
+            with open(path) as stream:
+                self.assertIn("WARNING: this program turns rotary axes", stream.read())
+        finally:
+            self.job.PostProcessor = saved
+            self.op.touch()
             self.document.recompute()
 
     def test_s3_on_a_three_axis_machine_is_3_plus_2_through_freecads_post(self):
@@ -77,7 +112,8 @@ class VolumeRoughing(unittest.TestCase):
                                    tool=roughing_op.cutter_of(self.controller.Tool))
             rotation, tilt, _ = roughing.work_plane(paths)
             self.assertGreater(tilt, 5.0)
-            tips = np.array([[c.Parameters[k] for k in "XYZ"] for c in commands if "X" in c.Parameters])
+            # (the first X is the move across at the clearance height, before the sweep's own)
+            tips = np.array([[c.Parameters[k] for k in "XYZ"] for c in commands if "X" in c.Parameters][1:])
             np.testing.assert_allclose(tips @ rotation, paths.moves["tip"], atol=1e-6)
             np.testing.assert_allclose(paths.moves["axis"][0] @ rotation.T, [0, 0, 1], atol=1e-12)
         finally:
@@ -94,7 +130,7 @@ class VolumeRoughing(unittest.TestCase):
             sweep_commands(moves, three_axis, 2000.0)
 
     def test_tool_axis_ticks_follow_the_machines_angles(self):
-        from hsmplanner.app.roughing_commands import tool_axis_ticks
+        from hsmplanner.app.roughing.commands import tool_axis_ticks
         machine = hsmplanner.feedsim.load_machine(self.op.Machine)
         ticks = tool_axis_ticks(self.op.Path.Commands, machine, every_mm=5.0, length_mm=4.0)
         self.assertGreater(len(ticks), self.op.CuttingLength.Value / 5.0 * 0.9)

@@ -1,4 +1,4 @@
-"""The automatic strategy study (hsmplanner.study, issue 18's first part): the grid refused by name before
+"""The automatic strategy study (hsmplanner.study): the grid refused by name before
 anything runs, the ranking right on cases whose order is known, rows kept when a variant fails or the study is
 cancelled, results read back from the cache, worker processes giving the rows one process gives."""
 import os
@@ -183,7 +183,7 @@ class Study(unittest.TestCase):
         self.part.Shape.exportBrep(brep)
         b1, b2 = self.part.Boundary1, self.part.Boundary2
         env = dict(os.environ, PYTHONPATH=os.path.join(REPO, "python"))
-        command = ["/usr/bin/python3", "-m", "hsmplanner.study", brep, "--face", self.face, "--b1", b1, "--b2", b2,
+        command = ["/usr/bin/python3", "-m", "hsmplanner.study_cli", brep, "--face", self.face, "--b1", b1, "--b2", b2,
                    "--planes", "0,90", "--feeds", "6000,2000", "--workers", "2", "--csv", os.path.join(folder, "s.csv")]
         done = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
         self.assertEqual(done.returncode, 0, done.stderr[-2000:])

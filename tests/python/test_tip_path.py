@@ -5,7 +5,7 @@ import unittest
 import numpy as np
 import Path
 
-from hsmplanner.app.roughing_commands import program_moves
+from hsmplanner.app.roughing.commands import program_moves
 from hsmplanner.gui.tip_path import element_name, tip_edges, tip_path_node, turns_the_tool
 
 

@@ -53,8 +53,25 @@ def check_feeds(obj):
                                  " '%s'" % controller.Label if controller is not None else ""))
 
 
+def check_current(obj):
+    """Refuses an operation whose path is not the one its properties give: its last recompute failed (the path
+    kept is an older one), or it changed since (it waits for a recompute). The message names the operation and
+    the reason."""
+    for op in operations(obj):
+        state = list(getattr(op, "State", []) or [])
+        if "Invalid" in state or not op.isValid():
+            reason = op.getStatusString() if hasattr(op, "getStatusString") else "its recompute failed"
+            raise ValueError("%s failed to recompute (%s): its path is an older one; fix the operation and "
+                             "recompute it before timing it" % (op.Label, reason))
+        if "Touched" in state:
+            raise ValueError("%s has changed since its path was computed: recompute it (Ctrl+R) before timing it"
+                             % op.Label)
+
+
 def simulate_object(obj, machine=feedsim.DEFAULT_MACHINE, blocks=True, trace_period=None):
-    """Simulate a Job or an operation; FreeCAD's feeds (mm/s) are read as they are stored."""
+    """Simulate a Job or an operation; FreeCAD's feeds (mm/s) are read as they are stored. An operation that
+    failed or is waiting for a recompute is refused (check_current)."""
+    check_current(obj)
     check_feeds(obj)
     commands = program_commands(obj)
     if not commands:

@@ -8,6 +8,7 @@ import FreeCAD
 import hsmplanner
 
 from . import finishing
+from .clearance_moves import via_clearance
 from .compat import cam_module
 from .op_comments import mend_leading_comments
 from .progress import freecad_progress
@@ -63,7 +64,8 @@ class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         obj.Passes = stats["passes"]
         obj.PassLengths = list(stats["pass_lengths"])
-        self.commandlist.extend(finishing.moves_to_commands(moves, self.horizFeed, self.vertFeed))
+        commands = finishing.moves_to_commands(moves, self.horizFeed, self.vertFeed)
+        self.commandlist.extend(via_clearance(commands, obj.ClearanceHeight.Value))
 
     def opSetDefaultValues(self, obj, job):
         obj.Sweep = "Upward"

@@ -1,5 +1,5 @@
 """Ranges of document-object properties: the same as the task panels', so that no edit in the property
-editor or from a script reaches the core with a value the panel would refuse (issue 10).
+editor or from a script reaches the core with a value the panel would refuse.
 
 FreeCAD 0.20 cannot give a PropertyLength or PropertyFloat a range from Python (PropertyFloatConstraint
 clamps silently, and changing a property's type would break saved documents), so the proxies clamp in

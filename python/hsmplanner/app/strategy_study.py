@@ -1,4 +1,4 @@
-"""The strategy study of finishing (issue 18) in a FreeCAD document: the grid from the text a user types
+"""The strategy study of finishing in a FreeCAD document: the grid from the text a user types
 ("0:180:15", "0.25,0.5"), the study's inputs from the selection or a Guide curve net object, and the chosen
 row turned into a finishing operation in a Job. The study itself is hsmplanner.study; the panel is
 hsmplanner.gui.strategy_study_panel (nothing here needs the GUI).

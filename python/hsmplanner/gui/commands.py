@@ -5,7 +5,8 @@ import FreeCADGui
 from hsmplanner.resources import icon
 
 COMMAND_NAMES = ["HSM_MasterBottomFeature", "HSM_GuideCurveNet", "HSM_GuideCurveFinishing",
-                 "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "Separator",
+                 "HSM_ParallelPlaneFinishing", "HSM_MachiningDirection", "HSM_FeedRateAnalysis", "HSM_CycleTime",
+                 "Separator",
                  "HSM_SlantedSlotBlock", "HSM_Impeller", "HSM_RoughingVolume", "HSM_VolumeRoughing",
                  "HSM_RoughingStudy", "HSM_StrategyStudy"]
 
@@ -67,6 +68,15 @@ class CommandGuideCurveNet:
         return obj
 
 
+def analysis_of(document, proxy_class, link, target):
+    """The analysis (a `proxy_class` object whose `link` is `target`) the document already has, or None: the
+    command opens it again rather than adding another object at each run."""
+    for obj in document.Objects:
+        if type(getattr(obj, "Proxy", None)).__name__ == proxy_class and getattr(obj, link, None) == target:
+            return obj
+    return None
+
+
 class CommandFeedRateAnalysis:
     """Simulate the selected Job or operation on a machine model: feed-rate map, histograms, times."""
 
@@ -94,13 +104,64 @@ class CommandFeedRateAnalysis:
 
         source = self.selected_source()
         document = source.Document
-        document.openTransaction("Feed-rate analysis")
-        try:
-            obj = feedrate_object.create(source, document=document)
-            ViewProviderFeedRateAnalysis(obj.ViewObject)
-            obj.ViewObject.Proxy.redraw(obj)
-        finally:
-            document.commitTransaction()
+        obj = analysis_of(document, "FeedRateAnalysis", "Source", source)
+        if obj is None:
+            document.openTransaction("Feed-rate analysis")
+            try:
+                obj = feedrate_object.create(source, document=document)
+                ViewProviderFeedRateAnalysis(obj.ViewObject)
+                obj.ViewObject.Proxy.redraw(obj)
+            finally:
+                document.commitTransaction()
+        FreeCADGui.ActiveDocument.setEdit(obj.Name)
+        return obj
+
+
+class CommandCycleTime:
+    """The cycle time of the selected CAM Job (or of the Job of the selected operation): per operation CAM's
+    estimate, length / feed and the simulated time."""
+
+    def GetResources(self):
+        return {
+            "Pixmap": icon("CycleTime"),
+            "MenuText": "Cycle time",
+            "ToolTip": "Time the selected CAM Job on a machine: per operation CAM's estimate, length / feed and the "
+                       "simulated time (what the machine does), with what held the speed; kept current on recompute",
+        }
+
+    @staticmethod
+    def selected_job():
+        from hsmplanner.app.feedrate import is_job
+
+        selection = FreeCADGui.Selection.getSelection()
+        if len(selection) != 1:
+            return None
+        chosen = selection[0]
+        if is_job(chosen):
+            return chosen
+        for parent in chosen.InList:  # an operation: its Job holds the group it is in
+            for job in [parent] + list(parent.InList):
+                if is_job(job):
+                    return job
+        return None
+
+    def IsActive(self):
+        return self.selected_job() is not None
+
+    def Activated(self):
+        from hsmplanner.app import cycle_time_object
+        from hsmplanner.gui.view_providers import ViewProviderCycleTime
+
+        job = self.selected_job()
+        document = job.Document
+        obj = analysis_of(document, "CycleTimeAnalysis", "Job", job)
+        if obj is None:
+            document.openTransaction("Cycle time")
+            try:
+                obj = cycle_time_object.create(job, document=document)
+                ViewProviderCycleTime(obj.ViewObject)
+            finally:
+                document.commitTransaction()
         FreeCADGui.ActiveDocument.setEdit(obj.Name)
         return obj
 
@@ -144,7 +205,7 @@ class _CommandRoughingTestPart:
     the part's): Space shows it, as a wireframe."""
 
     NAME, MENU, TIP = "", "", ""
-    BUILDER, VIEW_PROVIDER = "", ""  # names in app.roughing_parts and gui.view_providers
+    BUILDER, VIEW_PROVIDER = "", ""  # names in app.roughing.parts and gui.view_providers
 
     def GetResources(self):
         return {"Pixmap": icon(self.NAME), "MenuText": self.MENU, "ToolTip": self.TIP}
@@ -153,7 +214,7 @@ class _CommandRoughingTestPart:
         return True
 
     def create(self, document):
-        from hsmplanner.app import roughing_parts
+        from hsmplanner.app.roughing import parts as roughing_parts
         from hsmplanner.gui import view_providers
 
         part, stock = getattr(roughing_parts, self.BUILDER)(document)
@@ -214,7 +275,7 @@ class CommandRoughingVolume:
         return FreeCAD.ActiveDocument is not None
 
     def Activated(self):
-        from hsmplanner.app import roughing_object
+        from hsmplanner.app.roughing import volume as roughing_object
         from hsmplanner.gui.view_providers import ViewProviderRoughingVolume
 
         document = FreeCAD.ActiveDocument
@@ -243,7 +304,7 @@ class CommandRoughingVolume:
 
 def show_result(obj):
     """The volume over the part: its stock hidden (it would hide everything)."""
-    from hsmplanner.app.roughing_object import is_job, job_stock
+    from hsmplanner.app.roughing.volume import is_job, job_stock
 
     stock = job_stock(obj.Stock) if is_job(obj.Stock) else obj.Stock
     if stock is not None and stock.ViewObject is not None:
@@ -254,6 +315,7 @@ def register_commands():
     FreeCADGui.addCommand("HSM_MasterBottomFeature", CommandMasterBottomFeature())
     FreeCADGui.addCommand("HSM_GuideCurveNet", CommandGuideCurveNet())
     FreeCADGui.addCommand("HSM_FeedRateAnalysis", CommandFeedRateAnalysis())
+    FreeCADGui.addCommand("HSM_CycleTime", CommandCycleTime())
     FreeCADGui.addCommand("HSM_MachiningDirection", CommandMachiningDirection())
     FreeCADGui.addCommand("HSM_SlantedSlotBlock", CommandSlantedSlotBlock())
     FreeCADGui.addCommand("HSM_Impeller", CommandImpeller())

@@ -8,7 +8,8 @@ import FreeCADGui
 from PySide import QtWidgets
 
 from hsmplanner import feedsim
-from hsmplanner.app import finishing, finishing_ops, roughing_commands, roughing_op
+from hsmplanner.app import finishing, finishing_ops
+from hsmplanner.app.roughing import commands as roughing_commands, operation as roughing_op
 from hsmplanner.app.compat import cam_module
 from hsmplanner.resources import icon
 
@@ -347,9 +348,14 @@ class CommandFinishing:
         return document is not None and any(hasattr(o, "Operations") for o in document.Objects)
 
     def Activated(self):
+        from .task_panel import selected_faces
+
         document = FreeCAD.ActiveDocument
+        faces = selected_faces()  # picked before the command: creating the operation clears the selection
         document.openTransaction("Create %s" % self.res.name)
         obj = self.res.objFactory(self.res.name, obj=None, parentJob=None)
+        if faces and hasattr(obj, "Face"):
+            obj.Face = faces[0]
         view_provider = self.view_provider(obj.ViewObject, self.res)
         view_provider.OpIcon = self.icon
         obj.ViewObject.Proxy = view_provider

@@ -10,8 +10,8 @@ result (computing first if the form changed), Cancel restores the object as it w
 import FreeCADGui
 from PySide import QtCore, QtWidgets
 
-from hsmplanner.app import roughing_object
-from hsmplanner.app.roughing_object import (DISPLAYS, LIMITS, STRATEGIES, STRATEGY_NONE, SUB_VOLUMES, has_solid,
+from hsmplanner.app.roughing import volume as roughing_object
+from hsmplanner.app.roughing.volume import (DISPLAYS, LIMITS, STRATEGIES, STRATEGY_NONE, SUB_VOLUMES, has_solid,
                                             is_job, job_stock, jobs, part_and_stock, shown_display)
 
 from .colors import FACE_CLASS_TIPS

@@ -1,12 +1,12 @@
 """The Roughing study panel: pick a Roughing volume, run the five strategies on it (progress, Cancel), see the
 table and the stock each leaves side by side, and apply the chosen one as a Volume roughing operation in the
-Job (hsmplanner.app.roughing_study does the work; this module only shows it)."""
+Job (hsmplanner.app.roughing.study does the work; this module only shows it)."""
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtWidgets
 
 import hsmplanner
-from hsmplanner.app import roughing_object, roughing_study
+from hsmplanner.app.roughing import volume as roughing_object, study as roughing_study
 from hsmplanner.app.progress import freecad_progress
 from hsmplanner.plots.roughing_study import short_label
 
@@ -159,7 +159,7 @@ class RoughingStudyPanel(TaskPanel):
     def study_tool(self, volume):
         """(Cutter or None for the paper's torus, feed mm/min, what it is): the Job's roughing tool controller,
         so that Apply makes what the row measured."""
-        from hsmplanner.app import roughing_op
+        from hsmplanner.app.roughing import operation as roughing_op
 
         job = job_of(volume.Document)
         for controller in (job.Tools.Group if job is not None else []):
@@ -278,7 +278,7 @@ class RoughingStudyPanel(TaskPanel):
 
     @staticmethod
     def add_roughing(job, volume, name, variant):
-        from hsmplanner.app import roughing_op
+        from hsmplanner.app.roughing import operation as roughing_op
         from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
 
         controller = roughing_op.roughing_controller(job)  # the Job's, or the paper's torus added
@@ -295,7 +295,7 @@ class RoughingStudyPanel(TaskPanel):
     def add_rest(job, volume, first, rest):
         """The rest roughing after `first`: its own Roughing volume (the rest strategy and step), a controller of
         the rest tool, RestFrom `first`."""
-        from hsmplanner.app import roughing_op
+        from hsmplanner.app.roughing import operation as roughing_op
         from hsmplanner.gui.finishing_ops_gui import add_volume_roughing
         from hsmplanner.gui.view_providers import ViewProviderRoughingVolume
 

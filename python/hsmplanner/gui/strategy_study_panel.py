@@ -1,4 +1,4 @@
-"""The Strategy study panel (issue 18): finishing variants of a bottom face between two boundaries — planes at
+"""The Strategy study panel: finishing variants of a bottom face between two boundaries — planes at
 angles, guide nets of K × P with the median or not, the 4-step method, at feeds on a machine — run on worker
 processes (progress, Cancel), their table, time against slowdowns with the Pareto front, the feed maps of the
 chosen rows side by side and in the 3D view, and the chosen one applied as a finishing operation in the Job.
@@ -13,7 +13,8 @@ import FreeCADGui
 from PySide import QtCore, QtWidgets
 
 from hsmplanner import feedsim, study
-from hsmplanner.app import roughing_object, strategy_study
+from hsmplanner.app import strategy_study
+from hsmplanner.app.roughing import volume as roughing_object
 from hsmplanner.app.feedrate_object import COLOR_MODES
 from hsmplanner.app.progress import freecad_progress
 

@@ -3,7 +3,7 @@
 FreeCAD's Path view provider turns each move's X Y Z by its A, B, C words (its PathSegmentWalker: a rotation
 of yaw -C, pitch -B, roll -A about the path's Center) and sweeps an arc for each change of angle, as if X Y Z
 were taken on a turning table. Our commands' X Y Z are the tool tip in the workpiece frame already
-(app/roughing_commands.sweep_commands; with TCP: 840D TRAORI, LinuxCNC's TCP kinematics), so FreeCAD drew a
+(app/roughing/commands.sweep_commands; with TCP: 840D TRAORI, LinuxCNC's TCP kinematics), so FreeCAD drew a
 tilted path beside the part while its tool-axis ticks sat in the slot.
 
 TipPathView gives an operation's view provider a display mode of its own, "Tip path": each move drawn as the
@@ -114,7 +114,7 @@ class TipPathView:
     def draw_tip_path(self, obj):
         """Draws the Path's moves where the tip goes, and shows them instead of FreeCAD's drawing when FreeCAD
         would turn them (rotary words); FreeCAD's own drawing otherwise."""
-        from hsmplanner.app.roughing_commands import program_moves
+        from hsmplanner.app.roughing.commands import program_moves
 
         root, vobj = getattr(self, "tip_root", None), getattr(obj, "ViewObject", None)
         if root is None or vobj is None:

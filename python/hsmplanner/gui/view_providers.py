@@ -177,6 +177,20 @@ class ViewProviderFeedRateAnalysis(_AnalysisViewProvider):
         return FeedRatePanel(obj)
 
 
+class ViewProviderCycleTime(_AnalysisViewProvider):
+    """A Job's cycle time: nothing drawn in the 3D view, its table in the task panel."""
+
+    ICON = "CycleTime"
+
+    def scene(self, obj):
+        return None
+
+    def panel(self, obj):
+        from .cycle_time_panel import CycleTimePanel
+
+        return CycleTimePanel(obj)
+
+
 class ViewProviderMachiningDirection(_AnalysisViewProvider):
     """Strokes of the best local direction on the face, coloured by G_pmax, and the chosen direction."""
 
@@ -212,7 +226,7 @@ def _linked_deflection(obj):
     """The display deflection of a linked object (a Job's stock for a Job), 0 when it has no view."""
     if obj is None:
         return 0.0
-    from hsmplanner.app.roughing_object import job_stock, is_job
+    from hsmplanner.app.roughing.volume import job_stock, is_job
 
     if is_job(obj):
         obj = job_stock(obj)
@@ -279,7 +293,7 @@ class ViewProviderRoughingVolume(_StatelessViewProvider):
     def draw(self, obj, root):
         import FreeCAD
 
-        from hsmplanner.app.roughing_object import SUB_VOLUMES, shown_display
+        from hsmplanner.app.roughing.volume import SUB_VOLUMES, shown_display
 
         from .roughing_view import palette, volume_node
 

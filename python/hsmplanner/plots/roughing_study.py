@@ -1,4 +1,4 @@
-"""Pictures of the five-strategy roughing study (issue 17, examples/roughing_study.py): the stock left on the part
+"""Pictures of the five-strategy roughing study (examples/roughing_study.py): the stock left on the part
 by each strategy as a coloured map, and bars of the remaining volume and the machining time beside the paper's.
 
 Inputs are plain arrays (points, thickness) and rows of numbers: no FreeCAD, no core."""

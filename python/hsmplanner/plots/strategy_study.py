@@ -1,4 +1,4 @@
-"""Pictures of the automatic strategy study (issue 18): each variant as a point of simulated time against the
+"""Pictures of the automatic strategy study: each variant as a point of simulated time against the
 share of cutting time below half the feed, the Pareto front drawn through the variants no other beats on both,
 and the feed-class shares of the best rows as stacked bars. Inputs are the study's rows (no FreeCAD); the front
 and the names are the study's own (hsmplanner.study)."""

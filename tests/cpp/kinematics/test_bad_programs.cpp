@@ -1,4 +1,4 @@
-// Programs and machines that once were misread, ran unbounded or gave non-finite times (issue 10): each
+// Programs and machines that once were misread, ran unbounded or gave non-finite times: each
 // is a line-numbered error that names the word, or a finite simulation.
 #include "kinematics/simulation.hpp"
 
@@ -51,10 +51,18 @@ TEST(BadPrograms, NumbersThatAreNotGcodeNumbersAreLineNumberedErrors) {
       {"G1 X12345678901 F100\n", "line 1: 'X12345678901' is out of range"},
       {"G1 X1 F100\nG2\n", "line 2: G2 without an end point or a centre"},
       {"G4 P-5\n", "line 1: G4 P-5: a dwell lasts 0 s or more"},
-      {"G1 X1 F0\n", "line 1: feed rate F0"},
+      {"G1 X1 F0\n", "line 1: a feed move at F0 (set at line 1)"},
+      {"G1 X1 F100\nG0 F0 Z5\nG1 X2\n", "line 3: a feed move at F0 (set at line 2)"},
       {"G1 X1 F100\nR1=1e5\n", "line 2: 'R1=1E5': G-code numbers have no exponent"},
   };
   for (const auto& [program, expected] : cases) EXPECT_EQ(readError(program).rfind(expected, 0), 0u) << readError(program);
+}
+
+// FreeCAD CAM's area operations (Profile, Pocket Shape) end with `G0 F0.000000 Z…`: legal, as LinuxCNC reads it,
+// as long as no feed move follows before another F.
+TEST(BadPrograms, AnF0OnARapidIsRead) {
+  EXPECT_EQ(readError("G1 X1 F100\nG0 F0.000000 Z5\nG1 X2 F200\n"), "no error");
+  EXPECT_EQ(readError("G21 G90\nG0 F0 X0 Y0 Z5\n"), "no error");
 }
 
 TEST(BadPrograms, BinaryGarbageGivesAPrintableMessage) {

@@ -202,3 +202,73 @@ TEST(GcodeLexer, RandomNumbersReadAsStrtodReadsThem) {
     EXPECT_EQ(parsed.words[0].text, "X" + number) << line;
   }
 }
+
+namespace {
+std::vector<double> endZ(const std::vector<Block>& blocks) {
+  std::vector<double> z;
+  for (const Block& b : blocks) z.push_back(b.end.z());
+  return z;
+}
+}  // namespace
+
+// LinuxCNC 2.9's G-code reference, "G81 Drilling Cycle" (preliminary motion, retract by G98/G99): across at the
+// start Z, down to R, drill to Z, back to the start Z (G98); the next hole from there.
+TEST(CannedCycles, G81DrillsEachHoleAndReturnsToTheStartZWithG98) {
+  const auto blocks = readProgram("G0 X0 Y0 Z10\nG98 G81 X5 Y0 Z-3 R2 F60\nX10\nG80\nG0 X0\n");
+  ASSERT_EQ(blocks.size(), 1u + 4u + 4u + 1u);
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(5, 0, 10));
+  EXPECT_EQ(blocks[1].motion, Motion::Rapid);
+  EXPECT_EQ(endZ({blocks.begin() + 2, blocks.begin() + 5}), (std::vector<double>{2, -3, 10}));
+  EXPECT_EQ(blocks[3].motion, Motion::Linear);
+  EXPECT_DOUBLE_EQ(blocks[3].feed, 1.0);  // F60 mm/min
+  EXPECT_EQ(blocks[4].motion, Motion::Rapid);
+  EXPECT_EQ(blocks[5].end, Eigen::Vector3d(10, 0, 10));
+  EXPECT_EQ(blocks[6].end.z(), 2.0);
+  EXPECT_EQ(blocks[7].end.z(), -3.0);
+  EXPECT_EQ(blocks[7].line, 3);  // the second hole is line 3's
+  EXPECT_EQ(blocks[9].end, Eigen::Vector3d(0, 0, 10));  // after G80, G0 moves again
+}
+
+// G99 retracts to R between holes; a start below R first goes up to R (LinuxCNC's preliminary motion).
+TEST(CannedCycles, G99RetractsToRAndAStartBelowRGoesUpFirst) {
+  const auto blocks = readProgram("G0 X0 Y0 Z-1\nG99 G81 X5 Z-3 R2 F60\nX10\n");
+  EXPECT_EQ(endZ(blocks), (std::vector<double>{-1, 2, 2, -3, 2, 2, -3, 2}));
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(0, 0, 2));
+  EXPECT_EQ(blocks[2].end, Eigen::Vector3d(5, 0, 2));
+}
+
+// G83: pecks of Q, back to R after each, rapidly down to 0.254 mm above the last depth; G73 breaks the chip by
+// 0.254 mm; G82 adds its dwell P per hole; G85 feeds back out.
+TEST(CannedCycles, PecksDwellsAndFeedOut) {
+  auto feeds = [](const std::vector<Block>& blocks) {
+    std::vector<double> z;
+    for (const Block& b : blocks)
+      if (b.motion == Motion::Linear) z.push_back(b.end.z());
+    return z;
+  };
+  const auto g83 = readProgram("G0 X0 Y0 Z5\nG98 G83 X0 Y0 Z-5 R1 Q2 F60\n");
+  EXPECT_EQ(feeds(g83), (std::vector<double>{-1, -3, -5}));
+  EXPECT_EQ(endZ(g83), (std::vector<double>{5, 1, -1, 1, -1 + 0.254, -3, 1, -3 + 0.254, -5, 5}));
+  const auto g73 = readProgram("G0 X0 Y0 Z5\nG99 G73 X0 Y0 Z-5 R1 Q2 F60\n");
+  EXPECT_EQ(endZ(g73), (std::vector<double>{5, 1, -1, -1 + 0.254, -3, -3 + 0.254, -5, 1}));
+  std::istringstream program("G0 X0 Y0 Z5\nG98 G82 X0 Y0 Z-2 R1 P0.5 F60\nX5\nG85 X10 Z-2 R1\n");
+  GcodeReader reader(program);
+  Block block;
+  std::vector<Block> blocks;
+  while (reader.next(block)) blocks.push_back(block);
+  EXPECT_DOUBLE_EQ(reader.stats().dwellTime, 1.0);  // two holes of G82 P0.5
+  EXPECT_EQ(blocks.back().motion, Motion::Rapid);
+  EXPECT_EQ(blocks[blocks.size() - 2].motion, Motion::Linear);  // G85 feeds back out to R
+  EXPECT_EQ(blocks[blocks.size() - 2].end, Eigen::Vector3d(10, 0, 1));
+  EXPECT_EQ(reader.stats().unknownWords, 0);
+}
+
+TEST(CannedCycles, WhatCannotBeReadIsNamed) {
+  EXPECT_EQ(errorOf("G0 Z5\nG81 X1 Z-2 F60\n").rfind("line 2: G81 needs R", 0), 0u) << errorOf("G0 Z5\nG81 X1 Z-2 F60\n");
+  EXPECT_EQ(errorOf("G0 Z5\nG83 X1 Z-2 R1 F60\n").rfind("line 2: G83 needs Q > 0", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG81 X1 Z3 R1 F60\n").rfind("line 2: G81: the bottom Z3 is above the retract plane R1", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG91 G81 X1 Z-2 R1 F60\n").rfind("line 2: G81 in G91", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG18 G81 X1 Z-2 R1 F60\n").rfind("line 2: G81 in G18", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG81 X1 Z-2 R1\n").rfind("line 2: G81 drills at F0", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG83 X1 Z-1000000 R1 Q0.001 F60\n").rfind("line 2: G83: ", 0), 0u);
+}

@@ -172,7 +172,7 @@ TEST(Removal, BadSettingsAreRefusedByName) {
   EXPECT_THROW(simulateRemoval(bad, flat(10.0), s.stock, s.part), InputError);
 }
 
-// Issue 17's check on the slanted slot block: a vertical tool (Z-level roughing, S1 from the top face) cannot
+// The check on the slanted slot block: a vertical tool (Z-level roughing, S1 from the top face) cannot
 // reach under the 30° overhang and leaves at least 35 % of the volume; the setup planes along the slot (S3)
 // leave at most 2 % beyond the allowance layer.
 TEST(Removal, TheSlantedSlotNeedsItsSetupDirection) {

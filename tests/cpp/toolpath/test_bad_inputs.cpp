@@ -1,4 +1,4 @@
-// Finishing on inputs that once crashed, hung or gouged (issue 10): each must end in an error that names the
+// Finishing on inputs that once crashed, hung or gouged: each must end in an error that names the
 // input, or in a toolpath the independent checks accept.
 #include "common/error.hpp"
 #include "support/master_feature.hpp"

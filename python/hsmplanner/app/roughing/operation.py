@@ -1,21 +1,24 @@
 """Path/CAM operation "Volume roughing": the sub-volumes of a Roughing volume object swept into a toolpath
 (cpp/roughing/sweep.hpp), on the machine chosen for it (its rotary axes give the A/B/C of the moves).
 
-Thin, as FreeCAD's own operations: properties wired to hsmplanner.roughing through app/roughing_commands.
+Thin, as FreeCAD's own operations: properties wired to hsmplanner.roughing through app/roughing/commands.
 The tool is the operation's tool controller: a torus (FreeCAD's bullnose: corner radius = diameter / 2 −
 FlatRadius), a flat end mill or a ball end. Post the result with our 840D post (TRAORI) or the LinuxCNC 5-axis
 post, with --machine the operation's Machine; a strategy that tilts the tool on a 3-axis Machine is refused
 when the operation computes. Proxy classes are recorded in saved documents: never rename them.
 """
 import FreeCAD
+import Path
 
 from hsmplanner import feedsim, roughing
 
-from .compat import cam_module, create_tool_bit, tool_corner_radius, tool_shape_id
-from .job_controllers import usable_or_added
-from .op_comments import mend_leading_comments
-from .property_limits import PropertyLimits
-from .roughing_commands import program_clearance, sweep_commands
+from ..clearance_moves import via_clearance
+from ..compat import cam_module, create_tool_bit, tool_corner_radius, tool_shape_id
+from ..job_controllers import usable_or_added
+from ..op_comments import comment_text, mend_leading_comments
+from ..property_limits import PropertyLimits
+from ..finishing import exact_top
+from .commands import program_clearance, sweep_commands, work_plane_comments
 
 PathOp = cam_module("op")
 
@@ -24,7 +27,26 @@ DEFAULT_MACHINE = "mikron-ucp710-ac-840d"
 MEND_RESOLUTION = 0.2  # mm: the removal model that finds the rapids that would cut the stock left
 LIMITS = {"RadialEngagement": (1.0, 100.0), "Allowance": (0.0, 10.0), "RampAngle": (0.5, 90.0),
           "StepUpMinimum": (0.0, 100.0), "StepUpScallop": (0.01, 10.0), "PushOut": (0.0, 10.0)}
+LINK_CLEARANCE = 5.0  # mm above the stock: the links' clearance (roughing.join_paths)
 REST_SPACING = 0.4  # mm between the points of the stock a rest roughing reads (the removal model's at 0.2 mm)
+# Posts that write a program of tool tip and rotary axes for a controller that keeps the tip on the path (tool
+# centre point: the 840D's TRAORI, LinuxCNC's TCP kinematics). A 3-axis post writes the same words, which a
+# machine without TCP runs as joint moves: the tool then leaves the path (the Job's post, chosen by its name).
+TCP_POSTS = ("hsm_siemens840d", "hsm_linuxcnc5x")
+
+
+def tcp_post_warning(job, commands):
+    """The warning for a program whose moves turn rotary axes when the Job's chosen post is not a tool-centre-
+    point one, or None (no rotary move, no post chosen yet, or a TCP post)."""
+    post = str(getattr(job, "PostProcessor", "") or "")
+    if not post or post in TCP_POSTS:
+        return None
+    if not any(letter in c.Parameters for c in commands for letter in "ABC"):
+        return None
+    return ("WARNING: this program turns rotary axes with the tool tip programmed, but the Job's post '%s' does "
+            "not write tool-centre-point programs: on a machine without TCP the tool leaves the path. Choose "
+            "hsm_siemens840d (TRAORI) or hsm_linuxcnc5x as the Job's post, or a 3-axis Machine for this "
+            "operation" % post)
 
 
 def cutter_of(tool):
@@ -192,7 +214,11 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
         mend_leading_comments(self.commandlist, obj)
-        self.commandlist.extend(commands)
+        warning = tcp_post_warning(getattr(self, "job", None), commands)
+        if warning:  # in the Report view, and in the program where whoever runs it reads it
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
+            self.commandlist.append(Path.Command("(%s)" % comment_text(warning)))
+        self.commandlist.extend(via_clearance(commands, clearance_height(commands, program, machine)))
         obj.Passes = program.passes
         obj.CuttingLength = program.cutting_length
         obj.ClosestApproach = max(0.0, report.minimum)
@@ -208,13 +234,25 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         return roughing.check_clearance(moves, part_brep, cutter, limit)
 
 
+def clearance_height(commands, program, machine):
+    """The Z the operation starts and ends at (a roughing operation has no height properties): the highest
+    point of its own program (its links run on a plane or a sphere clear of the stock) and, where the program is
+    written in the part's frame, at least LINK_CLEARANCE above the stock's top. A 3+2 program on a 3-axis
+    machine is written in its turned work plane, where the stock's top is not a height."""
+    top = max(c.Parameters["Z"] for c in commands if "Z" in c.Parameters)
+    if work_plane_comments(program.moves, machine):
+        return top
+    return max(top, program.stock_top + LINK_CLEARANCE)
+
+
 class Program:
     """What a Volume roughing operation cuts, before posting: its moves (the regions joined, rapids fed where
-    they would cut the stock left), its cutter, the part's BREP, and what it says."""
+    they would cut the stock left), its cutter, the part's BREP, the stock's top (mm), and what it says."""
 
-    def __init__(self, moves, cutter, part_brep, fed, warnings, passes, cutting_length, regions):
+    def __init__(self, moves, cutter, part_brep, fed, warnings, passes, cutting_length, regions, stock_top):
         self.moves, self.cutter, self.part_brep, self.fed, self.warnings = moves, cutter, part_brep, fed, warnings
         self.passes, self.cutting_length, self.regions = passes, cutting_length, regions
+        self.stock_top = stock_top
 
 
 def is_volume_roughing(obj):
@@ -275,7 +313,8 @@ def volume_roughing_program(obj):
     # their time (after the operations before); checked whole against the part, links included.
     moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
                                                    tool=cutter, resolution=MEND_RESOLUTION, after=before or None)
-    program = Program(moves, cutter, part_brep, fed, warnings, passes, length, len(partitions))
+    stock_top = exact_top(obj.Volume.Proxy.inputs(obj.Volume)[1])
+    program = Program(moves, cutter, part_brep, fed, warnings, passes, length, len(partitions), stock_top)
     obj.Proxy.program = program
     return program
 

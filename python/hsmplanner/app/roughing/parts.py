@@ -15,9 +15,9 @@ from hsmplanner import roughing
 from hsmplanner._core import roughing as core
 
 from hsmplanner.geometry import shape_from_brep
-from .property_limits import PropertyLimits
-from .compat import set_shape
-from .proxy_state import NoSavedState
+from ..property_limits import PropertyLimits
+from ..compat import set_shape
+from ..proxy_state import NoSavedState
 
 TYPE_NAME = "Part::FeaturePython"
 

@@ -27,13 +27,13 @@ from hsmplanner import roughing
 from hsmplanner._core import roughing as core
 
 from hsmplanner.geometry import shape_from_brep
-from .properties import HIDDEN, add_inputs, add_results
-from .feedrate import is_job
-from .progress import freecad_progress
-from .property_limits import PropertyLimits
-from .compat import set_shape
-from .proxy_state import NoSavedState
-from .roughing_parts import is_test_part, is_test_part_stock, stock_of
+from ..properties import HIDDEN, add_inputs, add_results
+from ..feedrate import is_job
+from ..progress import freecad_progress
+from ..property_limits import PropertyLimits
+from ..compat import set_shape
+from ..proxy_state import NoSavedState
+from .parts import is_test_part, is_test_part_stock, stock_of
 
 TYPE_NAME = "Part::FeaturePython"
 _SETTINGS = core.PartitionSettings()  # the core's defaults (each written once, in C++)

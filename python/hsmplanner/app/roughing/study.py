@@ -11,8 +11,8 @@ import time
 from hsmplanner import feedsim, roughing
 from hsmplanner._core import roughing as core
 
-from .posts import siemens840d_post
-from .roughing_commands import ProgramSource, sweep_commands
+from ..posts import siemens840d_post
+from .commands import ProgramSource, sweep_commands
 
 # The paper's Table 1 (impeller, Ø8 r1 torus): V_r %, path mm, in material %, stick-out mm.
 PAPER_TABLE = {"S1": (43.1, 3332, 44.1, 57), "S2": (14.1, 2987, 54.4, 49), "S3": (16.0, 3863, 45.6, 47),
