@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui as Gui
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_harness import GuiRun  # noqa: E402
+from gui_harness import GuiRun, scene_nodes  # noqa: E402
 
 run = GuiRun()
 state = {}
@@ -75,6 +75,11 @@ def command_on_the_selected_face(run):
     run.notes["G_pmax range (mm2)"] = [round(float(values.min()), 5), round(float(values.max()), 5)]
     run.check("the strokes' colours span the scale (not one green)",
               float(np.ptp(colours, axis=0).max()) > 0.3, str(np.ptp(colours, axis=0)))
+    texts = [text.string.getValues()[0] for text in scene_nodes(analysis.ViewObject.Proxy.root, "SoText2")]
+    ticks = [t for t in texts if t.endswith("mm²")]
+    run.notes["legend ticks"] = ticks
+    run.check("the legend's five ticks read five different numbers", len(ticks) == 5 and len(set(ticks)) == 5,
+              str(ticks))
     arrow = direction_view.chosen_arrow(result.points, analysis.ChosenAngle.Value)
     run.check("the chosen direction is a double arrow", len(arrow) == 5, str(len(arrow)))
     run.notes["beams deg, alpha"] = [analysis.OptimalAngle.Value, round(analysis.BeamAlpha, 3)]

@@ -439,6 +439,9 @@ def roughing_study_panel_runs_and_applies(run):
                 for r in range(table.rowCount())}
 
     rows = shown_rows()
+    run.check("the table opens in the study's order (the first column ascending)",
+              [table.item(r, 0).text() for r in range(table.rowCount())] == ["S1+su", "S3+su"],
+              str(list(rows)))
     vr = {name: shown[1] for name, shown in rows.items()}
     run.notes["roughing study"] = {"rows": list(rows), "V_r %": vr, "status": study.form.status.text()}
     run.check("the table has S1 and S3 with step-up and their V_r", sorted(rows) == ["S1+su", "S3+su"] and

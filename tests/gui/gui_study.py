@@ -181,6 +181,10 @@ def a_small_grid_on_two_workers(run):
     run.notes["pareto front"] = front
     run.panel_plots("strategy_study_ranking_panel", figure)
     table = p.form.table
+    times = [table.item(r, 1).data(0) for r in range(table.rowCount())]
+    run.check("the table opens with the fastest variant first, times sorted as numbers",
+              table.horizontalHeader().sortIndicatorSection() == 1 and all(isinstance(t, float) for t in times)
+              and times == sorted(times), str(times))
     table.sortItems(1)  # by time: sorting keeps each row's variant
     run.check("sorting by time keeps the rows", sorted(table_rows(p)) == names)
     tips = [table.item(r, 0).toolTip() for r in range(table.rowCount())]

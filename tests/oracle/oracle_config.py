@@ -166,14 +166,23 @@ def hal_lines(machine):
     return hal
 
 
+ORACLE_TOOLS = 99  # T1..T99: what real programs call (LinuxCNC stops at a T word its table lacks)
+
+
+def tool_table():
+    """LinuxCNC's tool table of ORACLE_TOOLS tools in pockets of their number, of zero length and diameter:
+    the oracle times motion, and a program's G43 then changes nothing."""
+    return "".join("T%d P%d D0 Z0 ;oracle tool %d\n" % (n, n, n) for n in range(1, ORACLE_TOOLS + 1))
+
+
 def write_config(machine, folder, program, run_timeout, fallback_uid):
-    """INI, HAL, the DISPLAY wrapper and an empty tool table in folder; returns the INI's path."""
+    """INI, HAL, the DISPLAY wrapper and a tool table in folder; returns the INI's path."""
     with open(os.path.join(folder, "oracle.ini"), "w") as f:
         f.write("\n".join(ini_lines(machine, folder, program, run_timeout)) + "\n")
     with open(os.path.join(folder, "oracle.hal"), "w") as f:
         f.write("\n".join(hal_lines(machine)) + "\n")
     with open(os.path.join(folder, "tool.tbl"), "w") as f:
-        f.write("")
+        f.write(tool_table())
     wrapper = os.path.join(folder, "display")
     with open(wrapper, "w") as f:
         f.write(f"#!/bin/sh\nexec /usr/bin/python3 {os.path.join(HERE, 'lcnc_display.py')} \"$@\"\n")

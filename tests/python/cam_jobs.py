@@ -4,21 +4,25 @@ top and two Ø12 through holes."""
 import FreeCAD
 import Part
 
-from hsmplanner.app.compat import cam_module, create_job
+from hsmplanner.app.compat import cam_module, create_job, freecad_version
 
-# (operation module, name, the faces or edges it works on: "top", "pocket", "holes", "pocket edges", or None for
-# the whole model, settings)
+# (operation module, name, the faces or edges it works on: "top", "pocket", "holes", "pocket edges", "pocket
+# edge", or None for the whole model, settings)
 OPERATIONS = [
     ("Path.Op.Profile", "Profile", None, {}),
     ("Path.Op.PocketShape", "PocketShape", "pocket", {}),
     ("Path.Op.Adaptive", "Adaptive", "pocket", {}),
-    ("Path.Op.MillFace", "Face", "top", {}),
+    ("Path.Op.MillFace", "Face", "top", {"BoundaryShape": "Stock"}),  # 1.0 faces nothing in "Boundbox"
     ("Path.Op.Drilling", "Drilling", "holes", {}),
     ("Path.Op.Drilling", "PeckDrilling", "holes", {"PeckEnabled": True, "PeckDepth": 3.0}),
     ("Path.Op.Drilling", "DwellDrilling", "holes", {"DwellEnabled": True, "DwellTime": 0.5}),
     ("Path.Op.Helix", "Helix", "holes", {}),
     ("Path.Op.Engrave", "Engrave", "pocket edges", {}),
+    ("Path.Op.Slot", "Slot", "pocket edge", {}),
+    ("Path.Op.Deburr", "Deburr", "pocket edges", {}),
 ]
+# Dressups CAM applies to an operation above: (module, the operation dressed)
+DRESSUPS = [("Path.Dressup.Tags", "Profile"), ("Path.Dressup.DogboneII", "PocketShape")]
 
 
 def block_part(document):
@@ -44,6 +48,7 @@ def features(part):
     floor = faces[int(named["pocket"][0][4:]) - 1]
     named["pocket edges"] = ["Edge%d" % (i + 1) for i, e in enumerate(part.Shape.Edges)
                              if any(e.isSame(w) for w in floor.OuterWire.Edges)]
+    named["pocket edge"] = named["pocket edges"][:1]
     return named
 
 
@@ -63,8 +68,7 @@ def cam_job(document, operations=OPERATIONS):
     named = features(part)
     ops = {}
     for module_name, name, where, settings in operations:
-        module = importlib.import_module(module_name)
-        op = module.Create(name, parentJob=job)
+        op = create_operation(importlib.import_module(module_name), name, job)
         if where is not None:
             op.Base = [(part, named[where])]
         for key, value in settings.items():
@@ -72,6 +76,35 @@ def cam_job(document, operations=OPERATIONS):
         ops[name] = op
     document.recompute()
     return part, job, ops
+
+
+def dress(document, ops, dressups=DRESSUPS):
+    """{module: dressup} of CAM's dressups on the operations `ops` holds, put in the Job before the operation
+    they dress as CAM's dressup commands put them (some modules' Create does it, others leave it to the
+    command), recomputed."""
+    import importlib
+
+    made = {}
+    for module, base in dressups:
+        dressup = importlib.import_module(module).Create(ops[base])
+        job = ops[base].Proxy.getJob(ops[base])
+        if dressup not in job.Operations.Group:
+            job.Proxy.addOperation(dressup, ops[base])
+        made[module] = dressup
+    document.recompute()
+    return made
+
+
+def create_operation(module, name, job):
+    """An operation as CAM's command makes it (module.Create). FreeCAD 1.0's Drilling and Helix Create look for
+    every hole of the Job's model before the proxy has read the model (a TypeError on None): there the proxy
+    is made as Create makes it, without that search (the caller sets Base)."""
+    proxy_class = {"Path.Op.Drilling": "ObjectDrilling", "Path.Op.Helix": "ObjectHelix"}.get(module.__name__)
+    if proxy_class and freecad_version() < (1, 1):
+        op = job.Document.addObject("Path::FeaturePython", name)
+        op.Proxy = getattr(module, proxy_class)(op, name, job)
+        return op
+    return module.Create(name, parentJob=job)
 
 
 def custom_op(job, name, lines):

@@ -51,6 +51,7 @@ class CamOperations(unittest.TestCase):
                 self.assertGreater(row["simulated_s"], 0.0)
                 self.assertGreaterEqual(row["simulated_s"], 0.99 * row["naive_s"])  # the machine is never faster
                 self.assertTrue(row["held_by"])
+                self.assertNotRegex(row["held_by"], r"(^| )0 %", "a share that rounds to 0 % is left out")
         self.assertEqual(total["error"], "")
         self.assertGreaterEqual(total["simulated_s"], 0.99 * sum(row["simulated_s"] for row in rows))
         text = cycle_time_object.summary_text(rows, total)
@@ -86,6 +87,35 @@ class CamOperations(unittest.TestCase):
         self.assertIn("Adaptive cannot be", total["error"])
         self.document.recompute()
         self.assertEqual(cycle_time.operation_row(op, feedsim.DEFAULT_MACHINE)["error"], "")
+
+
+class CamDressups(unittest.TestCase):
+    """CAM's dressups (holding tags on a profile, dogbones in a pocket) are read whole and timed in the Job in
+    place of the operations they dress."""
+
+    def test_dressed_operations_are_read_and_timed(self):
+        document = FreeCAD.newDocument("CycleTimeDressups")
+        try:
+            operations = [o for o in cam_jobs.OPERATIONS if o[1] in ("Profile", "PocketShape")]
+            _, job, ops = cam_jobs.cam_job(document, operations)
+            plain = {name: cycle_time.operation_row(op, feedsim.DEFAULT_MACHINE)["simulated_s"]
+                     for name, op in ops.items()}
+            dressed = cam_jobs.dress(document, ops)
+            for module, dressup in dressed.items():
+                with self.subTest(dressup=module):
+                    self.assertTrue(dressup.isValid(), dressup.getStatusString())
+                    feedsim.simulate(feedrate.program_commands(dressup), feedsim.DEFAULT_MACHINE,
+                                     refuse_unknown_words=True)
+            rows, total = cycle_time.job_rows(job, feedsim.DEFAULT_MACHINE)
+            # the Job's program as CAM's post writes it: its active operations in order, dressups included
+            self.assertEqual([r["name"] for r in rows], [o.Name for o in job.Operations.Group if getattr(o, "Active", True)])
+            for dressup in dressed.values():
+                self.assertIn(dressup.Name, [r["name"] for r in rows])
+            self.assertEqual(total["error"], "")
+            tags = rows[0]["simulated_s"]
+            self.assertGreater(tags, plain["Profile"], "the tags lift the tool over each of them")
+        finally:
+            FreeCAD.closeDocument(document.Name)
 
 
 class CamEstimate(unittest.TestCase):

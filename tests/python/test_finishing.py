@@ -118,6 +118,19 @@ class Operations(unittest.TestCase):
             feeds = [c.Parameters["F"] for c in op.Path.Commands if c.Name == "G1" and "F" in c.Parameters]
             self.assertAlmostEqual(max(feeds), 4000.0 / 60.0, places=6)  # the tool controller's feed, mm/s
 
+    def test_the_cusp_range_is_what_the_core_takes_with_the_ball(self):
+        low, high = finishing_ops.cusp_limits(self.controller)
+        self.assertEqual((low, high), (0.001, 2.0 - 0.001))  # the Ø4 ball
+        self.assertEqual(finishing_ops.cusp_limits(None), finishing_ops.LIMITS["CuspHeight"])
+        shape, face = finishing.net_part(self.net)
+        for cusp, refused in ((high, False), (2.0, True)):
+            with self.subTest(cusp=cusp):
+                call = lambda: hsmplanner.parallel_finishing(shape, face, 0.0, tool_diameter=4.0, cusp_height=cusp)
+                if refused:
+                    self.assertRaisesRegex(ValueError, "cusp height", call)
+                else:
+                    self.assertGreater(len(call()[0]), 0)
+
     def test_each_starts_and_ends_at_the_clearance_height_as_cams_own(self):
         for op in (self.guide, self.planes):
             with self.subTest(op=op.Label):

@@ -82,6 +82,11 @@ class TestParts(SlotDocument):
         self.part.Tilt = 75
         self.part.Length = -5
         self.assertEqual((self.part.Tilt.Value, self.part.Length.Value), (59.0, 1.0))
+        # FreeCAD stores the -5 of a length as 0 before the proxy sees it: the warning says so
+        from hsmplanner.app.property_limits import shown_value
+
+        self.assertIn("negative length", shown_value(self.part, "Length", 0.0))
+        self.assertEqual(shown_value(self.part, "Tilt", 75.0), "75")
 
     def test_create_without_a_document(self):
         with mock.patch.object(FreeCAD, "ActiveDocument", None):

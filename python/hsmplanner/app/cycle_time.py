@@ -26,9 +26,9 @@ def cam_estimate_s(obj):
 
 
 def held_by_text(summary, count=2):
-    """What held the speed, the largest shares first: 'F 79 %, X 15 %'."""
-    shares = feedsim.speed_limit_shares(summary)
-    return ", ".join("%s %.0f %%" % (name, 100.0 * share) for name, share in list(shares.items())[:count])
+    """What held the speed, the largest shares first: 'F 79 %, X 15 %' (a share under 0.5 % left out)."""
+    shares = [(name, share) for name, share in feedsim.speed_limit_shares(summary).items() if share >= 0.005]
+    return ", ".join("%s %.0f %%" % (name, 100.0 * share) for name, share in shares[:count])
 
 
 def operation_row(op, machine):

@@ -26,6 +26,14 @@ PATTERNS = ["ZigZag", "OneWay"]
 LIMITS = {"CuspHeight": (0.001, 10.0), "Tolerance": (0.001, 1.0)}
 
 
+def cusp_limits(tool_controller):
+    """The cusp heights the core takes with the controller's ball: under its radius (a cusp as high as the
+    radius leaves no surface between passes), within LIMITS; LIMITS alone without a tool diameter."""
+    low, high = LIMITS["CuspHeight"]
+    diameter = float(getattr(getattr(tool_controller, "Tool", None), "Diameter", 0.0) or 0.0)
+    return (low, min(high, 0.5 * diameter - low)) if diameter > 4.0 * low else (low, high)
+
+
 class _FinishingOp(PropertyLimits, PathOp.ObjectOp):
     """What both finishing operations share: cusp, tolerance, sweeping, pattern; a ball-end tool."""
 

@@ -42,4 +42,12 @@ class PropertyLimits:
             clamped = int(round(clamped))
         setattr(obj, prop, clamped)
         FreeCAD.Console.PrintWarning("%s: %s = %s is outside [%g, %g]: set to %g\n"
-                                     % (obj.Label, prop, value, low, high, clamped))
+                                     % (obj.Label, prop, shown_value(obj, prop, value), low, high, clamped))
+
+
+def shown_value(obj, prop, value):
+    """The value as the warning names it: FreeCAD stores a negative length as 0 before a proxy sees it, so a
+    typed -5 arrives as 0; the warning says so rather than blame a 0 the user never typed."""
+    if value == 0 and obj.getTypeIdOfProperty(prop) == "App::PropertyLength":
+        return "0 (or a negative length, which FreeCAD stores as 0)"
+    return "%g" % value

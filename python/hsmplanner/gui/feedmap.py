@@ -77,6 +77,16 @@ LEGEND_X = (0.86, 0.92)  # at the right edge of the view; the labels to the left
 LEGEND_SPAN = (-0.8, 0.4)  # below the navigation cube
 
 
+def tick_texts(values, digits):
+    """The numbers of a scale's ticks, rounded to `digits` decimals or as many more as it takes for ticks of
+    different values to read differently (a narrow scale: 0.04271 … 0.04279, not 0.0427 five times)."""
+    for places in range(digits, digits + 9):
+        texts = ["%g" % round(v, places) for v in values]
+        if len(set(texts)) == len(set(values)):
+            return texts
+    return ["%.6g" % v for v in values]
+
+
 def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=feed_colors, span=LEGEND_SPAN):
     """A vertical colour bar with labels at the right of the view, in normalised screen coordinates, from
     span[0] to span[1] in y; `colors(shares)` gives the RGB rows of shares of the scale in [0, 1]."""
@@ -88,8 +98,9 @@ def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=fee
         corners.append([(x0, a), (x1, a), (x1, b), (x0, b)])
         corners_colors.append(colors([(k + 0.5) / LEGEND_STEPS])[0])
     ticks = [k / LEGEND_TICKS for k in range(LEGEND_TICKS + 1)]  # the scale's numbers, every quarter
-    labels = [("%g %s" % (round(low + f * (high - low), digits), unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02)
-              for f in ticks] + [(title, x1, y1 + 0.06)]
+    texts = tick_texts([low + f * (high - low) for f in ticks], digits)
+    labels = [("%s %s" % (text, unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02)
+              for text, f in zip(texts, ticks)] + [(title, x1, y1 + 0.06)]
     add_backing(root, labels, x1, y0 - 0.03, y1 + 0.09)
     root.addChild(colored_quads(corners, corners_colors))
     add_labels(root, labels)

@@ -58,6 +58,7 @@ class _FinishingPage(PathOpGui.TaskPanelPage):
     def getFields(self, obj):
         self.updateToolController(obj, self.form.toolController)
         self.updateCoolant(obj, self.form.coolantController)
+        self.form.cusp.setRange(*finishing_ops.cusp_limits(obj.ToolController))
         obj.CuspHeight = self.form.cusp.value()
         obj.Tolerance = self.form.tolerance.value()
         obj.Sweep = self.form.sweep.currentText()
@@ -66,6 +67,7 @@ class _FinishingPage(PathOpGui.TaskPanelPage):
     def setFields(self, obj):
         self.setupToolController(obj, self.form.toolController)
         self.setupCoolant(obj, self.form.coolantController)
+        self.form.cusp.setRange(*finishing_ops.cusp_limits(obj.ToolController))
         self.form.cusp.setValue(obj.CuspHeight.Value)
         self.form.tolerance.setValue(obj.Tolerance.Value)
         self.form.sweep.setCurrentText(obj.Sweep)

@@ -221,6 +221,7 @@ class RoughingStudyPanel(TaskPanel):
         table.verticalHeader().hide()  # a header would keep its place when the rows sort: the label is a column
         for row, result in enumerate(self.results):
             values = result.row
+            note_column = next((c for c, (_, key, _) in enumerate(TABLE) if values.get(key, "") == ""), None)
             for column, (_, key, _) in enumerate(TABLE):
                 item = QtWidgets.QTableWidgetItem()
                 value = values.get(key, "")
@@ -229,7 +230,9 @@ class RoughingStudyPanel(TaskPanel):
                 if isinstance(value, (int, float)):
                     item.setData(QtCore.Qt.DisplayRole, value)  # sorts as a number
                 else:
-                    item.setText(str(value) if value != "" else (values.get("note") or "")[:60])
+                    # a row without figures (failed, cancelled) says why once, in its first empty column
+                    note = (values.get("note") or "")[:60] if column == note_column else ""
+                    item.setText(str(value) if value != "" else note)
                 item.setToolTip("paper: V_r %s %%, path %s mm, in material %s %%, stick-out %s mm; length/feed %s s"
                                 % (values["paper_vr"], values["paper_path_mm"], values["paper_in_material"],
                                    values["paper_stick_out_mm"], values.get("length_over_feed_s", "")))
@@ -237,6 +240,7 @@ class RoughingStudyPanel(TaskPanel):
                     item.setData(QtCore.Qt.UserRole, self.key_of(values))
                 table.setItem(row, column, item)
         table.setSortingEnabled(True)  # before sizing: the headers then leave room for the sort arrow
+        table.sortByColumn(0, QtCore.Qt.AscendingOrder)  # the study's order (Qt's default is descending)
         table.resizeColumnsToContents()
 
     def draw(self, figure, wide):
