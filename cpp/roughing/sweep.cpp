@@ -62,9 +62,11 @@ class Sweeper {
 public:
   Sweeper(const Partition& partition, const RemovalSolid& solid, const TopoDS_Shape& part, const TopoDS_Shape& stock,
           const SweepSettings& settings)
-      : partition_(partition), settings_(settings), projection_(projectionOf(partition, solid)),
-        partMesh_(geometry::meshFacesAfresh(part, settings.meshDeflection)) {
+      : partition_(partition), settings_(settings), report_(settings.progress, "sweep"),
+        projection_(projectionOf(partition, solid)), partMesh_(geometry::meshFacesAfresh(part, settings.meshDeflection)) {
+    report_(0.0);  // each step of the set-up, the slices and their levels: a GUI repaints and takes Cancel between
     const geometry::TriangleMesh stockMesh = geometry::meshFaces(stock, std::max(0.05, settings.meshDeflection));
+    report_(0.0);
     double high = -std::numeric_limits<double>::infinity();
     for (const Eigen::Vector3d& p : stockMesh.vertices) high = std::max(high, projection_->height(p));
     safeHeight_ = high + settings.clearance;
@@ -79,19 +81,21 @@ public:
     // From the crossable face inwards: S5's slices are numbered from the hub, the tool comes from the skin.
     const bool fromLast = partition_.strategy == Strategy::HubOffsets;
     for (int k = 0; k < count; ++k) {
-      if (settings_.progress && !settings_.progress(double(k) / count)) throw Cancelled("sweep");
+      const double from = double(k) / count, to = double(k + 1) / count;
+      report_(from);
       const int i = fromLast ? count - 1 - k : k;
-      sweepSlice(makeSlice(i));
+      const Slice slice = makeSlice(i);
+      sweepSlice(slice, [&](double within) { report_(from + (to - from) * within); });
     }
     if (!result_.moves.empty()) retract();
-    if (settings_.progress) settings_.progress(1.0);
+    report_(1.0);
     return std::move(result_);
   }
 
 private:
   // The main level, then the intermediate ones from the near side down: each cuts, between its height and the
   // level above it, what the main level's domain left (the domain grows with the height).
-  void sweepSlice(const Slice& slice) {
+  void sweepSlice(const Slice& slice, const std::function<void(double)>& reportWithin) {
     std::map<double, cl::Paths> domains;
     const DomainAt domainAt = [&](double h) -> const cl::Paths& {
       auto found = domains.find(h);
@@ -113,12 +117,19 @@ private:
     const cl::Paths wanted = rest ? restWithin(slice, slice.tip, slice.top) : cl::Paths{};
     level.passes = passesBeyond(ringsOf(main, slice.tip), {}, 0.0, lead, 0.5, settings_.tolerance, rest ? &wanted : nullptr);
     bool down = false;  // the tool is at a cut inside the slice, not retracted
-    if (!level.passes.empty()) sweepLevel(level, down);
+    const double levels = double(heights.size() + 1);
+    const auto inLevel = [&](double index) {  // a level's passes report their share of it
+      return [&reportWithin, index, levels](double within) { reportWithin((index + within) / levels); };
+    };
+    reportWithin(0.0);
+    if (!level.passes.empty()) sweepLevel(level, down, inLevel(0.0));
+    reportWithin(1.0 / levels);
     double above = slice.top;
     // An intermediate level's domain lies in the one's above it, whose passes its entries come down from.
     cl::Paths domainAbove;
-    for (double h : heights) {
-      domainAbove = h == heights.front() ? domainAt(h) : boolean(cl::ctIntersection, domainAt(h), domainAbove);
+    for (size_t index = 0; index < heights.size(); ++index) {
+      const double h = heights[index];
+      domainAbove = index == 0 ? domainAt(h) : boolean(cl::ctIntersection, domainAt(h), domainAbove);
       Level up = levelOf(slice, h, domainAbove, main);
       // The level above cut its whole domain, which holds this one's: entries come down from there.
       up.top = std::exchange(above, h);
@@ -128,7 +139,8 @@ private:
       const cl::Paths wantedHere = rest ? restWithin(slice, h, up.top) : cl::Paths{};
       up.passes = passesBeyond(ringsOf(up.domain, h), main, settings_.stepUpScallop, lead, 0.5, settings_.tolerance,
                                rest ? &wantedHere : nullptr);
-      if (!up.passes.empty()) sweepLevel(up, down);
+      if (!up.passes.empty()) sweepLevel(up, down, inLevel(double(index + 1)));
+      reportWithin(double(index + 2) / levels);
     }
     if (down) retract();
   }
@@ -423,10 +435,11 @@ private:
   // point, an open pass from its start), linked at the level where the straight move stays in the domain, or
   // from another level of the slice where it stays in what the main level cleared; else the tool retracts.
   // `down`: the tool is at a cut of this slice (it stays so at the end).
-  void sweepLevel(const Level& level, bool& down) {
+  void sweepLevel(const Level& level, bool& down, const std::function<void(double)>& reportWithin) {
     bool entered = down;
     std::vector<bool> done(level.passes.size(), false);
     for (size_t n = 0; n < level.passes.size(); ++n) {
+      reportWithin(double(n) / double(level.passes.size()));
       int ring = std::numeric_limits<int>::max();
       for (size_t l = 0; l < level.passes.size(); ++l)
         if (!done[l]) ring = std::min(ring, level.passes[l].ring);
@@ -478,6 +491,7 @@ private:
 
   const Partition& partition_;
   const SweepSettings& settings_;
+  ProgressReporter report_;
   std::unique_ptr<Projection> projection_;
   geometry::TriangleMesh partMesh_;  // within the mesh deflection
   std::unique_ptr<PartTriangles> pushPart_;  // the same triangles in a grid, for the push-out (when on)

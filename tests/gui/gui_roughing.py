@@ -394,12 +394,12 @@ def check_stock_map_legend(legend, thickness):
     Gui.ActiveDocument.ActiveView.saveImage(path, 900, 700, "White")
     run.screenshots.append(path)
     pixels = image_pixels(path)[:, :, [2, 1, 0]].astype(float) / 255.0
-    # the legend's place in the view's [-1, 1] square: the bar over LEGEND_X, the numbers right-aligned left of it
+    # the legend's place in the view's [-1, 1] square: the bar over LEGEND_X, the numbers left-aligned right of it
     (x0, x1), (y0, y1) = LEGEND_X, LEGEND_SPAN
     column_of, row_of = (lambda x: int(round((x + 1.0) / 2.0 * 900))), (lambda y: int(round((1.0 - y) / 2.0 * 700)))
     column = pixels[row_of(y1) + 3:row_of(y0) - 3, column_of(0.5 * (x0 + x1))]
     ends = thickness_colors([0.025, 0.975])
-    numbers_area = pixels[row_of(y1 + 0.03):row_of(y0 - 0.03), column_of(x0 - 0.09):column_of(x0 - 0.01)]
+    numbers_area = pixels[row_of(y1 + 0.03):row_of(y0 - 0.03), column_of(x1 + 0.01):column_of(x1 + 0.09)]
     white = int(np.sum(numbers_area.min(axis=2) > 0.85))
     run.notes["roughing study"]["3D legend pixels"] = {"bar ends": [column[-1].round(2).tolist(),
                                                                     column[0].round(2).tolist()], "white": white}

@@ -52,6 +52,19 @@ class VolumeRoughing(unittest.TestCase):
         across = motions(self.op)[1]
         self.assertIn("A", across.Parameters, "the table turns at the clearance height, before going down")
 
+    def test_the_computation_reports_its_progress_and_stops_when_told(self):
+        """What the GUI's progress dialog reads (and where it lets Qt draw and take Cancel): shares from 0 to 1,
+        never back, often; a False from the callable stops the computation with hsmplanner.Cancelled."""
+        seen = []
+        roughing_op.volume_roughing_program(self.op, lambda done: seen.append(done) or True)
+        self.assertGreater(len(seen), 5)
+        self.assertEqual(seen, sorted(seen), "the share done never goes back")
+        self.assertTrue(0.0 <= seen[0] and seen[-1] <= 1.0 + 1e-9 and seen[-1] > 0.99, (seen[0], seen[-1]))
+        asked = []
+        with self.assertRaises(hsmplanner.Cancelled):
+            roughing_op.volume_roughing_program(self.op, lambda done: asked.append(done) or done < 0.5)
+        self.assertLess(asked[-1], 0.6, "stopped soon after the user's Cancel")
+
     def test_posts_are_read_back_on_their_machines(self):
         folder = temporary_directory(self)
         mpf = os.path.join(folder, "roughing.mpf")

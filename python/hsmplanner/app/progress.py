@@ -44,3 +44,14 @@ def freecad_progress(text):
         dialog.reset()
         dialog.close()
         dialog.deleteLater()
+
+
+def staged(progress, weights):
+    """One progress callable per stage of a computation (each reports its own 0..1), reporting to `progress`
+    the share of the whole; Nones outside the GUI."""
+    if progress is None:
+        return [None] * len(weights)
+    total = float(sum(weights)) or 1.0
+    starts = [sum(weights[:i]) for i in range(len(weights))]
+    return [lambda done, start=start, weight=weight: progress((start + weight * done) / total)
+            for start, weight in zip(starts, weights)]

@@ -73,7 +73,9 @@ def map_node(blocks, color_by):
     return root
 
 
-LEGEND_X = (0.86, 0.92)  # at the right edge of the view; the labels to the left of the bar
+# At the left edge of the view, the labels right of the bar: FreeCAD 1.1's Tasks panel overlays the view's
+# right side while a panel is open.
+LEGEND_X = (-0.92, -0.86)
 LEGEND_SPAN = (-0.8, 0.4)  # below the navigation cube
 
 
@@ -88,7 +90,7 @@ def tick_texts(values, digits):
 
 
 def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=feed_colors, span=LEGEND_SPAN):
-    """A vertical colour bar with labels at the right of the view, in normalised screen coordinates, from
+    """A vertical colour bar with labels at the left of the view, in normalised screen coordinates, from
     span[0] to span[1] in y; `colors(shares)` gives the RGB rows of shares of the scale in [0, 1]."""
     root = screen_root()
     (x0, x1), (y0, y1) = LEGEND_X, span
@@ -99,9 +101,9 @@ def legend_node(low, high, unit, title="mean reached feed", digits=0, colors=fee
         corners_colors.append(colors([(k + 0.5) / LEGEND_STEPS])[0])
     ticks = [k / LEGEND_TICKS for k in range(LEGEND_TICKS + 1)]  # the scale's numbers, every quarter
     texts = tick_texts([low + f * (high - low) for f in ticks], digits)
-    labels = [("%s %s" % (text, unit), x0 - 0.02, y0 + f * (y1 - y0) - 0.02)
-              for text, f in zip(texts, ticks)] + [(title, x1, y1 + 0.06)]
-    add_backing(root, labels, x1, y0 - 0.03, y1 + 0.09)
+    labels = [("%s %s" % (text, unit), x1 + 0.02, y0 + f * (y1 - y0) - 0.02)
+              for text, f in zip(texts, ticks)] + [(title, x0, y1 + 0.06)]
+    add_backing(root, labels, x0, y0 - 0.03, y1 + 0.09)
     root.addChild(colored_quads(corners, corners_colors))
     add_labels(root, labels)
     return root

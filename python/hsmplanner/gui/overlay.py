@@ -59,16 +59,16 @@ CHAR_WIDTH = 0.0135  # normalised width of one character of the 13 px font (7 px
 BACKING = (0.2, 0.2, 0.23)
 
 
-def add_backing(root, labels, right, bottom, top, margin=0.02):
-    """A dark panel behind a legend whose right-aligned `labels` (text, x, y) end left of `right`: white text
-    stays readable on a white background (saveImage's "White", a user's light theme)."""
-    left = min(x - CHAR_WIDTH * len(text) for text, x, _ in labels) - margin
-    root.addChild(colored_quads([[(left, bottom - margin), (right + margin, bottom - margin),
-                                  (right + margin, top + margin), (left, top + margin)]], [BACKING]))
+def add_backing(root, labels, edge, bottom, top, margin=0.02):
+    """A dark panel behind a legend whose left-aligned `labels` (text, x, y) start right of `edge` (the bar's
+    left side): white text stays readable on a white background (saveImage's "White", a user's light theme)."""
+    right = max(x + CHAR_WIDTH * len(text) for text, x, _ in labels) + margin
+    root.addChild(colored_quads([[(edge - margin, bottom - margin), (right, bottom - margin),
+                                  (right, top + margin), (edge - margin, top + margin)]], [BACKING]))
 
 
 def add_labels(root, labels, size=13):
-    """White text, right-aligned at each (text, x, y)."""
+    """White text, left-aligned at each (text, x, y)."""
     font = coin.SoFont()
     font.size = size
     root.addChild(font)
@@ -81,7 +81,7 @@ def add_labels(root, labels, size=13):
         move.translation = (x, y, 0)
         label = coin.SoText2()
         label.string = text
-        label.justification = coin.SoText2.RIGHT
+        label.justification = coin.SoText2.LEFT
         group.addChild(move)
         group.addChild(label)
         root.addChild(group)

@@ -19,6 +19,7 @@ import numpy as np
 from pivy import coin
 
 from .colors import FACE_CLASS_COLORS, FACE_CLASS_LABELS, SLICE_COLORS, SLICE_LABELS
+from .feedmap import LEGEND_X
 from .overlay import add_backing, add_labels, colored_quads, packed_rgba, screen_root, unpickable
 
 WELD = 1e-6          # mm: tessellation vertices closer than this are one vertex
@@ -194,14 +195,16 @@ def volume_node(shape, codes, sub_volumes, deflection, inset, transparency):
 
 
 def legend_node(colors, labels, title="Roughing volume"):
-    """Coloured squares with their labels at the right of the view, below the navigation cube, in normalised
-    screen coordinates (its own camera: it shows in screenshots and saved images)."""
+    """Coloured squares with their labels at the left of the view (as the feed-rate legend, clear of 1.1's
+    overlaid Tasks panel), in normalised screen coordinates (its own camera: it shows in screenshots and saved
+    images)."""
     root = screen_root("HsmRoughingLegend")
-    x0, x1, top, height, gap = 0.86, 0.92, 0.3, 0.07, 0.05
+    # top left, above where the feed-rate, stock and direction legends are (LEGEND_SPAN up to 0.5): both show
+    (x0, x1), top, height, gap = LEGEND_X, 0.85, 0.07, 0.05
     rows = [top - k * (height + gap) for k in range(len(colors))]  # each square's top
-    texts = [(label, x0 - 0.02, y - 0.5 * height - 0.015) for label, y in zip(labels, rows)] + \
-        [(title, x1, top + 0.04)]
-    add_backing(root, texts, x1, rows[-1] - height, top + 0.07)
+    texts = [(label, x1 + 0.02, y - 0.5 * height - 0.015) for label, y in zip(labels, rows)] + \
+        [(title, x0, top + 0.04)]
+    add_backing(root, texts, x0, rows[-1] - height, top + 0.07)
     root.addChild(colored_quads([[(x0, y - height), (x1, y - height), (x1, y), (x0, y)] for y in rows], colors))
     add_labels(root, texts)
     return root

@@ -10,6 +10,7 @@ when the operation computes. Proxy classes are recorded in saved documents: neve
 import FreeCAD
 import Path
 
+import hsmplanner
 from hsmplanner import feedsim, roughing
 
 from ..clearance_moves import via_clearance
@@ -18,6 +19,7 @@ from ..job_controllers import usable_or_added
 from ..op_comments import comment_text, mend_leading_comments
 from ..property_limits import PropertyLimits
 from ..finishing import exact_top
+from ..progress import freecad_progress, staged
 from .commands import program_clearance, sweep_commands, work_plane_comments
 
 PathOp = cam_module("op")
@@ -201,7 +203,12 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
             FreeCAD.Console.PrintError("%s: %s\n" % (obj.Label, error))
 
     def roughing(self, obj):
-        program = volume_roughing_program(obj)
+        with freecad_progress("%s: volume roughing" % obj.Label) as progress:
+            self.compute(obj, progress)
+
+    def compute(self, obj, progress):
+        computing, checking = staged(progress, [4, 1])
+        program = volume_roughing_program(obj, computing)
         for warning in program.warnings:
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
         if program.fed:
@@ -209,6 +216,8 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         machine = feedsim.load_machine(obj.Machine)
         moves, cutter, part_brep = program.moves, program.cutter, program.part_brep
         commands = sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed)
+        if checking is not None and not checking(0.0):
+            raise hsmplanner.Cancelled("%s: cancelled before its clearance check" % obj.Label)
         report = self.clearance(commands, moves, machine, part_brep, cutter, obj.Allowance.Value - 0.01)
         if report.too_close:
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
@@ -275,33 +284,36 @@ def operations_before(obj):
     return chain
 
 
-def volume_roughing_program(obj):
+def volume_roughing_program(obj, progress=None):
     """The Program of a Volume roughing operation `obj`: its Roughing volume's regions swept with its tool and
     settings, joined; with RestFrom, only the stock the operations before left (simulated at 0.2 mm), S3's
-    setup direction searched on it. ValueError or RuntimeError naming what to set."""
+    setup direction searched on it. ValueError or RuntimeError naming what to set; hsmplanner.Cancelled when
+    `progress` (a callable of the share done) says stop."""
     if obj.Volume is None:
         raise ValueError("no Roughing volume: link one (Volume) to give the sub-volumes")
     cutter = check_controller(obj.ToolController)
-    volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume)
+    chain = operations_before(obj)
+    inputs, rest_stage, sweeps, joining = staged(progress, [1, 2 if chain else 0, 4, 2])
+    volume, part_brep, stock_brep, partitions = obj.Volume.Proxy.computed(obj.Volume, inputs)
     if not partitions:
         raise ValueError("%s has no strategy: choose one (S1 to S5) to partition the volume" % obj.Volume.Label)
-    before = [(p.moves, p.cutter) for p in map(program_of, operations_before(obj))]
-    for op in operations_before(obj):
+    before = [(p.moves, p.cutter) for p in map(program_of, chain)]
+    for op in chain:
         if op.Volume is None or op.Volume.Proxy.computed(op.Volume)[1:3] != (part_brep, stock_brep):
             raise ValueError("RestFrom %s roughs another part or stock than %s: link an operation on the same "
                              "part and stock" % (op.Label, obj.Volume.Label))
     rest = None
     if before:
         rest = roughing.simulate_removal(before[0][0], stock_brep, part_brep, tool=before[0][1], resolution=MEND_RESOLUTION,
-                                         rest_spacing=REST_SPACING, then=before[1:]).rest
+                                         rest_spacing=REST_SPACING, then=before[1:], progress=rest_stage).rest
     passes, length, swept, warnings = 0, 0.0, [], []
     settings = obj.Volume.Proxy.settings(obj.Volume)
-    for index, partition in partitions:
+    for (index, partition), (setup, sweeping) in zip(partitions, pairs(staged(sweeps, [1, 3] * len(partitions)))):
         if rest is not None and settings["strategy"] == "S3":  # the setup direction for what is left
             partition = roughing.partition(volume.solids[index], part_brep, "S3", step=partition.step,
                                            setup_resolution_deg=settings.get("setup_resolution_deg"),
-                                           setup_grid=settings.get("setup_grid"), rest=rest)
-        paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
+                                           setup_grid=settings.get("setup_grid"), rest=rest, progress=setup)
+        paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter, progress=sweeping,
                                radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
                                ramp_angle_deg=obj.RampAngle.Value, step_up_minimum=obj.StepUpMinimum.Value,
                                step_up_scallop=obj.StepUpScallop.Value, push_out=obj.PushOut.Value, rest=rest)
@@ -312,11 +324,17 @@ def volume_roughing_program(obj):
     # The regions as one program, linked through the air; rapids kept out of the stock the program leaves at
     # their time (after the operations before); checked whole against the part, links included.
     moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
-                                                   tool=cutter, resolution=MEND_RESOLUTION, after=before or None)
+                                                   tool=cutter, resolution=MEND_RESOLUTION, after=before or None,
+                                                   progress=joining)
     stock_top = exact_top(obj.Volume.Proxy.inputs(obj.Volume)[1])
     program = Program(moves, cutter, part_brep, fed, warnings, passes, length, len(partitions), stock_top)
     obj.Proxy.program = program
     return program
+
+
+def pairs(items):
+    """[(items[0], items[1]), (items[2], items[3]), …]"""
+    return list(zip(items[0::2], items[1::2]))
 
 
 def program_of(op):

@@ -29,7 +29,7 @@ from hsmplanner._core import roughing as core
 from hsmplanner.geometry import shape_from_brep
 from ..properties import HIDDEN, add_inputs, add_results
 from ..feedrate import is_job
-from ..progress import freecad_progress
+from ..progress import freecad_progress, staged
 from ..property_limits import PropertyLimits
 from ..compat import set_shape
 from ..proxy_state import NoSavedState
@@ -115,17 +115,6 @@ def shape_fingerprint(shape):
     for vertex in shape.Vertexes:
         digest.update(("%.6f %.6f %.6f;" % (vertex.X, vertex.Y, vertex.Z)).encode())
     return digest.hexdigest()
-
-
-def staged(progress, weights):
-    """One progress callable per stage of a computation (each reports its own 0..1), reporting to `progress`
-    the share of the whole; Nones outside the GUI."""
-    if progress is None:
-        return [None] * len(weights)
-    total = float(sum(weights)) or 1.0
-    starts = [sum(weights[:i]) for i in range(len(weights))]
-    return [lambda done, start=start, weight=weight: progress((start + weight * done) / total)
-            for start, weight in zip(starts, weights)]
 
 
 def jobs(document):
@@ -295,21 +284,23 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         obj.InputSignature = signature
         self.show(obj)
 
-    def computed(self, obj):
+    def computed(self, obj, progress=None):
         """(VolumeToRemove, part BREP, stock BREP, [(region index, Partition)]) of the object's inputs, from
-        the caches when they hold them (a reopened document computes them again): for the operations that
-        sweep the sub-volumes. Raises as a recompute does."""
+        the caches when they hold them (a reopened document computes them again, reporting to `progress`): for
+        the operations that sweep the sub-volumes. Raises as a recompute does."""
         if not hasattr(self, "partition_cache"):
             self.forget()
         part_shape, stock_shape = self.inputs(obj)
         settings = self.settings(obj)
         volume_key = (shape_fingerprint(part_shape), shape_fingerprint(stock_shape))
+        stage_volume, stage_partitions = staged(progress, [1, 2])
         if self.volume_cache is None or self.volume_cache[0] != volume_key:
             part_brep = hsmplanner.as_brep(part_shape.copy())
-            self.volume_cache = (volume_key, roughing.volume_to_remove(stock_shape.copy(), part_brep), part_brep)
+            self.volume_cache = (volume_key, roughing.volume_to_remove(stock_shape.copy(), part_brep,
+                                                                       progress=stage_volume), part_brep)
             self.partition_cache.clear()
         _, volume, part_brep = self.volume_cache
-        partitions = self.partitions(obj, volume, part_brep, volume_key, settings, None)
+        partitions = self.partitions(obj, volume, part_brep, volume_key, settings, stage_partitions)
         return volume, part_brep, hsmplanner.as_brep(stock_shape.copy()), partitions
 
     def partitions(self, obj, volume, part_brep, volume_key, settings, progress):
