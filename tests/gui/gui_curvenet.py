@@ -143,4 +143,20 @@ def reopen_and_cancel_keeps_the_object(run):
     run.check("cancel kept the existing net", FreeCAD.ActiveDocument.getObject("GuideCurveNet") is not None)
 
 
+
+@run.step
+def a_new_net_cancelled_leaves_neither_object_nor_undo_entry(run):
+    document = FreeCAD.ActiveDocument
+    before = (document.UndoCount, list(document.UndoNames), sorted(o.Name for o in document.Objects))
+    Gui.Selection.clearSelection()
+    Gui.runCommand("HSM_GuideCurveNet")
+    run.wait_until(lambda: run.task_dialog_open() and panel() is not None, 20.0, "a new net's panel open")
+    panel().reject()
+    run.wait_until(lambda: not run.task_dialog_open() and panel() is None, 20.0, "the panel closed")
+    after = (document.UndoCount, list(document.UndoNames), sorted(o.Name for o in document.Objects))
+    run.notes["undo before and after a cancelled new net"] = [before[:2], after[:2]]
+    run.check("no object added", after[2] == before[2], str(after[2]))
+    run.check("the undo stack as before", after[:2] == before[:2], "%s -> %s" % (before[:2], after[:2]))
+
+
 run.start()

@@ -57,10 +57,11 @@ class CommandGuideCurveNet:
 
     def Activated(self):
         from hsmplanner.app import guide_curve_net_object
+        from hsmplanner.gui.guide_curve_net_panel import ADD_TRANSACTION
         from hsmplanner.gui.view_providers import ViewProviderGuideCurveNet
 
         document = FreeCAD.ActiveDocument
-        document.openTransaction("Add guide curve net")
+        document.openTransaction(ADD_TRANSACTION)
         obj = guide_curve_net_object.create(document)
         view_provider = ViewProviderGuideCurveNet(obj.ViewObject)
         view_provider.created = True

@@ -17,6 +17,8 @@ K_SLIDER_SCALE = 100     # slider units per unit of K
 STEP_SLIDER_SCALE = 2    # slider units per mm of P (0.5 mm resolution)
 
 
+ADD_TRANSACTION = "Add guide curve net"  # the command's undo step
+
 class _PickGate:
     """Selection gate: only edges, or only faces, while a Pick button is down."""
 
@@ -250,7 +252,13 @@ class GuideCurveNetPanel(TaskPanel):
         self._close()
         document.abortTransaction()
         if self.created and document.getObject(self.obj.Name) is not None:
-            document.removeObject(self.obj.Name)  # the command's new object goes if the user cancels
+            # The command's new object goes if the user cancels, and leaves no undo entry: FreeCAD has
+            # committed the command's transaction by now (editing does), so it is undone, not deleted (a
+            # deletion would add a "Delete" step after the "Add").
+            if list(document.UndoNames[:1]) == [ADD_TRANSACTION]:
+                document.undo()
+            else:
+                document.removeObject(self.obj.Name)
         return True
 
     def _close(self):
