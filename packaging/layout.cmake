@@ -10,10 +10,7 @@ if(NOT HSM_FREECADCMD)
     "install Debian's freecad (scripts/install-deps.sh)")
 endif()
 execute_process(
-  COMMAND ${HSM_FREECADCMD} -c "import os, FreeCAD, Path.Preferences as p; print('HSM_MOD=' + \
-os.path.realpath(FreeCAD.getResourceDir() + 'Mod')); print('HSM_POSTS=' + \
-os.path.realpath(os.path.join(p.pathPostSourcePath(), 'scripts'))); \
-import PySide; print('HSM_FREECAD=%s.%s' % tuple(FreeCAD.Version()[:2])); print('HSM_PYSIDE=' + PySide.__version__)"
+  COMMAND ${HSM_FREECADCMD} ${CMAKE_CURRENT_LIST_DIR}/freecad_layout.py
   OUTPUT_VARIABLE hsm_answer ERROR_VARIABLE hsm_errors RESULT_VARIABLE hsm_status)
 if(NOT hsm_answer MATCHES "HSM_MOD=([^\n]+)\nHSM_POSTS=([^\n]+)\nHSM_FREECAD=([0-9.]+)\nHSM_PYSIDE=([0-9]+)")
   message(FATAL_ERROR "freecadcmd did not say where FreeCAD's modules are (exit ${hsm_status}): "
