@@ -12,7 +12,7 @@ endif()
 execute_process(
   COMMAND ${HSM_FREECADCMD} ${CMAKE_CURRENT_LIST_DIR}/freecad_layout.py
   OUTPUT_VARIABLE hsm_answer ERROR_VARIABLE hsm_errors RESULT_VARIABLE hsm_status)
-if(NOT hsm_answer MATCHES "HSM_MOD=([^\n]+)\nHSM_POSTS=([^\n]+)\nHSM_FREECAD=([0-9.]+)\nHSM_PYSIDE=([0-9]+)")
+if(NOT hsm_answer MATCHES "HSM_MOD=([^\n]+)\nHSM_POSTS=([^\n]+)\nHSM_FREECAD=([0-9.]+)\nHSM_PYSIDE=(pyside[0-9])")
   message(FATAL_ERROR "freecadcmd did not say where FreeCAD's modules are (exit ${hsm_status}): "
     "${hsm_answer}${hsm_errors}")
 endif()
@@ -21,7 +21,7 @@ set(HSM_FREECAD_POSTS_DIR "${CMAKE_MATCH_2}")
 # The package is for one FreeCAD of one Debian release: FreeCAD 1.0 (Qt 5, PySide2) on trixie, 1.1 (Qt 6,
 # PySide6) on forky. Its version carries the release (0.9.0+trixie, 0.9.0+forky), so both can sit in one folder.
 set(HSM_FREECAD_RELEASE "${CMAKE_MATCH_3}")
-set(HSM_PYSIDE "pyside${CMAKE_MATCH_4}")
+set(HSM_PYSIDE "${CMAKE_MATCH_4}")
 execute_process(COMMAND sh -c ". /etc/os-release && echo \"$VERSION_CODENAME\""
   OUTPUT_VARIABLE HSM_DEBIAN_SUITE OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(NOT HSM_DEBIAN_SUITE MATCHES "^[a-z]+$")
