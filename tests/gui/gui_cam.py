@@ -292,11 +292,14 @@ def cycle_time_of_the_job(run):
              for r in range(table.rowCount())]
     run.notes["cycle time table"] = cells
     run.check("a row per operation and the Job's", table.rowCount() == len(ops) + 1, str(cells))
-    run.check("every row simulated", all(row[3] for row in cells), str(cells))
+    run.check("every row simulated", all(row[1] for row in cells), str(cells))
     run.check("the simulated time on each operation and the Job",
               all(getattr(o, "SimulatedCycleTime", 0) > 0 for o in ops + [job]),
               str([(o.Label, getattr(o, "SimulatedCycleTime", None)) for o in ops + [job]]))
     run.check_fits_combo_view("Cycle time panel", panel.form)
+    from hsmplanner.gui.cycle_time_panel import KEY_COLUMNS
+
+    run.check_table_reads("Cycle time table", table, KEY_COLUMNS)
     run.screenshot("cam_cycle_time")
     panel.reject()
     run.wait_until(lambda: not run.task_dialog_open(), 10.0, "the Cycle time panel closed")

@@ -258,12 +258,12 @@ class GuiRun:
         self.check("%s: different names read apart as drawn" % name, len(shown) == len(fulls), str(shown))
 
     def check_table_reads(self, name, table, key_columns):
-        """Every header of the table reads whole (with room for the sort arrow), every cell's text fits its
+        """Every header of the table reads whole (with room for the sort arrow if it sorts), every cell's text fits its
         column, and the first `key_columns` columns are in view without scrolling."""
         header, metrics = table.horizontalHeader(), table.fontMetrics()
         style = header.style()
         arrow = style.pixelMetric(QtWidgets.QStyle.PM_HeaderMarkSize) + 2 * style.pixelMetric(
-            QtWidgets.QStyle.PM_HeaderMargin)
+            QtWidgets.QStyle.PM_HeaderMargin) if table.isSortingEnabled() else 0  # no arrow on an unsorted table
         headers = [table.horizontalHeaderItem(c).text() for c in range(table.columnCount())]
         cut = [text for c, text in enumerate(headers)
                if header.fontMetrics().horizontalAdvance(text) + arrow > header.sectionSize(c)]

@@ -6,13 +6,16 @@ from hsmplanner.app.cycle_time import clock
 
 from .task_panel import AnalysisPanel, narrow_combo
 
+# The simulated time next to the operation's name: the columns in view in the default Combo View's width
+# (KEY_COLUMNS) are what a user compares first; CAM's estimate and length / feed follow.
 COLUMNS = [("Operation", "the Job's active operations in order, then the whole Job"),
+           ("Sim.", "simulated on the machine: jerk, acceleration, look-ahead, the rotary axes"),
            ("CAM", "CAM's own estimate (the operation's CycleTime): length / feed, every move with a Z component "
                    "at the vertical feed"),
            ("L / F", "length / programmed feed, rapids at the machine's rapid traverse"),
-           ("Sim.", "simulated on the machine: jerk, acceleration, look-ahead, the rotary axes"),
            ("Held by", "what held the speed longest in the simulation (F: the programmed feed; X..C: that axis; "
                        "curvature; the block rate)")]
+KEY_COLUMNS = 3
 
 
 class CycleTimePanel(AnalysisPanel):
@@ -64,7 +67,7 @@ class CycleTimePanel(AnalysisPanel):
     def add_row(self, row, bold=False):
         index = self.table.rowCount()
         self.table.insertRow(index)
-        texts = [row["label"], clock(row["cam_s"]), clock(row["naive_s"]), clock(row["simulated_s"]),
+        texts = [row["label"], clock(row["simulated_s"]), clock(row["cam_s"]), clock(row["naive_s"]),
                  row["held_by"] or ("—" if row["error"] else "")]
         for column, text in enumerate(texts):
             item = QtWidgets.QTableWidgetItem(text)
