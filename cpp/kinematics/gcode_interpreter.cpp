@@ -212,6 +212,8 @@ bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
   if (w.hasRadius) cycleR_ = w.radiusWord * unit_;
   if (w.hasAxis[2]) cycleZ_ = w.axis[2] * unit_;
   if (w.hasQ) cycleQ_ = w.qWord * unit_;
+  if (w.hasP && !(w.pWord >= 0.0))
+    throw ParseError(lineNumber_, name + " P" + number(w.pWord) + ": a dwell lasts 0 s or more; write P<seconds>");
   if (w.hasP) cycleP_ = w.pWord;
   if (!std::isfinite(cycleR_) || !std::isfinite(cycleZ_))
     throw ParseError(lineNumber_, name + " needs R (the retract plane) and Z (the hole's bottom), given on its line "

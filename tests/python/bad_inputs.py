@@ -104,6 +104,56 @@ CASES = [
     holds("F0 on a rapid, as FreeCAD CAM's area operations end", "result = h.simulate('G1 X1 F100\\nG0 F0.000000 Z5\\n', 'linuxcnc-2.9').summary.block_count", "result == 2"),
     raises("a feed move after F0", "h.simulate('G1 X1 F100\\nG0 F0 Z5\\nG1 X2\\n', 'linuxcnc-2.9')", "ValueError", "line 3: a feed move at F0 (set at line 2)"),
     raises("G4 P-5", "h.simulate('G4 P-5\\n', 'linuxcnc-2.9')", "ValueError", "G4 P-5: a dwell lasts 0 s or more"),
+    # --- canned cycles --------------------------------------------------------------------------------------
+    raises("G81 without R", "h.simulate('G0 Z5\\nG81 X1 Z-2 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 2: G81 needs R (the retract plane)"),
+    raises("G83 Q0", "h.simulate('G0 Z5\\nG83 X1 Z-2 R1 Q0 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 2: G83 needs Q > 0"),
+    raises("G83 Q-1", "h.simulate('G0 Z5\\nG83 X1 Z-2 R1 Q-1 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 2: G83 needs Q > 0"),
+    raises("G83 a billion pecks", "h.simulate('G0 Z5\\nG83 X1 Z-1000000 R1 Q0.001 F60\\n', 'linuxcnc-2.9')",
+           "ValueError", "is over 100,000 pecks: give a larger Q"),
+    raises("G81 bottom above R", "h.simulate('G0 Z5\\nG81 X1 Z3 R1 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "the bottom Z3 is above the retract plane R1"),
+    raises("G81 at F0", "h.simulate('G0 Z5\\nG81 X1 Z-2 R1\\n', 'linuxcnc-2.9')", "ValueError",
+           "G81 drills at F0: program a positive F"),
+    raises("G81 in G91", "h.simulate('G0 Z5\\nG91 G81 X1 Z-2 R1 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "G81 in G91"),
+    holds("G81 a billion mm away", "result = h.simulate('G0 Z5\\nG81 X1000000000 Z-2 R1 F60\\n', "
+          "'linuxcnc-2.9').summary.block_count", "result >= 3"),
+    raises("G82 P-5", "h.simulate('G0 Z5\\nG82 X1 Z-2 R1 P-5 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "line 2: G82 P-5: a dwell lasts 0 s or more"),
+    holds("G82 P1e9 dwells as asked", "result = h.simulate('G0 Z5\\nG82 X1 Z-2 R1 P1000000000 F60\\n', "
+          "'linuxcnc-2.9').summary.dwell_time", "result == 1e9"),
+    # --- the cycle time of a Job ---------------------------------------------------------------------------
+    raises("cycle time of None", "from hsmplanner.app import cycle_time; cycle_time.job_rows(None)", "ValueError",
+           "is not a CAM Job: pick a Job"),
+    raises("cycle time of a part", "from hsmplanner.app import cycle_time; cycle_time.job_rows(new_master())",
+           "ValueError", "is not a CAM Job"),
+    raises("cycle time of an empty Job", "from hsmplanner.app import cycle_time; cycle_time.job_rows(empty_job())",
+           "ValueError", "has no active operation: add one"),
+    raises("cycle time on no such machine",
+           "from hsmplanner.app import cycle_time; cycle_time.job_rows(one_rapid_op(), 'no-such-machine')",
+           "ValueError", "no-such-machine"),
+    raises("cycle time object of a string", "from hsmplanner.app import cycle_time_object; "
+           "cycle_time_object.create('a job')", "ValueError", "is not a CAM Job"),
+    holds("clock of absurd seconds", "from hsmplanner.app.cycle_time import clock; "
+          "result = [clock(0), clock(-5), clock(1e9), clock(None)]", "result[0] == '0:00' and result[3] == ''"),
+    raises("clearance height NaN", "import Path; from hsmplanner.app.clearance_moves import via_clearance; "
+           "via_clearance([Path.Command('G0', {'X': 0.0, 'Y': 0.0, 'Z': 5.0})], float('nan'))", "ValueError",
+           "clearance height nan mm is not a number"),
+    holds("clearance height below the first move", "import Path; from hsmplanner.app.clearance_moves import "
+          "via_clearance; result = via_clearance([Path.Command('G0', {'X': 0.0, 'Y': 0.0, 'Z': 5.0})], -1e9)",
+          "result[0].Parameters == {'Z': 5.0} and len(result) == 4"),
+    holds("no moves to reach", "from hsmplanner.app.clearance_moves import via_clearance; "
+          "result = via_clearance([], 1e9)", "result == []"),
+    holds("cusp range of a tool of diameter 0, -4, NaN, 1e9", "from hsmplanner.app.finishing_ops import "
+          "cusp_limits; from types import SimpleNamespace as N; result = [cusp_limits(N(Tool=N(Diameter=d))) "
+          "for d in (0.0, -4.0, float('nan'), 1e9, 1e-9)]",
+          "all(r == (0.001, 10.0) for r in result)"),
+    holds("legend ticks of NaN and equal values", "from hsmplanner.gui.feedmap import tick_texts; "
+          "result = [tick_texts([float('nan')] * 5, 4), tick_texts([1.0] * 5, 0), tick_texts([0, 1e-9, 2e-9], 0)]",
+          "len(result[0]) == 5 and result[1] == ['1'] * 5 and len(set(result[2])) == 3"),
     # --- numbers in G-code that are not numbers ---------------------------------------------------------------
     raises("X1e400", "h.simulate('G1 X1e400 F100\\n', 'linuxcnc-2.9')", "ValueError", "line 1: 'X1E400': G-code numbers have no exponent"),
     raises("Y nan", "h.simulate('G1 X1 F100\\nG1 Y nan\\nG1 X5\\n', 'linuxcnc-2.9')", "ValueError", "line 2: 'Y NAN' is not"),

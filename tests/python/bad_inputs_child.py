@@ -126,6 +126,21 @@ def status_error(obj):
     return obj
 
 
+def empty_job():
+    """A CAM Job on the master feature with no operation."""
+    return job_with_default_controller()[1]
+
+
+def one_rapid_op():
+    """A CAM Custom operation of one rapid, in a Job."""
+    from hsmplanner.app.compat import cam_module
+    job = empty_job()
+    op = cam_module("custom_op").Create("Rapid", parentJob=job)
+    op.Gcode = ["G0 X1 Y1 Z5"]
+    job.Document.recompute()
+    return job
+
+
 def default_controller_finishing():
     """The user switches a finishing operation to FreeCAD's default controller (a flat end mill at F0; its label
     is "TC: Default Tool" on 1.0, "TC: 5mm Endmill" on 1.1)."""
@@ -230,11 +245,12 @@ def run(case):
 def main():
     resource.setrlimit(resource.RLIMIT_AS, (bad_inputs.MEMORY_LIMIT_BYTES, bad_inputs.MEMORY_LIMIT_BYTES))
     for case in json.loads(os.environ["HSM_BAD_INPUT_CASES"]):
-        print("HSM-CASE-START " + json.dumps(case["name"]), flush=True)
+        # each marker on a line of its own: FreeCAD's progress text ("Recompute... (100 %)") ends without one
+        print("\nHSM-CASE-START " + json.dumps(case["name"]), flush=True)
         report = run(case)
         for document in list(FreeCAD.listDocuments().values()):
             FreeCAD.closeDocument(document.Name)
-        print("HSM-CASE-RESULT " + json.dumps(report), flush=True)
+        print("\nHSM-CASE-RESULT " + json.dumps(report), flush=True)
 
 
 main()

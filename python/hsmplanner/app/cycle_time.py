@@ -54,6 +54,7 @@ def job_rows(job, machine=feedsim.DEFAULT_MACHINE):
     ops = operations(job)
     if not ops:
         raise ValueError("%s has no active operation: add one, or make one active" % job.Label)
+    feedsim.load_machine(machine)  # an unknown machine is named once, not in every row
     rows = [operation_row(op, machine) for op in ops]
     total = dict(name=job.Name, label=job.Label, cam_s=cam_estimate_s(job), naive_s=None, simulated_s=None,
                  held_by="", error="")

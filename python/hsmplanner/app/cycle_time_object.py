@@ -14,7 +14,7 @@ from hsmplanner import feedsim
 
 from .cycle_time import clock, job_rows
 from .feedrate import is_job
-from .feedrate_object import CUSTOM_MACHINE, source_machine
+from .feedrate_object import CUSTOM_MACHINE, add_machine_properties, chosen_machine, source_machine
 from .properties import add_results
 from .proxy_state import InMemoryResult
 
@@ -35,21 +35,10 @@ _OUTPUTS = [
 class CycleTimeAnalysis(InMemoryResult):
     def __init__(self, obj):
         obj.addProperty("App::PropertyLink", "Job", "Cycle time", "the CAM Job to time")
-        obj.addProperty("App::PropertyEnumeration", "Machine", "Cycle time", "the machine model it runs on")
-        obj.Machine = feedsim.machine_names() + [CUSTOM_MACHINE]
-        obj.Machine = feedsim.DEFAULT_MACHINE
-        obj.addProperty("App::PropertyFile", "MachineFile", "Cycle time",
-                        "machine JSON file, used when Machine is '%s'" % CUSTOM_MACHINE)
+        add_machine_properties(obj, "Cycle time", "the machine model it runs on")
         add_results(obj, _OUTPUTS)
         obj.Proxy = self
         self.result = None
-
-    def machine(self, obj):
-        if obj.Machine == CUSTOM_MACHINE:
-            if not obj.MachineFile:
-                raise ValueError("Machine is '%s' but MachineFile is empty: choose a machine JSON file" % CUSTOM_MACHINE)
-            return obj.MachineFile
-        return obj.Machine
 
     def has_input(self, obj):
         return is_job(obj.Job)
@@ -57,8 +46,7 @@ class CycleTimeAnalysis(InMemoryResult):
     def compute(self, obj):
         if not is_job(obj.Job):
             raise ValueError("Job is not a CAM Job: link one")
-        machine = self.machine(obj)
-        rows, total = job_rows(obj.Job, machine)
+        rows, total = job_rows(obj.Job, chosen_machine(obj))
         self.result = dict(rows=rows, total=total, machine=obj.Machine)
         for row in rows:
             mark(obj.Document.getObject(row["name"]), row["simulated_s"], obj.Machine)

@@ -30,16 +30,30 @@ _OUTPUTS = [
 ]
 
 
+def add_machine_properties(obj, group, tooltip):
+    """Machine (a preset, or CUSTOM_MACHINE) and MachineFile: how an analysis object chooses its machine."""
+    obj.addProperty("App::PropertyEnumeration", "Machine", group, tooltip)
+    obj.Machine = feedsim.machine_names() + [CUSTOM_MACHINE]
+    obj.Machine = DEFAULT_MACHINE
+    obj.addProperty("App::PropertyFile", "MachineFile", group,
+                    "machine JSON file, used when Machine is '%s'" % CUSTOM_MACHINE)
+
+
+def chosen_machine(obj):
+    """The preset name or machine file an analysis object's Machine and MachineFile choose."""
+    if obj.Machine == CUSTOM_MACHINE:
+        if not obj.MachineFile:
+            raise ValueError("Machine is '%s' but MachineFile is empty: choose a machine JSON file" % CUSTOM_MACHINE)
+        return obj.MachineFile
+    return obj.Machine
+
+
 class FeedRateAnalysis(InMemoryResult):
     """The per-block result is simulated again after the document was reopened."""
 
     def __init__(self, obj):
         obj.addProperty("App::PropertyLink", "Source", "Feed-rate analysis", "Job or operation to simulate")
-        obj.addProperty("App::PropertyEnumeration", "Machine", "Feed-rate analysis", "machine model")
-        obj.Machine = feedsim.machine_names() + [CUSTOM_MACHINE]
-        obj.Machine = DEFAULT_MACHINE
-        obj.addProperty("App::PropertyFile", "MachineFile", "Feed-rate analysis",
-                        "machine JSON file, used when Machine is '%s'" % CUSTOM_MACHINE)
+        add_machine_properties(obj, "Feed-rate analysis", "machine model")
         obj.addProperty("App::PropertyEnumeration", "ColorBy", "Display", "what the colours of the map show")
         obj.ColorBy = COLOR_MODES
         add_results(obj, _OUTPUTS)
@@ -47,11 +61,7 @@ class FeedRateAnalysis(InMemoryResult):
         self.result = None
 
     def machine(self, obj):
-        if obj.Machine == CUSTOM_MACHINE:
-            if not obj.MachineFile:
-                raise ValueError("Machine is '%s' but MachineFile is empty: choose a machine JSON file" % CUSTOM_MACHINE)
-            return obj.MachineFile
-        return obj.Machine
+        return chosen_machine(obj)
 
     def compute(self, obj):
         if not is_simulatable(obj.Source):

@@ -69,13 +69,21 @@ class CommandGuideCurveNet:
         return obj
 
 
-def analysis_of(document, proxy_class, link, target):
-    """The analysis (a `proxy_class` object whose `link` is `target`) the document already has, or None: the
-    command opens it again rather than adding another object at each run."""
-    for obj in document.Objects:
-        if type(getattr(obj, "Proxy", None)).__name__ == proxy_class and getattr(obj, link, None) == target:
-            return obj
-    return None
+def open_analysis(proxy_class, link, target, transaction, make):
+    """Opens the panel of `target`'s analysis: the one the document has (a `proxy_class` object whose `link`
+    is `target`), else a new one from make(target) in one undo step named `transaction`. A command run again
+    opens what it made before rather than adding another object."""
+    document = target.Document
+    obj = next((o for o in document.Objects if type(getattr(o, "Proxy", None)).__name__ == proxy_class
+                and getattr(o, link, None) == target), None)
+    if obj is None:
+        document.openTransaction(transaction)
+        try:
+            obj = make(target)
+        finally:
+            document.commitTransaction()
+    FreeCADGui.ActiveDocument.setEdit(obj.Name)
+    return obj
 
 
 class CommandFeedRateAnalysis:
@@ -103,19 +111,13 @@ class CommandFeedRateAnalysis:
         from hsmplanner.app import feedrate_object
         from hsmplanner.gui.view_providers import ViewProviderFeedRateAnalysis
 
-        source = self.selected_source()
-        document = source.Document
-        obj = analysis_of(document, "FeedRateAnalysis", "Source", source)
-        if obj is None:
-            document.openTransaction("Feed-rate analysis")
-            try:
-                obj = feedrate_object.create(source, document=document)
-                ViewProviderFeedRateAnalysis(obj.ViewObject)
-                obj.ViewObject.Proxy.redraw(obj)
-            finally:
-                document.commitTransaction()
-        FreeCADGui.ActiveDocument.setEdit(obj.Name)
-        return obj
+        def make(source):
+            obj = feedrate_object.create(source, document=source.Document)
+            ViewProviderFeedRateAnalysis(obj.ViewObject)
+            obj.ViewObject.Proxy.redraw(obj)
+            return obj
+
+        return open_analysis("FeedRateAnalysis", "Source", self.selected_source(), "Feed-rate analysis", make)
 
 
 class CommandCycleTime:
@@ -132,19 +134,13 @@ class CommandCycleTime:
 
     @staticmethod
     def selected_job():
+        """The selected Job, or the Job of the selected operation; None otherwise."""
         from hsmplanner.app.feedrate import is_job
+        from hsmplanner.app.posts.writer import job_of
 
         selection = FreeCADGui.Selection.getSelection()
-        if len(selection) != 1:
-            return None
-        chosen = selection[0]
-        if is_job(chosen):
-            return chosen
-        for parent in chosen.InList:  # an operation: its Job holds the group it is in
-            for job in [parent] + list(parent.InList):
-                if is_job(job):
-                    return job
-        return None
+        job = job_of(selection) if len(selection) == 1 else None
+        return job if is_job(job) else None
 
     def IsActive(self):
         return self.selected_job() is not None
@@ -153,18 +149,12 @@ class CommandCycleTime:
         from hsmplanner.app import cycle_time_object
         from hsmplanner.gui.view_providers import ViewProviderCycleTime
 
-        job = self.selected_job()
-        document = job.Document
-        obj = analysis_of(document, "CycleTimeAnalysis", "Job", job)
-        if obj is None:
-            document.openTransaction("Cycle time")
-            try:
-                obj = cycle_time_object.create(job, document=document)
-                ViewProviderCycleTime(obj.ViewObject)
-            finally:
-                document.commitTransaction()
-        FreeCADGui.ActiveDocument.setEdit(obj.Name)
-        return obj
+        def make(job):
+            obj = cycle_time_object.create(job, document=job.Document)
+            ViewProviderCycleTime(obj.ViewObject)
+            return obj
+
+        return open_analysis("CycleTimeAnalysis", "Job", self.selected_job(), "Cycle time", make)
 
 
 class CommandMachiningDirection:

@@ -271,4 +271,5 @@ TEST(CannedCycles, WhatCannotBeReadIsNamed) {
   EXPECT_EQ(errorOf("G0 Z5\nG18 G81 X1 Z-2 R1 F60\n").rfind("line 2: G81 in G18", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z5\nG81 X1 Z-2 R1\n").rfind("line 2: G81 drills at F0", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z5\nG83 X1 Z-1000000 R1 Q0.001 F60\n").rfind("line 2: G83: ", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z5\nG82 X1 Z-2 R1 P-5 F60\n").rfind("line 2: G82 P-5: a dwell lasts 0 s or more", 0), 0u);
 }
