@@ -112,6 +112,47 @@ class GuiRun:
             time.sleep(0.02)
 
     @staticmethod
+    def event_loop_probe(action):
+        """Runs action() with a Qt timer ticking every 20 ms, as a user's clicks and the 3D view's redraws would
+        be served: {"longest_freeze_s": the longest time between ticks, "ticks", "ticks_in_worker": ticks while
+        the core computed in its worker thread, "frozen_in": where the GUI thread was in its longest freeze}."""
+        import threading
+        import traceback
+
+        ticks, in_worker, frozen, watching = [time.monotonic()], [0], {}, [True]
+        main = threading.main_thread().ident
+
+        def tick():
+            ticks.append(time.monotonic())
+            in_worker[0] += any(t.name == "hsmplanner core" for t in threading.enumerate())
+
+        def watch():  # samples the GUI thread's stack while it serves no event
+            while watching[0]:
+                time.sleep(0.05)
+                since = time.monotonic() - ticks[-1]
+                frame = sys._current_frames().get(main)
+                if since > 0.2 and frame is not None and since > frozen.get("s", 0.0):
+                    stack = [f for f in traceback.extract_stack(frame) if "hsmplanner" in f.filename]
+                    frozen.update(s=round(since, 2), where=["%s:%d %s" % (os.path.basename(f.filename), f.lineno,
+                                                                          f.name) for f in stack[-4:]])
+
+        watcher = threading.Thread(target=watch, daemon=True)
+        timer = QtCore.QTimer()
+        timer.setInterval(20)
+        timer.timeout.connect(tick)
+        timer.start()
+        watcher.start()
+        try:
+            action()
+        finally:
+            timer.stop()
+            watching[0] = False
+            watcher.join()
+        ticks.append(time.monotonic())
+        return {"longest_freeze_s": round(max(b - a for a, b in zip(ticks, ticks[1:])), 2),
+                "ticks": len(ticks) - 2, "ticks_in_worker": in_worker[0], "frozen_in": frozen.get("where")}
+
+    @staticmethod
     def valid(obj):
         """The document object exists and its last recompute did not fail. (An object recomputed alone, by
         obj.recompute(), stays "Touched": wait for what its recompute sets as well.)"""

@@ -233,7 +233,11 @@ def every_strategy(key, op, volume, stock, timeout):
     document = FreeCAD.ActiveDocument
     for strategy in STRATEGIES:
         volume.Strategy = roughing_object.strategy_label(strategy)
-        document.recompute()
+        probe = run.event_loop_probe(document.recompute)
+        run.notes.setdefault("event loop while %s recomputes" % key, {})[strategy] = probe
+        if key == "impeller" and strategy not in REFUSED.get(key, {}):  # its sweeps take seconds: beside the loop
+            run.check("%s %s: the GUI served events while the core computed" % (key, strategy),
+                      probe["ticks_in_worker"] > 0, str(probe))
         if strategy in REFUSED.get(key, {}):
             run.wait_until(lambda: volume.Proxy.error is not None, timeout, "%s %s refused" % (key, strategy))
             check_refused(key, strategy, volume)

@@ -167,7 +167,6 @@ def a_small_grid_on_two_workers(run):
     run.check("three rows that ran", rows is not None and len(shown) == 3
               and all(not error and t > 0 for t, error in shown.values()), str(shown))
     run.check("planes 0° read back from the cache of the cancelled run", any(r.get("cached") for r in rows or []))
-    run.check("the grid ran in well under a minute", seconds < 60, "%.1f s" % seconds)
     names = sorted(shown)
     run.check("the variants of the grid: planes 0° and 90°, a guide net K0.5 P20, at F4000",
               [n.split(" ")[0] for n in names] == ["guide", "planes", "planes"] and "K0.5 P20" in names[0]

@@ -13,6 +13,7 @@ cp "$here/user.cfg" "$config/user.cfg"
 
 export QTWEBENGINE_DISABLE_SANDBOX=1 LIBGL_ALWAYS_SOFTWARE=1
 failed=0
+verdicts=()  # one line per macro, printed again at the end where a log's tail shows them
 
 # run_macro MACRO OUT: FreeCAD's GUI on MACRO through gui_launch.py, its log in OUT/freecad.log.
 run_macro() {
@@ -43,17 +44,27 @@ for macro in "$here"/gui_*.py; do
   if [ -n "${HSM_GUI_TESTS:-}" ] && [[ " $HSM_GUI_TESTS " != *" ${name#gui_} "* ]]; then continue; fi
   out="$HSM_GUI_TEST_OUT/$name"
   mkdir -p "$out"
+  begin=$(date +%s)
   run_macro "$macro" "$out"
   status=$?
   result="$out/result.json"
-  echo "--- $name"
+  took=$(( $(date +%s) - begin ))
+  echo "--- $name ($took s)"
   if [ ! -f "$result" ]; then
     echo "GUI test $name: FreeCAD ended (exit $status) without a verdict; log:" >&2
     tail -40 "$out/freecad.log" >&2
+    verdicts+=("$name: FAILED after $took s: FreeCAD ended (exit $status) without a verdict; last line of its log: $(tail -1 "$out/freecad.log")")
     failed=1
     continue
   fi
   cat "$result"; echo
-  /usr/bin/python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["ok"] else 1)' "$result" || failed=1
+  if /usr/bin/python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["ok"] else 1)' "$result"; then
+    verdicts+=("$name: passed in $took s")
+  else
+    verdicts+=("$name: FAILED after $took s: $(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["failures"])' "$result" | cut -c1-1500)")
+    failed=1
+  fi
 done
+echo "=== GUI macros ==="
+printf '%s\n' "${verdicts[@]}"
 exit $failed

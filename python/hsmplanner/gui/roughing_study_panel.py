@@ -7,7 +7,7 @@ from PySide import QtCore, QtWidgets
 
 import hsmplanner
 from hsmplanner.app.roughing import volume as roughing_object, study as roughing_study
-from hsmplanner.app.progress import freecad_progress
+from hsmplanner.app.progress import freecad_progress, in_background
 from hsmplanner.plots.roughing_study import short_label
 
 from .task_panel import (PanelPlots, TaskPanel, freecad_message, narrow_combo, narrow_form_layout,
@@ -176,25 +176,28 @@ class RoughingStudyPanel(TaskPanel):
         if volume is None or not names or not variants:
             self.form.status.setText("Choose a Roughing volume, at least one strategy and one variant.")
             return
-        try:
-            removal_volume, part_brep, stock_brep, _ = volume.Proxy.computed(volume)
-            tool, feed, tool_name = self.study_tool(volume)
-        except (ValueError, RuntimeError) as error:
-            self.form.status.setText("%s: %s" % (volume.Label, error))
-            return
-        self.results, self.studied = [], (volume.Name, tool_name)
-        partition = dict(step=volume.Step.Value, setup_resolution_deg=volume.SetupResolution.Value,
-                         setup_grid=volume.SetupGrid.Value)
-        runs = [(name, keywords, key) for name in names for keywords, key in variants]
         with freecad_progress("Roughing study of %s" % volume.Label) as progress:
+            try:  # a reopened document computes its volume again: with the dialog open
+                removal_volume, part_brep, stock_brep, _ = volume.Proxy.computed(volume, progress)
+                tool, feed, tool_name = self.study_tool(volume)
+            except (ValueError, RuntimeError) as error:
+                self.form.status.setText("%s: %s" % (volume.Label, error))
+                return
+            except hsmplanner.Cancelled:
+                self.form.status.setText("Cancelled while %s computed its volume." % volume.Label)
+                return
+            self.results, self.studied = [], (volume.Name, tool_name)
+            partition = dict(step=volume.Step.Value, setup_resolution_deg=volume.SetupResolution.Value,
+                             setup_grid=volume.SetupGrid.Value)
+            runs = [(name, keywords, key) for name in names for keywords, key in variants]
             for k, (name, keywords, key) in enumerate(runs):
                 share = (lambda done, k=k: progress((k + done) / len(runs))) if progress else None
                 if progress:
                     progress.say("Roughing study of %s: %s %s (%d of %d)" % (volume.Label, name, key, k + 1, len(runs)))
                 try:
-                    result = roughing_study.study_strategy(name, part_brep, stock_brep, removal_volume, tool=tool,
-                                                           feed_mm_min=feed, resolution=self.form.resolution.value(),
-                                                           progress=share, partition_settings=partition, **keywords)
+                    result = in_background(roughing_study.study_strategy, name, part_brep, stock_brep, removal_volume,
+                                           tool=tool, feed_mm_min=feed, resolution=self.form.resolution.value(),
+                                           progress=share, partition_settings=partition, **keywords)
                 except hsmplanner.Cancelled:
                     self.form.status.setText("Cancelled during %s %s: the rows before it are kept." % (name, key))
                     break

@@ -18,6 +18,7 @@ eye only: the Shape, the picked faces and the saved file are untouched.
 import numpy as np
 from pivy import coin
 
+from ..app.progress import breathe
 from .colors import FACE_CLASS_COLORS, FACE_CLASS_LABELS, SLICE_COLORS, SLICE_LABELS
 from .feedmap import LEGEND_X
 from .overlay import add_backing, add_labels, colored_quads, packed_rgba, screen_root, unpickable
@@ -36,6 +37,7 @@ def solid_mesh(solid, deflection):
     across the faces; triangles oriented out of the solid."""
     points, triangles, faces, offset = [], [], [], 0
     for index, face in enumerate(solid.Faces):
+        breathe()  # a volume of many solids takes a second to draw: inside a recompute's dialog, events served
         vertices, facets = face.tessellate(deflection)
         if not facets:
             continue

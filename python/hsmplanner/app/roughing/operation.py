@@ -19,7 +19,7 @@ from ..job_controllers import usable_or_added
 from ..op_comments import comment_text, mend_leading_comments
 from ..property_limits import PropertyLimits
 from ..finishing import exact_top
-from ..progress import freecad_progress, staged
+from ..progress import freecad_progress, in_background, staged
 from .commands import program_clearance, sweep_commands, work_plane_comments
 
 PathOp = cam_module("op")
@@ -218,7 +218,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
         commands = sweep_commands(moves, machine, 60.0 * self.horizFeed, 60.0 * self.vertFeed)
         if checking is not None and not checking(0.0):
             raise hsmplanner.Cancelled("%s: cancelled before its clearance check" % obj.Label)
-        report = self.clearance(commands, moves, machine, part_brep, cutter, obj.Allowance.Value - 0.01)
+        report = in_background(self.clearance, commands, moves, machine, part_brep, cutter, obj.Allowance.Value - 0.01)
         if report.too_close:
             FreeCAD.Console.PrintWarning("%s: %d tool positions come within %.3f mm of the part (allowance %.3f mm)\n"
                                          % (obj.Label, report.too_close, report.minimum, obj.Allowance.Value))
@@ -304,28 +304,30 @@ def volume_roughing_program(obj, progress=None):
                              "part and stock" % (op.Label, obj.Volume.Label))
     rest = None
     if before:
-        rest = roughing.simulate_removal(before[0][0], stock_brep, part_brep, tool=before[0][1], resolution=MEND_RESOLUTION,
-                                         rest_spacing=REST_SPACING, then=before[1:], progress=rest_stage).rest
+        rest = in_background(roughing.simulate_removal, before[0][0], stock_brep, part_brep, tool=before[0][1],
+                             resolution=MEND_RESOLUTION, rest_spacing=REST_SPACING, then=before[1:],
+                             progress=rest_stage).rest
     passes, length, swept, warnings = 0, 0.0, [], []
     settings = obj.Volume.Proxy.settings(obj.Volume)
     for (index, partition), (setup, sweeping) in zip(partitions, pairs(staged(sweeps, [1, 3] * len(partitions)))):
         if rest is not None and settings["strategy"] == "S3":  # the setup direction for what is left
-            partition = roughing.partition(volume.solids[index], part_brep, "S3", step=partition.step,
-                                           setup_resolution_deg=settings.get("setup_resolution_deg"),
-                                           setup_grid=settings.get("setup_grid"), rest=rest, progress=setup)
-        paths = roughing.sweep(partition, volume.solids[index], part_brep, stock_brep, tool=cutter, progress=sweeping,
-                               radial_engagement=obj.RadialEngagement / 100.0, allowance=obj.Allowance.Value,
-                               ramp_angle_deg=obj.RampAngle.Value, step_up_minimum=obj.StepUpMinimum.Value,
-                               step_up_scallop=obj.StepUpScallop.Value, push_out=obj.PushOut.Value, rest=rest)
+            partition = in_background(roughing.partition, volume.solids[index], part_brep, "S3", step=partition.step,
+                                      setup_resolution_deg=settings.get("setup_resolution_deg"),
+                                      setup_grid=settings.get("setup_grid"), rest=rest, progress=setup)
+        paths = in_background(roughing.sweep, partition, volume.solids[index], part_brep, stock_brep, tool=cutter,
+                              progress=sweeping, radial_engagement=obj.RadialEngagement / 100.0,
+                              allowance=obj.Allowance.Value, ramp_angle_deg=obj.RampAngle.Value,
+                              step_up_minimum=obj.StepUpMinimum.Value, step_up_scallop=obj.StepUpScallop.Value,
+                              push_out=obj.PushOut.Value, rest=rest)
         warnings += ["region %d: %s" % (index + 1, w) for w in paths.warnings]
         passes += len(paths.passes)
         length += paths.cutting_length
         swept.append(paths)
     # The regions as one program, linked through the air; rapids kept out of the stock the program leaves at
     # their time (after the operations before); checked whole against the part, links included.
-    moves, fed = roughing.keep_rapids_out_of_stock(roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
-                                                   tool=cutter, resolution=MEND_RESOLUTION, after=before or None,
-                                                   progress=joining)
+    moves, fed = in_background(lambda: roughing.keep_rapids_out_of_stock(
+        roughing.join_paths(swept, stock_brep), stock_brep, part_brep,
+        tool=cutter, resolution=MEND_RESOLUTION, after=before or None, progress=joining))
     stock_top = exact_top(obj.Volume.Proxy.inputs(obj.Volume)[1])
     program = Program(moves, cutter, part_brep, fed, warnings, passes, length, len(partitions), stock_top)
     obj.Proxy.program = program

@@ -29,7 +29,7 @@ from hsmplanner._core import roughing as core
 from hsmplanner.geometry import shape_from_brep
 from ..properties import HIDDEN, add_inputs, add_results
 from ..feedrate import is_job
-from ..progress import freecad_progress, staged
+from ..progress import freecad_progress, in_background, staged
 from ..property_limits import PropertyLimits
 from ..compat import set_shape
 from ..proxy_state import NoSavedState
@@ -269,7 +269,8 @@ class RoughingVolume(PropertyLimits, NoSavedState):
             stage_volume, stage_partitions = staged(progress, [0 if cached else 1, 2 if settings["strategy"] else 0])
             if not cached:
                 part_brep = hsmplanner.as_brep(part_shape.copy())  # without the display's triangulation
-                volume = roughing.volume_to_remove(stock_shape.copy(), part_brep, progress=stage_volume)
+                volume = in_background(roughing.volume_to_remove, stock_shape.copy(), part_brep,
+                                       progress=stage_volume)
                 self.volume_cache = (volume_key, volume, part_brep)
                 self.partition_cache.clear()
             _, volume, part_brep = self.volume_cache
@@ -280,9 +281,10 @@ class RoughingVolume(PropertyLimits, NoSavedState):
                 obj.InputSignature = ""
                 self.show(obj)
                 raise StrategyRefused(str(error)) from None
-        self.store(obj, volume, partitions)
-        obj.InputSignature = signature
-        self.show(obj)
+            # stored and drawn with the dialog open: the drawing serves the GUI's events (progress.breathe)
+            self.store(obj, volume, partitions)
+            obj.InputSignature = signature
+            self.show(obj)
 
     def computed(self, obj, progress=None):
         """(VolumeToRemove, part BREP, stock BREP, [(region index, Partition)]) of the object's inputs, from
@@ -296,8 +298,8 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         stage_volume, stage_partitions = staged(progress, [1, 2])
         if self.volume_cache is None or self.volume_cache[0] != volume_key:
             part_brep = hsmplanner.as_brep(part_shape.copy())
-            self.volume_cache = (volume_key, roughing.volume_to_remove(stock_shape.copy(), part_brep,
-                                                                       progress=stage_volume), part_brep)
+            volume = in_background(roughing.volume_to_remove, stock_shape.copy(), part_brep, progress=stage_volume)
+            self.volume_cache = (volume_key, volume, part_brep)
             self.partition_cache.clear()
         _, volume, part_brep = self.volume_cache
         partitions = self.partitions(obj, volume, part_brep, volume_key, settings, stage_partitions)
@@ -318,7 +320,8 @@ class RoughingVolume(PropertyLimits, NoSavedState):
         for index, stage in zip(indices, stages):
             key = (volume_key, index, tuple(sorted((k, v) for k, v in settings.items() if k != "region")))
             if key not in self.partition_cache:
-                self.partition_cache[key] = roughing.partition(
+                self.partition_cache[key] = in_background(
+                    roughing.partition,
                     volume.solids[index], part_brep, settings["strategy"], step=settings["step"],
                     setup_resolution_deg=settings["setup_resolution_deg"], setup_grid=settings["setup_grid"],
                     progress=stage)
