@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages of scripts/debian-packages.txt (or of the lists named) that are missing.
-# Quiet and quick when none is.
+# Quiet and quick when none is. A name written ?NAME is installed where this Debian's archive has it (a
+# package one Debian release has and another not).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 lists=("$@")
@@ -8,8 +9,18 @@ lists=("$@")
 mapfile -t wanted < <(cat "${lists[@]}" | grep -v '^\s*#' | grep -v '^\s*$')
 missing=()
 for package in "${wanted[@]}"; do
+  optional=no
+  [[ $package == \?* ]] && { package=${package#\?}; optional=yes; }
   status=$(dpkg-query -W -f='${db:Status-Status}' "$package" 2>/dev/null || true)
-  [ "$status" = "installed" ] || missing+=("$package")
+  [ "$status" = "installed" ] && continue
+  if [ $optional = yes ]; then
+    # a root just made has no package lists yet: the package would look absent from the archive
+    if ! compgen -G "/var/lib/apt/lists/*_Packages" > /dev/null && [ "$(id -u)" -eq 0 ]; then
+      DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    fi
+    apt-cache show "$package" > /dev/null 2>&1 || continue
+  fi
+  missing+=("$package")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 

@@ -2,6 +2,7 @@
 
 #include "common/text.hpp"
 #include "kinematics/gcode_interpreter.hpp"
+#include "kinematics/ngc_program.hpp"
 
 #include <Eigen/Geometry>
 
@@ -74,19 +75,32 @@ struct GcodeReader::Impl {
   detail::LineSource source;
   detail::Line line;
   detail::Interpreter interpreter;
+  detail::NgcProgram program;
+  bool linuxcncLanguage;
   long lineNumber = 0;
 
-  Impl(std::istream& input, const ReaderOptions& options) : source(input), interpreter(options) {}
+  Impl(std::istream& input, const ReaderOptions& options)
+      : source(input), interpreter(options),
+        program(source, detail::NgcOptions{options.subroutineFolders, options.maxLoopIterations}),
+        linuxcncLanguage(options.linuxcncLanguage) {}
+
+  // The next line to run: through LinuxCNC's program flow, or as the file has it.
+  bool nextLine(std::string_view& raw, long& number) {
+    if (linuxcncLanguage) return program.next(raw, number);
+    if (!source.next(raw)) return false;
+    number = ++lineNumber;
+    return true;
+  }
 
   bool next(Block& block) {
     if (interpreter.takeQueued(block)) return true;  // the rest of a canned cycle's moves
     std::string_view raw;
-    while (source.next(raw)) {
-      ++lineNumber;
+    long number = 0;
+    while (nextLine(raw, number)) {
       ++interpreter.stats().lines;
-      line.parse(raw, lineNumber);
+      line.parse(raw, number);
       if (line.wordCount == 0 && line.keywords.empty()) continue;
-      if (interpreter.interpret(line, lineNumber, block)) return true;
+      if (interpreter.interpret(line, number, block)) return true;
     }
     return false;
   }

@@ -94,6 +94,11 @@ struct ReaderOptions {
   bool feedInMmPerSecond = false;    // FreeCAD Path commands store F in mm/s; G-code files use mm/min
   Eigen::Vector3d startPosition = Eigen::Vector3d::Zero();  // where the machine is before the first move
   double arcRadiusTolerance = 0.01;  // mm (plus 0.1 % of the radius) between the start and end radius of an arc
+  // LinuxCNC's language where a line uses it: parameters (#1, #<name>, #<_global>), [expressions] and O-word
+  // subroutines, loops and conditions. False for an 840D program (simulate() sets it from the machine).
+  bool linuxcncLanguage = true;
+  std::vector<std::string> subroutineFolders;  // searched in order for NAME.ngc of `o<name> call`
+  long maxLoopIterations = 10'000'000;  // turns of one O-word loop before the reading stops, naming it
 };
 
 struct ReaderStats {

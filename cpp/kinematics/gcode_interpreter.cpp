@@ -65,7 +65,8 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
       case 'Q': words.qWord = w.value; words.hasQ = true; break;
       case 'M': mWord(w); break;
       case 'T': ++stats_.toolChanges; break;
-      case 'N': case 'S': case 'D': case 'H': case 'L': break;  // no effect on the motion
+      case 'S': spindle_ = w.value; break;
+      case 'N': case 'D': case 'H': case 'L': break;  // no effect on the motion
       default: unknown(w.text);
     }
   }
@@ -109,6 +110,7 @@ void Interpreter::applyModes(const LineWords& w) {
 }
 
 bool Interpreter::makeBlock(const LineWords& w, Block& block) {
+  if (w.rigidTap) return rigidTapBlocks(w, block);
   if (cycle_ != 0 && (w.cycle > 0 || w.anyAxis())) return cycleBlocks(w, block);
   if ((w.newMotion == 2 || w.newMotion == 3) && !w.anyAxis() && !w.anyOffset() && !w.hasRadius)
     throw ParseError(lineNumber_, "G" + std::to_string(w.newMotion) + " without an end point or a centre: an arc "
@@ -260,6 +262,28 @@ bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
   return takeQueued(block);
 }
 
+bool Interpreter::rigidTapBlocks(const LineWords& w, Block& block) {
+  if (!w.hasOffset[2] || !(w.offset[2] > 0.0))
+    throw ParseError(lineNumber_, "G33.1 needs K > 0: the thread's pitch (distance per spindle turn)");
+  if (!(spindle_ > 0.0)) throw ParseError(lineNumber_, "G33.1 taps at S0: program the spindle speed (S) before it");
+  if (!w.anyAxis()) throw ParseError(lineNumber_, "G33.1 needs the tap's end point (Z)");
+  if (!absolute_) throw ParseError(lineNumber_, "G33.1 in G91: rigid tapping is read in absolute coordinates (G90)");
+  Eigen::Vector3d bottom = position_;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasAxis[a]) bottom[a] = w.axis[a] * unit_;
+  const Eigen::Vector3d start = position_;
+  const double feed = feed_;
+  feed_ = spindle_ * w.offset[2] * unit_ / 60.0;  // the axis follows the spindle: pitch per turn
+  for (const Eigen::Vector3d& target : {bottom, start}) {
+    if ((target - position_).squaredNorm() == 0.0) continue;
+    queued_.push_back(straightBlock(target, false));
+    position_ = target;
+    ++stats_.motionBlocks;
+  }
+  feed_ = feed;
+  return takeQueued(block);
+}
+
 void Interpreter::unknown(std::string_view word) {
   if (options_.refuseUnknownWords)
     throw ParseError(lineNumber_, "'" + std::string(word) + "' is not understood: remove it, or let unknown "
@@ -299,6 +323,7 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
     case 940: inverseTime_ = false; break;
     case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 890: words.cycle = int(code / 10); break;
     case 800: words.cancelCycle = true; break;
+    case 331: words.rigidTap = true; break;
     case 980: retractToR_ = false; break;
     case 990: retractToR_ = true; break;
     case 400: case 410: case 420: case 430: case 431: case 490: case 530: case 540: case 550: case 560:

@@ -17,7 +17,7 @@ struct LineWords {
   int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3
   int cycle = 0;       // 73, 81…86, 89 when the line has that canned cycle's G word
   bool cancelCycle = false;  // G80
-  bool exactStopHere = false, dwell = false, g64 = false;
+  bool exactStopHere = false, dwell = false, g64 = false, rigidTap = false;
   bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
   double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0;
@@ -33,7 +33,9 @@ struct LineWords {
 
 class Interpreter {
 public:
-  explicit Interpreter(const ReaderOptions& options) : options_(options), position_(options.startPosition) {}
+  // LinuxCNC's interpreter starts in G99 (a canned cycle retracts to R), as rs274 shows; elsewhere G98.
+  explicit Interpreter(const ReaderOptions& options)
+      : options_(options), position_(options.startPosition), retractToR_(options.linuxcncLanguage) {}
 
   // Applies one line (number `lineNumber`); true when it produced a motion block.
   bool interpret(const Line& line, long lineNumber, Block& block);
@@ -60,6 +62,9 @@ private:
   void arc(Block& block, const LineWords& words);
   // A canned cycle's moves at the line's X Y (LinuxCNC's semantics, G17, G90): queued, the first in `block`.
   bool cycleBlocks(const LineWords& words, Block& block);
+  // G33.1 rigid tapping: in to the line's end point at the spindle's speed times the pitch K, and back out to
+  // where it started (LinuxCNC's RIGID_TAP); queued, the first in `block`.
+  bool rigidTapBlocks(const LineWords& words, Block& block);
   Block straightBlock(const Eigen::Vector3d& target, bool rapid) const;
   void rotaryWord(int axis, double value, std::string_view text, LineWords& words);
   // The orientation at the end of the line (A3 B3 C3, a component not given is 0), unit; throws on zero length.
@@ -77,6 +82,7 @@ private:
   bool arcCentreAbsolute_ = false;
   double unit_ = 1.0;  // mm per program unit
   double feed_ = 0.0;  // mm/s
+  double spindle_ = 0.0;  // rev/min, from S
   long zeroFeedLine_ = 0;  // the line that set F0 (legal until a feed move: CAM writes it on rapids)
   PathMode pathMode_ = PathMode::Continuous;
   double tolerance_ = 0.0;

@@ -8,7 +8,6 @@
 
 namespace hsm::kinematics {
 
-namespace {
 const char* motionName(Motion m) {
   switch (m) {
     case Motion::Rapid: return "G0";
@@ -18,6 +17,8 @@ const char* motionName(Motion m) {
   }
   return "?";
 }
+
+namespace {
 
 std::vector<double> asVector(const std::array<double, 5>& values) { return {values.begin(), values.end()}; }
 

@@ -266,7 +266,9 @@ SimulationResult run(const MachineModel& machine, const SimulationOptions& optio
 
 SimulationResult simulate(std::istream& program, const MachineModel& machine, const ReaderOptions& reading,
                           const SimulationOptions& options) {
-  GcodeReader reader(program, reading);
+  ReaderOptions language = reading;
+  if (machine.controller == ControllerKind::Siemens840D) language.linuxcncLanguage = false;
+  GcodeReader reader(program, language);
   return run(machine, options, [&](Block& b) { return reader.next(b); }, [&] { return reader.stats(); });
 }
 
@@ -274,7 +276,10 @@ SimulationResult simulateFile(const std::string& path, const MachineModel& machi
                               const SimulationOptions& options) {
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError("cannot read the program '" + printable(path) + "': check the path");
-  return simulate(stream, machine, reading, options);
+  ReaderOptions beside = reading;  // its subroutine files beside it first, as LinuxCNC's program folder
+  const size_t slash = path.find_last_of('/');
+  beside.subroutineFolders.insert(beside.subroutineFolders.begin(), slash == std::string::npos ? "." : path.substr(0, slash));
+  return simulate(stream, machine, beside, options);
 }
 
 SimulationResult simulateBlocks(const std::vector<Block>& blocks, const MachineModel& machine,

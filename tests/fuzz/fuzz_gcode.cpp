@@ -35,6 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       std::istringstream program(text);
       hsm::kinematics::ReaderOptions reading;
       reading.feedInMmPerSecond = perSecond;
+      reading.maxLoopIterations = 1000;  // a loop of the LinuxCNC language that never ends stops soon
       try {
         const auto result = hsm::kinematics::simulate(program, machine, reading);
         const auto& s = result.summary;

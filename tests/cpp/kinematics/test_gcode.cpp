@@ -125,7 +125,8 @@ TEST(Gcode, MalformedLinesNameTheirLine) {
       {"G0 X10\nG2 X0 Y10 F100\n", "line 2: arc without centre"},
       {"G1 X1 X2 F100\n", "line 1: axis X given twice"},
       {"G1 X1 F-5\n", "line 1: feed rate F-5"},
-      {"G1 X1 F100 #5\n", "line 1: unexpected character '#'"},
+      {"G1 X1 F100 #5\n", "line 1: a parameter stands alone"},  // LinuxCNC's language: #5 = ... sets it
+      {"G1 X1 F100 $5\n", "line 1: unexpected character '$'"},
       {"CYCLE832(0.01\n", "line 1: 'CYCLE832(' is not closed"},
   };
   for (const auto& [program, expected] : cases)
@@ -272,4 +273,18 @@ TEST(CannedCycles, WhatCannotBeReadIsNamed) {
   EXPECT_EQ(errorOf("G0 Z5\nG81 X1 Z-2 R1\n").rfind("line 2: G81 drills at F0", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z5\nG83 X1 Z-1000000 R1 Q0.001 F60\n").rfind("line 2: G83: ", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z5\nG82 X1 Z-2 R1 P-5 F60\n").rfind("line 2: G82 P-5: a dwell lasts 0 s or more", 0), 0u);
+}
+
+// LinuxCNC 2.9's G-code reference, "G33.1 Rigid Tapping": in to Z synchronised with the spindle (the feed is
+// S times the pitch K), then out to where it started with the spindle reversed.
+TEST(CannedCycles, RigidTappingGoesInAtTheSpindlesPitchAndBackOut) {
+  const auto blocks = readProgram("G21 G90 S200 M3\nG0 X0 Y0 Z10\nG33.1 Z-5 K1.25\nG0 X5\n");
+  ASSERT_EQ(blocks.size(), 4u);
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(0, 0, -5));
+  EXPECT_EQ(blocks[1].motion, Motion::Linear);
+  EXPECT_DOUBLE_EQ(blocks[1].feed, 200 * 1.25 / 60.0);  // 250 mm/min
+  EXPECT_EQ(blocks[2].end, Eigen::Vector3d(0, 0, 10));
+  EXPECT_EQ(blocks[3].start, Eigen::Vector3d(0, 0, 10));
+  EXPECT_NE(errorOf("G0 Z10\nG33.1 Z-5 K1\n").find("line 2: G33.1 taps at S0"), std::string::npos);
+  EXPECT_NE(errorOf("S100 G0 Z10\nG33.1 Z-5\n").find("line 2: G33.1 needs K > 0"), std::string::npos);
 }

@@ -1,0 +1,346 @@
+#include "kinematics/ngc_expression.hpp"
+
+#include "kinematics/gcode.hpp"
+
+#include <fast_float/fast_float.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+namespace hsm::kinematics::detail {
+
+namespace {
+constexpr double kDegree = M_PI / 180.0;
+constexpr double kIntegerTolerance = 1e-4;  // rs274ngc's: a parameter number or an L count this close to an integer
+
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+char lower(char c) { return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c; }
+
+// The operators of a bracketed expression and their binding (rs274ngc's precedence: all left-associative).
+int precedence(const std::string& op) {
+  if (op == "**") return 6;
+  if (op == "*" || op == "/" || op == "mod") return 5;
+  if (op == "+" || op == "-") return 4;
+  if (op == "eq" || op == "ne" || op == "gt" || op == "ge" || op == "lt" || op == "le") return 3;
+  return 2;  // and, or, xor
+}
+
+std::string quoted(const char* p, const char* end) {
+  const char* stop = p;
+  while (stop < end && stop - p < 24) ++stop;
+  return std::string(p, stop);
+}
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// Parameters
+
+double NgcParameters::numbered(int number, long line) const {
+  if (number < 0 || number > kMaxNumberedParameter)
+    throw ParseError(line, "#" + std::to_string(number) + " is not a parameter: LinuxCNC's numbered parameters are #1 to #" +
+                               std::to_string(kMaxNumberedParameter));
+  return numbered_[static_cast<size_t>(number)];
+}
+
+void NgcParameters::setNumbered(int number, double value, long line) {
+  if (number < 1 || number > kMaxNumberedParameter)
+    throw ParseError(line, "#" + std::to_string(number) + " cannot be set: LinuxCNC's numbered parameters are #1 to #" +
+                               std::to_string(kMaxNumberedParameter));
+  numbered_[static_cast<size_t>(number)] = value;
+}
+
+double NgcParameters::named(const std::string& name, long line) const {
+  if (name.rfind("_hal[", 0) == 0 || name.rfind("_ini[", 0) == 0)
+    throw ParseError(line, "#<" + name + "> reads the machine's " + (name[1] == 'h' ? "HAL" : "INI file") +
+                               ", which is not simulated: write its value in the program instead");
+  const auto& scope = name.front() == '_' ? globals_ : locals_.back();
+  const auto found = scope.find(name);
+  if (found == scope.end())
+    throw ParseError(line, "#<" + name + "> is read before it is set: set it first (#<" + name +
+                               "> = ...)" + (name.front() == '_' ? " or check its spelling" : ", or use a global #<_" + name + ">"));
+  return found->second;
+}
+
+bool NgcParameters::exists(const std::string& name) const {
+  const auto& scope = name.front() == '_' ? globals_ : locals_.back();
+  return scope.count(name) > 0;
+}
+
+void NgcParameters::setNamed(const std::string& name, double value) {
+  (name.front() == '_' ? globals_ : locals_.back())[name] = value;
+}
+
+void NgcParameters::enterCall(const std::vector<double>& arguments) {
+  std::array<double, kSubroutineArguments> saved{};
+  for (int i = 0; i < kSubroutineArguments; ++i) {
+    saved[static_cast<size_t>(i)] = numbered_[static_cast<size_t>(i + 1)];
+    numbered_[static_cast<size_t>(i + 1)] = i < static_cast<int>(arguments.size()) ? arguments[static_cast<size_t>(i)] : 0.0;
+  }
+  saved_.push_back(saved);
+  locals_.emplace_back();
+}
+
+void NgcParameters::leaveCall() {
+  if (saved_.empty()) return;
+  for (int i = 0; i < kSubroutineArguments; ++i)
+    numbered_[static_cast<size_t>(i + 1)] = saved_.back()[static_cast<size_t>(i)];
+  saved_.pop_back();
+  locals_.pop_back();
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Expressions
+
+void NgcExpressionReader::fail(const std::string& message) const { throw ParseError(line_, message); }
+
+int NgcExpressionReader::reference(const char*& p, const char* end, std::string& name) const {
+  skipBlanks(p, end);
+  name.clear();
+  if (p < end && *p == '<') {
+    const char* close = static_cast<const char*>(std::memchr(p, '>', static_cast<size_t>(end - p)));
+    if (!close) fail("'#<' has no closing '>': write a named parameter as #<name>");
+    for (const char* c = p + 1; c < close; ++c)
+      if (*c != ' ' && *c != '\t') name += lower(*c);
+    if (name.empty()) fail("'#<>' names no parameter: write a name between < and >");
+    p = close + 1;
+    return -1;
+  }
+  const double number = value(p, end);
+  const double rounded = std::round(number);
+  if (std::abs(number - rounded) > kIntegerTolerance)
+    fail("#" + std::to_string(number) + " is not a parameter: a parameter number is an integer");
+  if (rounded < 0 || rounded > kMaxNumberedParameter)
+    fail("#" + std::to_string(static_cast<long long>(rounded)) +
+         " is not a parameter: LinuxCNC's numbered parameters are #1 to #" + std::to_string(kMaxNumberedParameter));
+  return static_cast<int>(rounded);
+}
+
+double NgcExpressionReader::value(const char*& p, const char* end) const {
+  skipBlanks(p, end);
+  if (p >= end) fail("a value is missing at the end of the line: give a number, a #parameter or a [expression]");
+  const char c = *p;
+  const char next = p + 1 < end ? p[1] : '\0';
+  if (c == '[') {
+    ++p;
+    return expression(p, end);
+  }
+  if (c == '#') {
+    ++p;
+    std::string name;
+    const int number = reference(p, end, name);
+    return number < 0 ? parameters_.named(name, line_) : parameters_.numbered(number, line_);
+  }
+  if ((c == '-' || c == '+') && !isDigit(next) && next != '.') {
+    ++p;
+    const double v = value(p, end);
+    return c == '-' ? -v : v;
+  }
+  if (isLetter(c)) {
+    std::string name;
+    while (p < end && isLetter(*p)) name += lower(*p++);
+    return unaryFunction(name, p, end);
+  }
+  const char* digits = (c == '-' || c == '+') ? p + 1 : p;
+  if (!(digits < end && (isDigit(*digits) || *digits == '.')))
+    fail("'" + quoted(p, end) + "' is not a value: give a number, a #parameter or a [expression]");
+  double v = 0.0;
+  const auto parsed = fast_float::from_chars(c == '+' ? p + 1 : p, end, v, fast_float::chars_format::fixed);
+  if (parsed.ec != std::errc()) fail("'" + quoted(p, end) + "' is not a number");
+  p = parsed.ptr;
+  return v;
+}
+
+double NgcExpressionReader::unaryFunction(const std::string& name, const char*& p, const char* end) const {
+  skipBlanks(p, end);
+  if (name == "exists") {
+    if (!(p + 1 < end && p[0] == '[' && p[1] == '#'))
+      fail("EXISTS takes a named parameter: EXISTS[#<name>]");
+    p += 2;
+    std::string parameter;
+    if (reference(p, end, parameter) >= 0) fail("EXISTS takes a named parameter: EXISTS[#<name>]");
+    skipBlanks(p, end);
+    if (p >= end || *p != ']') fail("EXISTS[#<" + parameter + "> is not closed: add ']'");
+    ++p;
+    return parameters_.exists(parameter) ? 1.0 : 0.0;
+  }
+  if (p >= end || *p != '[') fail("'" + name + "' is not a function followed by [argument]: is this a LinuxCNC program?");
+  ++p;
+  const double a = expression(p, end);
+  if (name == "atan") {  // ATAN[y]/[x]
+    skipBlanks(p, end);
+    if (!(p + 1 < end && p[0] == '/' && p[1] == '[')) fail("ATAN takes two arguments: ATAN[y]/[x]");
+    p += 2;
+    return std::atan2(a, expression(p, end)) / kDegree;
+  }
+  if (name == "abs") return std::abs(a);
+  if (name == "acos" || name == "asin") {
+    if (a < -1.0 || a > 1.0) fail(name + "[" + std::to_string(a) + "]: the argument must be within -1 to 1");
+    return (name == "acos" ? std::acos(a) : std::asin(a)) / kDegree;
+  }
+  if (name == "cos") return std::cos(a * kDegree);
+  if (name == "sin") return std::sin(a * kDegree);
+  if (name == "tan") return std::tan(a * kDegree);
+  if (name == "exp") return std::exp(a);
+  if (name == "fix") return std::floor(a);
+  if (name == "fup") return std::ceil(a);
+  if (name == "round") return std::round(a);  // half away from zero, as rs274ngc
+  if (name == "ln") {
+    if (a <= 0.0) fail("LN[" + std::to_string(a) + "]: the argument must be positive");
+    return std::log(a);
+  }
+  if (name == "sqrt") {
+    if (a < 0.0) fail("SQRT[" + std::to_string(a) + "]: the argument must not be negative");
+    return std::sqrt(a);
+  }
+  fail("'" + name + "' is not a LinuxCNC function (ABS ACOS ASIN ATAN COS EXISTS EXP FIX FUP LN ROUND SIN SQRT TAN)");
+}
+
+double NgcExpressionReader::apply(const std::string& op, double a, double b) const {
+  if (op == "**") {
+    if (a < 0.0 && std::floor(b) != b) fail("a negative number raised to a non-integer power: check the expression");
+    return std::pow(a, b);
+  }
+  if (op == "*") return a * b;
+  if (op == "/" || op == "mod") {
+    if (b == 0.0) fail(op == "/" ? "division by zero in an expression" : "MOD by zero in an expression");
+    if (op == "/") return a / b;
+    const double r = std::fmod(a, b);
+    return r < 0.0 ? r + std::abs(b) : r;
+  }
+  if (op == "+") return a + b;
+  if (op == "-") return a - b;
+  if (op == "eq") return a == b ? 1.0 : 0.0;
+  if (op == "ne") return a != b ? 1.0 : 0.0;
+  if (op == "gt") return a > b ? 1.0 : 0.0;
+  if (op == "ge") return a >= b ? 1.0 : 0.0;
+  if (op == "lt") return a < b ? 1.0 : 0.0;
+  if (op == "le") return a <= b ? 1.0 : 0.0;
+  if (op == "and") return (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
+  if (op == "or") return (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
+  return ((a != 0.0) != (b != 0.0)) ? 1.0 : 0.0;  // xor
+}
+
+double NgcExpressionReader::expression(const char*& p, const char* end) const {
+  // Operator precedence by two stacks, as rs274ngc's read_real_expression.
+  std::vector<double> values{value(p, end)};
+  std::vector<std::string> ops;
+  auto reduce = [&]() {
+    const double b = values.back();
+    values.pop_back();
+    values.back() = apply(ops.back(), values.back(), b);
+    ops.pop_back();
+  };
+  for (;;) {
+    skipBlanks(p, end);
+    if (p >= end) fail("'[' is not closed: add ']'");
+    if (*p == ']') {
+      ++p;
+      while (!ops.empty()) reduce();
+      if (!std::isfinite(values.back())) fail("an expression's value is not a finite number: check it");
+      return values.back();
+    }
+    std::string op;
+    if (*p == '*' && p + 1 < end && p[1] == '*') {
+      op = "**";
+      p += 2;
+    } else if (*p == '*' || *p == '/' || *p == '+' || *p == '-') {
+      op = std::string(1, *p++);
+    } else if (isLetter(*p)) {
+      while (p < end && isLetter(*p)) op += lower(*p++);
+      if (precedence(op) == 2 && op != "and" && op != "or" && op != "xor")
+        fail("'" + op + "' is not an operator (** * / MOD + - EQ NE GT GE LT LE AND OR XOR)");
+    } else {
+      fail("'" + quoted(p, end) + "' is not an operator: expected one of ** * / MOD + - EQ NE GT GE LT LE AND OR XOR or ']'");
+    }
+    while (!ops.empty() && precedence(ops.back()) >= precedence(op)) reduce();
+    ops.push_back(op);
+    values.push_back(value(p, end));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Lines
+
+bool usesParameters(std::string_view raw) {
+  return raw.find('#') != std::string_view::npos || raw.find('[') != std::string_view::npos;
+}
+
+namespace {
+// A unary function as a word's value (X SIN[30]): letters then '['.
+bool isFunctionCall(const char* p, const char* end) {
+  while (p < end && isLetter(*p)) ++p;
+  skipBlanks(p, end);
+  return p < end && *p == '[';
+}
+
+void appendNumber(std::string& out, double v) {
+  char buffer[400];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed);
+  out.append(buffer, result.ptr);
+}
+}  // namespace
+
+std::string_view substituteParameters(std::string_view raw, long line, NgcParameters& parameters, std::string& out) {
+  if (!usesParameters(raw)) return raw;
+  out.clear();
+  struct Setting {
+    int number;
+    std::string name;
+    double value;
+  };
+  std::vector<Setting> settings;
+  const NgcExpressionReader reader(parameters, line);
+  const char* p = raw.data();
+  const char* end = p + raw.size();
+  while (p < end) {
+    const char c = *p;
+    if (c == ' ' || c == '\t') {
+      ++p;
+    } else if (c == ';') {
+      break;
+    } else if (c == '(') {
+      const char* close = static_cast<const char*>(std::memchr(p, ')', static_cast<size_t>(end - p)));
+      if (!close) throw ParseError(line, "comment '(' is not closed: add ')'");
+      p = close + 1;
+    } else if (c == '#') {
+      Setting s;
+      ++p;
+      s.number = reader.reference(p, end, s.name);
+      skipBlanks(p, end);
+      if (p >= end || *p != '=')
+        throw ParseError(line, "a parameter stands alone: set it (#1 = ...) or give it as a word's value (X#1)");
+      ++p;
+      s.value = reader.value(p, end);
+      settings.push_back(std::move(s));
+    } else if (isLetter(c) || c == '%' || c == '/') {
+      out += c;
+      ++p;
+      if (c == '%' || c == '/') continue;
+      skipBlanks(p, end);
+      const char* digits = p < end && (*p == '-' || *p == '+') ? p + 1 : p;
+      if (digits < end && (isDigit(*digits) || *digits == '.')) {  // a literal: as written, for the lexer
+        const char* stop = digits;
+        while (stop < end && (isDigit(*stop) || *stop == '.')) ++stop;
+        out.append(p, stop);
+        p = stop;
+      } else if (p < end && (!isLetter(*p) || isFunctionCall(p, end))) {
+        appendNumber(out, reader.value(p, end));
+      }
+      out += ' ';
+    } else {
+      throw ParseError(line, std::string("unexpected character '") + c + "': G-code words are a letter and a value");
+    }
+  }
+  for (const Setting& s : settings) {
+    if (s.number >= 0)
+      parameters.setNumbered(s.number, s.value, line);
+    else
+      parameters.setNamed(s.name, s.value);
+  }
+  return out;
+}
+
+}  // namespace hsm::kinematics::detail

@@ -1,0 +1,75 @@
+// LinuxCNC's parameters and expressions (internal): numbered (#1 … #5602), named local (#<depth>) and global
+// (#<_depth>) parameters, and the bracketed expressions with their operators and functions, as LinuxCNC 2.9's
+// rs274ngc reads them. A line that uses them is rewritten into plain words (X12.5) for the lexer, its
+// parameter settings applied after the whole line is read, as rs274ngc does.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hsm::kinematics::detail {
+
+inline constexpr int kMaxNumberedParameter = 5602;
+inline constexpr int kSubroutineArguments = 30;  // #1 … #30 are a subroutine's arguments, local to its call
+
+class NgcParameters {
+public:
+  NgcParameters() { numbered_.fill(0.0); locals_.emplace_back(); }
+
+  // Throws ParseError (naming the line and the fix) for a number out of range or a name never set.
+  double numbered(int number, long line) const;
+  void setNumbered(int number, double value, long line);
+  double named(const std::string& name, long line) const;  // name in lower case, without #< >
+  bool exists(const std::string& name) const;
+  void setNamed(const std::string& name, double value);
+
+  // A subroutine call: #1 … #30 and the named locals saved, the arguments given set, the rest 0.
+  void enterCall(const std::vector<double>& arguments);
+  void leaveCall();
+  int depth() const { return static_cast<int>(locals_.size()) - 1; }
+
+private:
+  std::array<double, kMaxNumberedParameter + 1> numbered_{};
+  std::map<std::string, double> globals_;
+  std::vector<std::map<std::string, double>> locals_;           // one scope per call, the program's first
+  std::vector<std::array<double, kSubroutineArguments>> saved_;  // the caller's #1 … #30
+};
+
+// Reads values and expressions from a line of text (spaces ignored, letters in any case).
+class NgcExpressionReader {
+public:
+  NgcExpressionReader(const NgcParameters& parameters, long line) : parameters_(parameters), line_(line) {}
+
+  // A real value at `p` (a number, #parameter, [expression], a unary function, with an optional sign); p moves
+  // past it. Throws ParseError on malformed text or a value that is not a finite number.
+  double value(const char*& p, const char* end) const;
+  // A parameter reference after its '#' (a number, <name>, #…, [expression]): its number, or its name in `name`.
+  int reference(const char*& p, const char* end, std::string& name) const;
+
+private:
+  double expression(const char*& p, const char* end) const;  // after '[', up to and past ']'
+  double unaryFunction(const std::string& name, const char*& p, const char* end) const;
+  double apply(const std::string& op, double a, double b) const;
+  [[noreturn]] void fail(const std::string& message) const;
+
+  const NgcParameters& parameters_;
+  long line_;
+};
+
+// A line in LinuxCNC's language as plain words: values computed, comments dropped, parameter settings
+// (#1=…, #<x>=…) applied to `parameters` after the line is read. Lines without '#' or '[' come back unchanged.
+// `out` holds the rewritten text when the line needed it; the returned view is into `raw` or `out`.
+std::string_view substituteParameters(std::string_view raw, long line, NgcParameters& parameters, std::string& out);
+
+// True when the line needs rewriting (a '#' or a '[' outside comments).
+bool usesParameters(std::string_view raw);
+
+// Skips blanks at p.
+inline void skipBlanks(const char*& p, const char* end) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+}
+
+}  // namespace hsm::kinematics::detail
