@@ -6,7 +6,7 @@ from pivy import coin
 
 from hsmplanner.plots.common import feed_colors
 
-from .feedmap import legend_node, line_set
+from .feedmap import DIRECTION_LEGEND_SPAN, legend_node, line_set
 
 LIFT = 0.3  # mm above the face, so that the strokes are not hidden in it
 
@@ -56,7 +56,7 @@ def direction_node(result, chosen_deg, arrows):
     root.addChild(line_set(lines, feed_colors((values[chosen] - low) / (high - low)), width=2.0))
     arrow = chosen_arrow(result.points, chosen_deg)
     root.addChild(line_set(arrow, np.tile([0.85, 0.1, 0.1], (len(arrow), 1)), width=5.0))
-    root.addChild(legend_node(low, high, "mm²", title="best local G_p", digits=4))
+    root.addChild(legend_node(low, high, "mm²", title="best local G_p", digits=4, span=DIRECTION_LEGEND_SPAN))
     return root
 
 

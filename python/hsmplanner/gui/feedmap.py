@@ -76,7 +76,12 @@ def map_node(blocks, color_by):
 # At the left edge of the view, the labels right of the bar: FreeCAD 1.1's Tasks panel overlays the view's
 # right side while a panel is open.
 LEGEND_X = (-0.92, -0.86)
-LEGEND_SPAN = (-0.8, 0.4)  # below the navigation cube
+# Each kind of colour-bar legend in a band of its own down the left edge (y from -1 at the bottom to 1 at the
+# top), so that a feed map, a machining-direction map and a stock map shown together do not draw over each
+# other or over the model; a Roughing volume's legend is above them (roughing_view.legend_node).
+LEGEND_SPAN = (-0.02, 0.38)            # the feed-rate map's
+DIRECTION_LEGEND_SPAN = (-0.5, -0.14)  # the machining direction's
+STOCK_LEGEND_SPAN = (-0.93, -0.62)     # the stock left's
 
 
 def tick_texts(values, digits):

@@ -201,7 +201,7 @@ def legend_node(colors, labels, title="Roughing volume"):
     overlaid Tasks panel), in normalised screen coordinates (its own camera: it shows in screenshots and saved
     images)."""
     root = screen_root("HsmRoughingLegend")
-    # top left, above where the feed-rate, stock and direction legends are (LEGEND_SPAN up to 0.5): both show
+    # top left, above the feed-rate, direction and stock legends (feedmap's spans, up to 0.47): all show
     (x0, x1), top, height, gap = LEGEND_X, 0.85, 0.07, 0.05
     rows = [top - k * (height + gap) for k in range(len(colors))]  # each square's top
     texts = [(label, x1 + 0.02, y - 0.5 * height - 0.015) for label, y in zip(labels, rows)] + \

@@ -3,7 +3,7 @@ coloured by the thickness left on them (viridis, as the study's pictures), with 
 import numpy as np
 from pivy import coin
 
-from .feedmap import legend_node
+from .feedmap import STOCK_LEGEND_SPAN as LEGEND_SPAN, legend_node
 from .overlay import packed_rgba, unpickable
 
 
@@ -12,11 +12,6 @@ def thickness_colors(shares):
     import matplotlib.cm as cm
 
     return cm.get_cmap("viridis")(np.clip(np.asarray(shares, dtype=float), 0.0, 1.0))[:, :3]
-
-
-# The legend's span in the view's y (-1 at the bottom, 1 at the top): below a Roughing volume's legend, which
-# the study's volume shows at the same right edge (roughing_view.legend_node).
-LEGEND_SPAN = (-0.85, -0.25)
 
 
 def stock_map_node(points, thickness, top_mm=None, title="stock left on the part"):
