@@ -19,13 +19,27 @@ bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 char lower(char c) { return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c; }
 
-// The operators of a bracketed expression and their binding (rs274ngc's precedence: all left-associative).
-int precedence(const std::string& op) {
-  if (op == "**") return 6;
-  if (op == "*" || op == "/" || op == "mod") return 5;
-  if (op == "+" || op == "-") return 4;
-  if (op == "eq" || op == "ne" || op == "gt" || op == "ge" || op == "lt" || op == "le") return 3;
-  return 2;  // and, or, xor
+// The operators of a bracketed expression, in rs274ngc's precedence (higher binds first, all left-associative).
+enum class Op { Power, Times, Divide, Modulo, Plus, Minus, Eq, Ne, Gt, Ge, Lt, Le, And, Or, Xor, None };
+
+int precedence(Op op) {
+  switch (op) {
+    case Op::Power: return 6;
+    case Op::Times: case Op::Divide: case Op::Modulo: return 5;
+    case Op::Plus: case Op::Minus: return 4;
+    case Op::Eq: case Op::Ne: case Op::Gt: case Op::Ge: case Op::Lt: case Op::Le: return 3;
+    default: return 2;
+  }
+}
+
+Op wordOperator(const std::string& word) {
+  static const std::pair<const char*, Op> words[] = {{"mod", Op::Modulo}, {"eq", Op::Eq}, {"ne", Op::Ne},
+                                                     {"gt", Op::Gt},      {"ge", Op::Ge}, {"lt", Op::Lt},
+                                                     {"le", Op::Le},      {"and", Op::And}, {"or", Op::Or},
+                                                     {"xor", Op::Xor}};
+  for (const auto& [name, op] : words)
+    if (word == name) return op;
+  return Op::None;
 }
 
 std::string quoted(const char* p, const char* end) {
@@ -198,66 +212,72 @@ double NgcExpressionReader::unaryFunction(const std::string& name, const char*& 
   fail("'" + name + "' is not a LinuxCNC function (ABS ACOS ASIN ATAN COS EXISTS EXP FIX FUP LN ROUND SIN SQRT TAN)");
 }
 
-double NgcExpressionReader::apply(const std::string& op, double a, double b) const {
-  if (op == "**") {
-    if (a < 0.0 && std::floor(b) != b) fail("a negative number raised to a non-integer power: check the expression");
-    return std::pow(a, b);
+double NgcExpressionReader::apply(int op, double a, double b) const {
+  switch (static_cast<Op>(op)) {
+    case Op::Power:
+      if (a < 0.0 && std::floor(b) != b) fail("a negative number raised to a non-integer power: check the expression");
+      return std::pow(a, b);
+    case Op::Times: return a * b;
+    case Op::Divide:
+      if (b == 0.0) fail("division by zero in an expression");
+      return a / b;
+    case Op::Modulo: {
+      if (b == 0.0) fail("MOD by zero in an expression");
+      const double r = std::fmod(a, b);
+      return r < 0.0 ? r + std::abs(b) : r;
+    }
+    case Op::Plus: return a + b;
+    case Op::Minus: return a - b;
+    case Op::Eq: return a == b ? 1.0 : 0.0;
+    case Op::Ne: return a != b ? 1.0 : 0.0;
+    case Op::Gt: return a > b ? 1.0 : 0.0;
+    case Op::Ge: return a >= b ? 1.0 : 0.0;
+    case Op::Lt: return a < b ? 1.0 : 0.0;
+    case Op::Le: return a <= b ? 1.0 : 0.0;
+    case Op::And: return (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
+    case Op::Or: return (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
+    default: return ((a != 0.0) != (b != 0.0)) ? 1.0 : 0.0;  // xor
   }
-  if (op == "*") return a * b;
-  if (op == "/" || op == "mod") {
-    if (b == 0.0) fail(op == "/" ? "division by zero in an expression" : "MOD by zero in an expression");
-    if (op == "/") return a / b;
-    const double r = std::fmod(a, b);
-    return r < 0.0 ? r + std::abs(b) : r;
-  }
-  if (op == "+") return a + b;
-  if (op == "-") return a - b;
-  if (op == "eq") return a == b ? 1.0 : 0.0;
-  if (op == "ne") return a != b ? 1.0 : 0.0;
-  if (op == "gt") return a > b ? 1.0 : 0.0;
-  if (op == "ge") return a >= b ? 1.0 : 0.0;
-  if (op == "lt") return a < b ? 1.0 : 0.0;
-  if (op == "le") return a <= b ? 1.0 : 0.0;
-  if (op == "and") return (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
-  if (op == "or") return (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
-  return ((a != 0.0) != (b != 0.0)) ? 1.0 : 0.0;  // xor
 }
 
 double NgcExpressionReader::expression(const char*& p, const char* end) const {
-  // Operator precedence by two stacks, as rs274ngc's read_real_expression.
-  std::vector<double> values{value(p, end)};
-  std::vector<std::string> ops;
+  // Operator precedence by two stacks, as rs274ngc's read_real_expression (small: on the stack, no allocation).
+  constexpr int kDepth = 8;  // at most one pending operator per precedence level, plus the one read
+  double values[kDepth];
+  Op ops[kDepth];
+  int count = 0;  // pending operators; values has count + 1
+  values[0] = value(p, end);
   auto reduce = [&]() {
-    const double b = values.back();
-    values.pop_back();
-    values.back() = apply(ops.back(), values.back(), b);
-    ops.pop_back();
+    --count;
+    values[count] = apply(static_cast<int>(ops[count]), values[count], values[count + 1]);
   };
   for (;;) {
     skipBlanks(p, end);
     if (p >= end) fail("'[' is not closed: add ']'");
     if (*p == ']') {
       ++p;
-      while (!ops.empty()) reduce();
-      if (!std::isfinite(values.back())) fail("an expression's value is not a finite number: check it");
-      return values.back();
+      while (count > 0) reduce();
+      if (!std::isfinite(values[0])) fail("an expression's value is not a finite number: check it");
+      return values[0];
     }
-    std::string op;
+    Op op = Op::None;
     if (*p == '*' && p + 1 < end && p[1] == '*') {
-      op = "**";
+      op = Op::Power;
       p += 2;
     } else if (*p == '*' || *p == '/' || *p == '+' || *p == '-') {
-      op = std::string(1, *p++);
+      op = *p == '*' ? Op::Times : *p == '/' ? Op::Divide : *p == '+' ? Op::Plus : Op::Minus;
+      ++p;
     } else if (isLetter(*p)) {
-      while (p < end && isLetter(*p)) op += lower(*p++);
-      if (precedence(op) == 2 && op != "and" && op != "or" && op != "xor")
-        fail("'" + op + "' is not an operator (** * / MOD + - EQ NE GT GE LT LE AND OR XOR)");
+      std::string word;
+      while (p < end && isLetter(*p)) word += lower(*p++);
+      op = wordOperator(word);
+      if (op == Op::None) fail("'" + word + "' is not an operator (** * / MOD + - EQ NE GT GE LT LE AND OR XOR)");
     } else {
       fail("'" + quoted(p, end) + "' is not an operator: expected one of ** * / MOD + - EQ NE GT GE LT LE AND OR XOR or ']'");
     }
-    while (!ops.empty() && precedence(ops.back()) >= precedence(op)) reduce();
-    ops.push_back(op);
-    values.push_back(value(p, end));
+    while (count > 0 && precedence(ops[count - 1]) >= precedence(op)) reduce();
+    ops[count++] = op;
+    values[count] = value(p, end);
   }
 }
 
@@ -291,7 +311,8 @@ std::string_view substituteParameters(std::string_view raw, long line, NgcParame
     std::string name;
     double value;
   };
-  std::vector<Setting> settings;
+  thread_local std::vector<Setting> settings;  // kept between lines: a loop's assignment allocates nothing
+  settings.clear();
   const NgcExpressionReader reader(parameters, line);
   const char* p = raw.data();
   const char* end = p + raw.size();

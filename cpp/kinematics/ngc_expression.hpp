@@ -52,7 +52,7 @@ public:
 private:
   double expression(const char*& p, const char* end) const;  // after '[', up to and past ']'
   double unaryFunction(const std::string& name, const char*& p, const char* end) const;
-  double apply(const std::string& op, double a, double b) const;
+  double apply(int op, double a, double b) const;  // an operator of the expression (its enum in the .cpp)
   [[noreturn]] void fail(const std::string& message) const;
 
   const NgcParameters& parameters_;

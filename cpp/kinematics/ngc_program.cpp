@@ -33,13 +33,18 @@ void NgcProgram::fail(long line, const std::string& message) const {
   throw ParseError(line, file.streaming ? message : message + " (in " + file.name + ")");
 }
 
-const NgcProgram::Stored* NgcProgram::fetch(const Cursor& at) {
+const NgcProgram::OWord* NgcProgram::oWordOf(Stored& line) {
+  if (line.isOWord < 0) line.isOWord = parseOWord(line.text, line.word) ? 1 : 0;
+  return line.isOWord ? &line.word : nullptr;
+}
+
+NgcProgram::Stored* NgcProgram::fetch(const Cursor& at) {
   File& file = files_[at.file];
   while (at.index >= file.lines.size()) {
     if (!file.streaming) return nullptr;
     std::string_view raw;
     if (!source_.next(raw)) return nullptr;
-    file.lines.push_back(Stored{std::string(raw), ++streamed_});
+    file.lines.push_back(Stored{std::string(raw), ++streamed_, -1, {}});
   }
   return &file.lines[at.index];
 }
@@ -96,11 +101,11 @@ NgcProgram::Structure* NgcProgram::innermost(const std::string& label) {
 
 NgcProgram::Cursor NgcProgram::find(Cursor from, const std::string& label, std::initializer_list<const char*> keywords,
                                     const std::string& what, long line) {
-  OWord o;
   for (Cursor at{from.file, from.index + 1};; ++at.index) {
-    const Stored* stored = fetch(at);
+    Stored* stored = fetch(at);
     if (stored == nullptr) fail(line, shown(label) + " has no " + what + ": the program ends first; add it");
-    if (parseOWord(stored->text, o) && o.label == label && hasKeyword(o.keyword, keywords)) return at;
+    const OWord* o = oWordOf(*stored);
+    if (o != nullptr && o->label == label && hasKeyword(o->keyword, keywords)) return at;
   }
 }
 
@@ -108,11 +113,11 @@ NgcProgram::Cursor NgcProgram::definition(const std::string& label, long line) {
   const auto known = subroutines_.find(label);
   if (known != subroutines_.end()) return known->second;
   // Defined further on in this file (rs274ngc searches forward), or, for o<name>, in NAME.ngc.
-  OWord o;
   for (Cursor at{cursor_.file, cursor_.index + 1};; ++at.index) {
-    const Stored* stored = fetch(at);
+    Stored* stored = fetch(at);
     if (stored == nullptr) break;
-    if (parseOWord(stored->text, o) && o.label == label && o.keyword == "sub") return subroutines_[label] = at;
+    const OWord* o = oWordOf(*stored);
+    if (o != nullptr && o->label == label && o->keyword == "sub") return subroutines_[label] = at;
   }
   if (label.front() != '<') fail(line, "o" + label + " call: the program has no o" + label + " sub: define it");
   const std::string name = label.substr(1, label.size() - 2);
@@ -125,12 +130,13 @@ NgcProgram::Cursor NgcProgram::definition(const std::string& label, long line) {
     File file{name + ".ngc", {}, false};
     LineSource lines(stream);
     std::string_view raw;
-    for (long n = 1; lines.next(raw); ++n) file.lines.push_back(Stored{std::string(raw), n});
+    for (long n = 1; lines.next(raw); ++n) file.lines.push_back(Stored{std::string(raw), n, -1, {}});
     files_.push_back(std::move(file));
     const size_t index = files_.size() - 1;
-    for (size_t i = 0; i < files_[index].lines.size(); ++i)
-      if (parseOWord(files_[index].lines[i].text, o) && o.label == label && o.keyword == "sub")
-        return subroutines_[label] = Cursor{index, i};
+    for (size_t i = 0; i < files_[index].lines.size(); ++i) {
+      const OWord* o = oWordOf(files_[index].lines[i]);
+      if (o != nullptr && o->label == label && o->keyword == "sub") return subroutines_[label] = Cursor{index, i};
+    }
     fail(line, "o" + label + " call: " + path + " has no o" + label + " sub: define it there");
   }
   std::string where;
@@ -292,10 +298,10 @@ bool NgcProgram::next(std::string_view& line, long& number) {
       }
       if (o.keyword.empty()) continue;  // O1234: a program number (Fanuc style): nothing kept for it
       keeping_ = true;
-      files_[0].lines.push_back(Stored{std::string(raw), number});
+      files_[0].lines.push_back(Stored{std::string(raw), number, -1, {}});
       cursor_ = Cursor{0, files_[0].lines.size() - 1};
     }
-    const Stored* stored = fetch(cursor_);
+    Stored* stored = fetch(cursor_);
     if (stored == nullptr) {
       if (frames_.size() > 1)
         fail(frames_.back().callLine, shown(frames_.back().label) + " call: its file ends without " +
@@ -310,8 +316,8 @@ bool NgcProgram::next(std::string_view& line, long& number) {
     if (++flowLines_ > kMaxFlowLines)
       fail(stored->number, "more than " + std::to_string(kMaxFlowLines) +
                                " lines run through loops and subroutines: an endless loop? Check the O-words");
-    if (parseOWord(stored->text, o)) {
-      runOWord(o, stored->number);
+    if (const OWord* word = oWordOf(*stored)) {  // stays where it is while runOWord reads more lines (a deque)
+      runOWord(*word, stored->number);
       continue;
     }
     number = stored->number;

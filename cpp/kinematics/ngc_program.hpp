@@ -36,9 +36,16 @@ public:
   bool next(std::string_view& line, long& number);
 
 private:
+  struct OWord {
+    std::string label, keyword;
+    const char* rest = nullptr;  // the arguments after the keyword
+    const char* end = nullptr;
+  };
   struct Stored {
     std::string text;
     long number;
+    int isOWord = -1;  // -1 not looked at yet, 0 no, 1 yes (in `word`): a loop's lines are parsed once
+    OWord word;
   };
   struct File {
     std::string name;
@@ -61,15 +68,12 @@ private:
     long callLine = 0;
     std::vector<Structure> structures;
   };
-  struct OWord {
-    std::string label, keyword;
-    const char* rest = nullptr;  // the arguments after the keyword
-    const char* end = nullptr;
-  };
 
   // The kept line at `at`, read from the source when the program's next line is needed; null at its end.
-  const Stored* fetch(const Cursor& at);
+  Stored* fetch(const Cursor& at);
   static bool parseOWord(std::string_view text, OWord& o);
+  // The kept line's O-word, parsed the first time it is asked for; null for another line.
+  static const OWord* oWordOf(Stored& line);
   // Runs the O-word line at cursor_ (line `n` of its file), moving the cursor to the line that runs next.
   void runOWord(const OWord& o, long n);
   // The first O-word line after `from` with `label` and one of `keywords`; throws naming `what` is missing.

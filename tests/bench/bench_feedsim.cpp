@@ -1,8 +1,10 @@
 // Feed-rate simulation throughput, measured in one run: reading alone, reading + simulating with the 840D
 // model (summary only), and the heap in use while simulating 1 M and 4 M blocks (it must not grow); then the same
 // moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
-// Targets: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes). Times are the
-// process's CPU time.
+// Then LinuxCNC's language: the plain program on the LinuxCNC model, and a program whose moves come from an
+// O-word loop with parameters and expressions.
+// Targets: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes), 1,000,000 from
+// loops. Times are the process's CPU time.
 // Run: build/bin/bench_feedsim [five-axis [blocks]]   (five-axis: only the 5-axis program, e.g. under perf)
 #include "kinematics/simulation.hpp"
 
@@ -42,6 +44,14 @@ std::string finishingProgram(long blocks, bool fiveAxis = false) {
     text += line;
   }
   return text + "M30\n";
+}
+
+// The same kind of zigzag, each move computed in a LinuxCNC while loop (four lines run per block).
+std::string loopProgram(long blocks) {
+  return "G90 G17 G21\nG0 X0 Y0 Z5\nG1 Z0 F6000\n#<i> = 0\n"
+         "o1 while [#<i> LT " + std::to_string(blocks) + "]\n"
+         "G1 X[[#<i> MOD 700] * 0.2] Y[FIX[#<i> / 700] * 0.4] Z[-0.5 * SIN[#<i> * 0.5]]\n"
+         "#<i> = [#<i> + 1]\no1 endwhile\nM30\n";
 }
 
 // CPU seconds of this process (best of three): on a machine other work shares, the wall clock counts the time
@@ -124,6 +134,31 @@ int main(int argc, char** argv) {
               summary.totalTime / summary.naiveTime);
 
   fiveAxis(blocks, summary, simulateTime);
+
+  const MachineModel linuxcnc = loadMachine("linuxcnc-2.9", {HSM_MACHINES_DIR});
+  SimulationSummary plain, looped;
+  const double plainTime = seconds([&] {
+    std::istringstream stream(program);
+    plain = simulate(stream, linuxcnc).summary;
+  });
+  const std::string loops = loopProgram(blocks);
+  long loopRead = 0;
+  const double loopReadTime = seconds([&] {
+    std::istringstream stream(loops);
+    GcodeReader reader(stream);
+    Block b;
+    loopRead = 0;
+    while (reader.next(b)) ++loopRead;
+  });
+  const double loopTime = seconds([&] {
+    std::istringstream stream(loops);
+    looped = simulate(stream, linuxcnc).summary;
+  });
+  std::printf("LinuxCNC model, plain program: %5.2f s  %10.0f blocks/s read + simulate\n", plainTime,
+              plain.blockCount / plainTime);
+  std::printf("LinuxCNC while loop (%ld blocks from a %zu-byte program): read only %5.2f s %10.0f blocks/s, "
+              "read + simulate %5.2f s %10.0f blocks/s\n", loopRead, loops.size(), loopReadTime, loopRead / loopReadTime,
+              loopTime, looped.blockCount / loopTime);
 
   for (long n : {1000000L, 4000000L}) {
     std::istringstream stream(finishingProgram(n));
