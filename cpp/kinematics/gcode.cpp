@@ -71,6 +71,18 @@ Eigen::Vector3d Block::pointAt(double distance) const {
 // ---------------------------------------------------------------------------------------------------------
 // The reader: lines (gcode_lexer) through the modal interpreter (gcode_interpreter)
 
+namespace {
+constexpr long kDialectLines = 5;  // a program in another language says so in its first lines
+
+// A program in a language the reader does not take is refused at once, in one line that says what it is,
+// instead of at its first odd character.
+void refuseOtherLanguages(std::string_view raw, long number) {
+  if (raw.find("BEGIN PGM") != std::string_view::npos)
+    throw ParseError(number, "this is a Heidenhain conversational (Klartext) program ('BEGIN PGM'): the simulator "
+                             "reads ISO G-code (LinuxCNC, grbl) and Siemens 840D programs; post the part for one");
+}
+}  // namespace
+
 struct GcodeReader::Impl {
   detail::LineSource source;
   detail::Line line;
@@ -97,6 +109,7 @@ struct GcodeReader::Impl {
     std::string_view raw;
     long number = 0;
     while (nextLine(raw, number)) {
+      if (number <= kDialectLines) refuseOtherLanguages(raw, number);
       ++interpreter.stats().lines;
       line.parse(raw, number);
       if (line.wordCount == 0 && line.keywords.empty()) continue;

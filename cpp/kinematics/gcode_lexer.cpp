@@ -1,5 +1,6 @@
 #include "kinematics/gcode_lexer.hpp"
 
+#include "common/ascii.hpp"
 #include "common/text.hpp"
 
 #include <fast_float/fast_float.h>
@@ -12,9 +13,9 @@
 namespace hsm::kinematics::detail {
 
 namespace {
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-char toUpper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+constexpr auto isLetter = isAsciiLetter;
+constexpr auto isDigit = isAsciiDigit;
+constexpr auto toUpper = asciiUpper;
 }  // namespace
 
 bool LineSource::next(std::string_view& line) {

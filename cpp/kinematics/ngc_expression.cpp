@@ -1,5 +1,7 @@
 #include "kinematics/ngc_expression.hpp"
 
+#include "common/ascii.hpp"
+#include "common/text.hpp"
 #include "kinematics/gcode.hpp"
 
 #include <fast_float/fast_float.h>
@@ -15,9 +17,9 @@ namespace {
 constexpr double kDegree = M_PI / 180.0;
 constexpr double kIntegerTolerance = 1e-4;  // rs274ngc's: a parameter number or an L count this close to an integer
 
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c; }
+constexpr auto isLetter = isAsciiLetter;
+constexpr auto isDigit = isAsciiDigit;
+constexpr auto lower = asciiLower;
 
 // The operators of a bracketed expression, in rs274ngc's precedence (higher binds first, all left-associative).
 enum class Op { Power, Times, Divide, Modulo, Plus, Minus, Eq, Ne, Gt, Ge, Lt, Le, And, Or, Xor, None };
@@ -54,14 +56,14 @@ std::string quoted(const char* p, const char* end) {
 
 double NgcParameters::numbered(int number, long line) const {
   if (number < 0 || number > kMaxNumberedParameter)
-    throw ParseError(line, "#" + std::to_string(number) + " is not a parameter: LinuxCNC's numbered parameters are #1 to #" +
+    throw ParseError(line, "#" + hsm::number(number) + " is not a parameter: LinuxCNC's numbered parameters are #1 to #" +
                                std::to_string(kMaxNumberedParameter));
   return numbered_[static_cast<size_t>(number)];
 }
 
 void NgcParameters::setNumbered(int number, double value, long line) {
   if (number < 1 || number > kMaxNumberedParameter)
-    throw ParseError(line, "#" + std::to_string(number) + " cannot be set: LinuxCNC's numbered parameters are #1 to #" +
+    throw ParseError(line, "#" + hsm::number(number) + " cannot be set: LinuxCNC's numbered parameters are #1 to #" +
                                std::to_string(kMaxNumberedParameter));
   numbered_[static_cast<size_t>(number)] = value;
 }
@@ -125,7 +127,7 @@ int NgcExpressionReader::reference(const char*& p, const char* end, std::string&
   const double number = value(p, end);
   const double rounded = std::round(number);
   if (std::abs(number - rounded) > kIntegerTolerance)
-    fail("#" + std::to_string(number) + " is not a parameter: a parameter number is an integer");
+    fail("#" + hsm::number(number) + " is not a parameter: a parameter number is an integer");
   if (rounded < 0 || rounded > kMaxNumberedParameter)
     fail("#" + std::to_string(static_cast<long long>(rounded)) +
          " is not a parameter: LinuxCNC's numbered parameters are #1 to #" + std::to_string(kMaxNumberedParameter));
@@ -191,7 +193,7 @@ double NgcExpressionReader::unaryFunction(const std::string& name, const char*& 
   }
   if (name == "abs") return std::abs(a);
   if (name == "acos" || name == "asin") {
-    if (a < -1.0 || a > 1.0) fail(name + "[" + std::to_string(a) + "]: the argument must be within -1 to 1");
+    if (a < -1.0 || a > 1.0) fail(name + "[" + number(a) + "]: the argument must be within -1 to 1");
     return (name == "acos" ? std::acos(a) : std::asin(a)) / kDegree;
   }
   if (name == "cos") return std::cos(a * kDegree);
@@ -202,11 +204,11 @@ double NgcExpressionReader::unaryFunction(const std::string& name, const char*& 
   if (name == "fup") return std::ceil(a);
   if (name == "round") return std::round(a);  // half away from zero, as rs274ngc
   if (name == "ln") {
-    if (a <= 0.0) fail("LN[" + std::to_string(a) + "]: the argument must be positive");
+    if (a <= 0.0) fail("LN[" + number(a) + "]: the argument must be positive");
     return std::log(a);
   }
   if (name == "sqrt") {
-    if (a < 0.0) fail("SQRT[" + std::to_string(a) + "]: the argument must not be negative");
+    if (a < 0.0) fail("SQRT[" + number(a) + "]: the argument must not be negative");
     return std::sqrt(a);
   }
   fail("'" + name + "' is not a LinuxCNC function (ABS ACOS ASIN ATAN COS EXISTS EXP FIX FUP LN ROUND SIN SQRT TAN)");

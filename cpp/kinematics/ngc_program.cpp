@@ -1,5 +1,7 @@
 #include "kinematics/ngc_program.hpp"
 
+#include "common/ascii.hpp"
+#include "common/text.hpp"
 #include "kinematics/gcode.hpp"
 
 #include <algorithm>
@@ -10,9 +12,9 @@
 namespace hsm::kinematics::detail {
 
 namespace {
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c; }
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+constexpr auto isLetter = isAsciiLetter;
+constexpr auto isDigit = isAsciiDigit;
+constexpr auto lower = asciiLower;
 
 std::string shown(const std::string& label) { return "o" + label; }
 

@@ -18,9 +18,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ONLY_ON = "holds on FreeCAD"
 # The test classes that take longest (20 s to 2 min each on two cores), started first so the processes end
 # together; every other class after them, in name order.
-SLOWEST_FIRST = ["test_examples.RoughingStudyExample", "test_examples.RoughingPathsExample",
-                 "test_roughing_op.PostedPrograms", "test_examples.MachiningDirectionExample",
-                 "test_examples.StrategyStudyExample", "test_examples.GuidanceStudyExample",
+SLOWEST_FIRST = ["test_examples.RoughingPathsExample", "test_examples.RoughingStudyExample",
+                 "test_examples.StrategyStudyExample", "test_examples.MachiningDirectionExample",
+                 "test_program_clearance.PostedPrograms", "test_examples.GuidanceStudyExample",
                  "test_bad_inputs.BadInputs", "test_saved_documents.Saved020ImpellerJob", "test_study.Study"]
 
 

@@ -114,6 +114,11 @@ TEST(NgcLanguage, SubroutineFilesAreFoundInTheFoldersGiven) {
   std::filesystem::remove_all(folder);
 }
 
+TEST(NgcLanguage, AHeidenhainProgramIsRefusedInOneLineThatSaysWhatItIs) {
+  const std::string error = errorOf("0 BEGIN PGM 1234 MM\n1 BLK FORM 0.1 Z X-86 Y-75 Z-61\n");
+  EXPECT_EQ(error.rfind("line 1: this is a Heidenhain conversational (Klartext) program", 0), 0u) << error;
+}
+
 TEST(NgcLanguage, PlainProgramsAndTheSiemensDialectAreReadAsBefore) {
   const std::string plain = "G1 X1 F600\nO1234\nG1 X2 ; comment with # and [\n";
   EXPECT_EQ(xs(readProgram(plain)), (std::vector<double>{1, 2}));
@@ -136,7 +141,7 @@ TEST(NgcLanguage, BadProgramsAreRefusedNamingTheLine) {
       {"G1 X#<nope> F600\n", "line 1: #<nope> is read before it is set"},
       {"G1 X#<_nope> F600\n", "line 1: #<_nope> is read before it is set"},
       {"G1 X#9999 F600\n", "line 1: #9999 is not a parameter"},
-      {"G1 X[SQRT[-1]] F600\n", "line 1: SQRT[-1.000000]: the argument must not be negative"},
+      {"G1 X[SQRT[-1]] F600\n", "line 1: SQRT[-1]: the argument must not be negative"},
       {"G1 X[2 ** 5000] F600\n", "line 1: an expression's value is not a finite number"},
       {"#1=[10 ** 300]\nG1 X[#1 * #1 * #1] F600\n", "line 2: an expression's value is not a finite number"},
       {"#1=[10 ** 300]\nG1 X#1 F600\n", "is out of range"},
