@@ -290,7 +290,12 @@ void NgcProgram::runOWord(const OWord& o, long n) {
 bool NgcProgram::next(std::string_view& line, long& number) {
   OWord o;
   for (;;) {
-    if (!keeping_) {  // streaming: a line from the source, unless it is the first O-word
+    // Streaming: a line from the source that no loop or call can come back to (before the first O-word, or
+    // read fresh outside any loop and call) runs without being kept: memory follows the O-word structures,
+    // not the program's length.
+    const bool fresh = frames_.size() == 1 && frames_[0].structures.empty() && cursor_.file == 0 &&
+                       cursor_.index == files_[0].lines.size();
+    if (!keeping_ || fresh) {
       std::string_view raw;
       if (!source_.next(raw)) return false;
       number = ++streamed_;

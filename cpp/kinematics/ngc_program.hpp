@@ -1,7 +1,8 @@
 // LinuxCNC's O-word program flow (internal): subroutines (in the program or in their own files), loops and
 // conditions, as LinuxCNC 2.9's rs274ngc runs them. Gives the lines to run, in the order the controller runs
 // them, with their parameters and expressions already computed (ngc_expression.hpp). A program without O-words
-// streams through untouched; from its first O-word on, its lines are kept so that loops can go back.
+// streams through untouched; the lines of subroutines and loops (and those read ahead to find them) are kept
+// so that calls and loops can go back, the others stream through.
 #pragma once
 
 #include "kinematics/gcode_lexer.hpp"
@@ -94,7 +95,7 @@ private:
   std::vector<Frame> frames_;
   std::map<std::string, Cursor> subroutines_;
   Cursor cursor_;
-  bool keeping_ = false;  // from the first O-word line on, the program's lines are kept
+  bool keeping_ = false;  // from the first O-word line on, lines of O-word structures are kept
   long streamed_ = 0;     // lines read from the source
   long flowLines_ = 0;
   std::string rewritten_;

@@ -160,6 +160,16 @@ int main(int argc, char** argv) {
               "read + simulate %5.2f s %10.0f blocks/s\n", loopRead, loops.size(), loopReadTime, loopRead / loopReadTime,
               loopTime, looped.blockCount / loopTime);
 
+  {  // a subroutine defined at the top, then plain moves: only the subroutine's lines are kept
+    std::istringstream stream("o<up> sub\nG0 Z5\no<up> endsub\n" + finishingProgram(2000000) + "o<up> call\n");
+    const size_t before = heapInUse();
+    size_t peak = before;
+    SimulationOptions options;
+    options.onProgress = [&](long) { peak = std::max(peak, heapInUse()); };
+    simulate(stream, linuxcnc, {}, options);
+    std::printf("heap in use while simulating 2000000 blocks after a LinuxCNC subroutine: %.2f MB above the text\n",
+                (peak - before) / 1e6);
+  }
   for (long n : {1000000L, 4000000L}) {
     std::istringstream stream(finishingProgram(n));
     const size_t before = heapInUse();

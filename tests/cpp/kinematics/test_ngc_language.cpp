@@ -80,6 +80,16 @@ TEST(NgcLanguage, SubroutinesTakeArgumentsAndRestoreTheCallersParameters) {
   EXPECT_EQ(blocks[1].end, Eigen::Vector3d(100, 2, 0));
 }
 
+// Lines outside loops and calls stream through (not kept); a call after them still finds its subroutine, a
+// call before its definition reads ahead to it, and both come back to the line after the call.
+TEST(NgcLanguage, CallsComeBackAroundStreamedLines) {
+  EXPECT_EQ(xs(readProgram("o1 sub\nG1 X#1\no1 endsub\nG1 X1 F600\no2 repeat [2]\nG1 X2\nG1 X3\no2 endrepeat\n"
+                           "G1 X4\no1 call [5]\nG1 X6\no1 call [7]\n")),
+            (std::vector<double>{1, 2, 3, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(xs(readProgram("G1 X1 F600\no9 call [2]\nG1 X3\nM2\no9 sub\nG1 X#1\no9 endsub\n")),
+            (std::vector<double>{1, 2, 3}));  // the definition met after the call is skipped, as any definition
+}
+
 // "Looping": while/endwhile, do/while, repeat/endrepeat, break and continue.
 TEST(NgcLanguage, LoopsRunAsManyTimesAsTheirConditionsSay) {
   EXPECT_EQ(xs(readProgram("#1=0\no1 while [#1 LT 3]\n#1=[#1+1]\nG1 X#1 F600\no1 endwhile\nG1 X9\n")),
