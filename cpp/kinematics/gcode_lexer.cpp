@@ -59,6 +59,12 @@ void LineSource::refill() {
   if (got == 0 || !input_) eof_ = true;
 }
 
+const char* afterComment(const char* p, const char* end, long line) {
+  const char* close = static_cast<const char*>(std::memchr(p, ')', static_cast<size_t>(end - p)));
+  if (!close) throw ParseError(line, "comment '(' is not closed: add ')'");
+  return close + 1;
+}
+
 void Line::parse(std::string_view raw, long number) {
   wordCount = 0;
   keywords.clear();
@@ -81,9 +87,7 @@ void Line::parse(std::string_view raw, long number) {
     } else if (c == ';') {
       break;
     } else if (c == '(') {
-      const char* close = static_cast<const char*>(std::memchr(p, ')', end - p));
-      if (!close) throw ParseError(number, "comment '(' is not closed: add ')'");
-      p = close + 1;
+      p = afterComment(p, end, number);
     } else if (c == '%' && wordCount == 0 && keywords.empty()) {
       break;  // program start/end marker
     } else if (isLetter(c)) {

@@ -35,6 +35,9 @@ private:
   bool eof_ = false;
 };
 
+// Past the comment that opens at p ('('), up to its ')'; ParseError naming `line` when it is not closed.
+const char* afterComment(const char* p, const char* end, long line);
+
 // ---------------------------------------------------------------------------------------------------------
 // Words of one line
 

@@ -3,6 +3,7 @@
 #include "common/ascii.hpp"
 #include "common/text.hpp"
 #include "kinematics/gcode.hpp"
+#include "kinematics/gcode_lexer.hpp"
 
 #include <fast_float/fast_float.h>
 
@@ -325,9 +326,7 @@ std::string_view substituteParameters(std::string_view raw, long line, NgcParame
     } else if (c == ';') {
       break;
     } else if (c == '(') {
-      const char* close = static_cast<const char*>(std::memchr(p, ')', static_cast<size_t>(end - p)));
-      if (!close) throw ParseError(line, "comment '(' is not closed: add ')'");
-      p = close + 1;
+      p = afterComment(p, end, line);
     } else if (c == '#') {
       Setting s;
       ++p;

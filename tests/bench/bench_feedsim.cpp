@@ -74,6 +74,16 @@ double seconds(const std::function<void()>& work) {
 
 size_t heapInUse() { return mallinfo2().uordblks; }
 
+// The most heap in use above the start while the program is simulated, MB.
+double peakHeapMb(std::istream& program, const MachineModel& machine) {
+  const size_t before = heapInUse();
+  size_t peak = before;
+  SimulationOptions options;
+  options.onProgress = [&](long) { peak = std::max(peak, heapInUse()); };
+  simulate(program, machine, {}, options);
+  return (peak - before) / 1e6;
+}
+
 void fiveAxis(long blocks, const SimulationSummary& threeAxis, double threeAxisTime) {
   const MachineModel trunnion = loadMachine("mikron-ucp710-ac-840d", {HSM_MACHINES_DIR});
   const std::string five = finishingProgram(blocks, true);
@@ -162,23 +172,13 @@ int main(int argc, char** argv) {
 
   {  // a subroutine defined at the top, then plain moves: only the subroutine's lines are kept
     std::istringstream stream("o<up> sub\nG0 Z5\no<up> endsub\n" + finishingProgram(2000000) + "o<up> call\n");
-    const size_t before = heapInUse();
-    size_t peak = before;
-    SimulationOptions options;
-    options.onProgress = [&](long) { peak = std::max(peak, heapInUse()); };
-    simulate(stream, linuxcnc, {}, options);
     std::printf("heap in use while simulating 2000000 blocks after a LinuxCNC subroutine: %.2f MB above the text\n",
-                (peak - before) / 1e6);
+                peakHeapMb(stream, linuxcnc));
   }
   for (long n : {1000000L, 4000000L}) {
     std::istringstream stream(finishingProgram(n));
-    const size_t before = heapInUse();
-    size_t peak = before;
-    SimulationOptions options;
-    options.onProgress = [&](long) { peak = std::max(peak, heapInUse()); };
-    simulate(stream, machine, {}, options);
     std::printf("heap in use while simulating %ld blocks: %.2f MB above the program text\n", n,
-                (peak - before) / 1e6);
+                peakHeapMb(stream, machine));
   }
   return 0;
 }

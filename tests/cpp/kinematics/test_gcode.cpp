@@ -1,6 +1,7 @@
 #include "kinematics/gcode.hpp"
 #include "kinematics/gcode_lexer.hpp"
 
+#include "support/gcode_errors.hpp"
 #include "support/mutation.hpp"
 
 #include <gtest/gtest.h>
@@ -10,16 +11,9 @@
 #include <sstream>
 
 using namespace hsm::kinematics;
+using hsm::test::errorOf;
 
 namespace {
-std::string errorOf(const std::string& program, ReaderOptions options = {}) {
-  try {
-    readProgram(program, options);
-  } catch (const ParseError& error) {
-    return error.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(Gcode, LinesFeedsAndModalState) {

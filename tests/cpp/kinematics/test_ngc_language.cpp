@@ -2,6 +2,7 @@
 // (LinuxCNC documentation, "G-code overview": parameters, expressions, operators, functions; "O codes").
 #include "kinematics/gcode.hpp"
 
+#include "support/gcode_errors.hpp"
 #include "support/mutation.hpp"
 
 #include <gtest/gtest.h>
@@ -13,16 +14,9 @@
 #include <random>
 
 using namespace hsm::kinematics;
+using hsm::test::errorOf;
 
 namespace {
-std::string errorOf(const std::string& program, ReaderOptions options = {}) {
-  try {
-    readProgram(program, options);
-  } catch (const ParseError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 std::vector<double> xs(const std::vector<Block>& blocks) {
   std::vector<double> out;
