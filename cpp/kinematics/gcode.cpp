@@ -2,6 +2,7 @@
 
 #include "common/text.hpp"
 #include "kinematics/gcode_interpreter.hpp"
+#include "kinematics/macro_program.hpp"
 #include "kinematics/ngc_program.hpp"
 
 #include <Eigen/Geometry>
@@ -71,34 +72,37 @@ Eigen::Vector3d Block::pointAt(double distance) const {
 // ---------------------------------------------------------------------------------------------------------
 // The reader: lines (gcode_lexer) through the modal interpreter (gcode_interpreter)
 
-namespace {
-constexpr long kDialectLines = 5;  // a program in another language says so in its first lines
-
-// A program in a language the reader does not take is refused at once, in one line that says what it is,
-// instead of at its first odd character.
-void refuseOtherLanguages(std::string_view raw, long number) {
-  if (raw.find("BEGIN PGM") != std::string_view::npos)
-    throw ParseError(number, "this is a Heidenhain conversational (Klartext) program ('BEGIN PGM'): the simulator "
-                             "reads ISO G-code (LinuxCNC, grbl) and Siemens 840D programs; post the part for one");
-}
-}  // namespace
-
 struct GcodeReader::Impl {
   detail::LineSource source;
   detail::Line line;
   detail::Interpreter interpreter;
-  detail::NgcProgram program;
-  bool linuxcncLanguage;
+  Dialect dialect;
+  std::unique_ptr<detail::NgcProgram> ngc;      // LinuxCNC's O-words (and grbl's programs)
+  std::unique_ptr<detail::MacroProgram> macro;  // Fanuc's and Haas's subprograms and Macro B
+  double positions[3][3] = {};                  // for Macro B's position variables
   long lineNumber = 0;
 
   Impl(std::istream& input, const ReaderOptions& options)
-      : source(input), interpreter(options),
-        program(source, detail::NgcOptions{options.subroutineFolders, options.maxLoopIterations}),
-        linuxcncLanguage(options.linuxcncLanguage) {}
+      : source(input), interpreter(options), dialect(options.conventions.dialect) {
+    if (dialect == Dialect::LinuxCnc || dialect == Dialect::Grbl)
+      ngc = std::make_unique<detail::NgcProgram>(source, detail::NgcOptions{options.subroutineFolders,
+                                                                            options.maxLoopIterations});
+    if (isFanucFamily(dialect)) {
+      macro = std::make_unique<detail::MacroProgram>(
+          source, detail::MacroOptions{options.subroutineFolders, options.maxLoopIterations, dialect == Dialect::Haas});
+      macro->setPositions(positions);
+    }
+    if (!options.conventions.powerOnCodes.empty()) {  // the control's state before the program's first line
+      Block ignored;
+      line.parse(options.conventions.powerOnCodes, 0);
+      interpreter.interpret(line, 0, ignored);
+    }
+  }
 
-  // The next line to run: through LinuxCNC's program flow, or as the file has it.
+  // The next line to run: through the dialect's program flow, or as the file has it.
   bool nextLine(std::string_view& raw, long& number) {
-    if (linuxcncLanguage) return program.next(raw, number);
+    if (ngc) return ngc->next(raw, number);
+    if (macro) return macro->next(raw, number);
     if (!source.next(raw)) return false;
     number = ++lineNumber;
     return true;
@@ -109,11 +113,13 @@ struct GcodeReader::Impl {
     std::string_view raw;
     long number = 0;
     while (nextLine(raw, number)) {
-      if (number <= kDialectLines) refuseOtherLanguages(raw, number);
+      if (number <= detail::kDialectLines) detail::refuseOtherLanguages(raw, number);
       ++interpreter.stats().lines;
       line.parse(raw, number);
       if (line.wordCount == 0 && line.keywords.empty()) continue;
-      if (interpreter.interpret(line, number, block)) return true;
+      const bool moved = interpreter.interpret(line, number, block);
+      if (macro) interpreter.positions(positions);
+      if (moved) return true;
     }
     return false;
   }

@@ -1,4 +1,5 @@
-// G-code reader: FreeCAD/LinuxCNC and Siemens 840D dialects, streamed line by line into motion blocks.
+// G-code reader: FreeCAD/LinuxCNC, grbl, Fanuc, Haas and Siemens 840D dialects (dialect.hpp), streamed line by
+// line into motion blocks.
 //
 // Understood: G0 G1 G2 G3 (IJK, LinuxCNC R, Siemens CR=), G4 dwell, G17 G18 G19, G20 G21 (840D G70 G71
 // G700 G710), G90 G91,
@@ -15,6 +16,7 @@
 #pragma once
 
 #include "common/error.hpp"
+#include "kinematics/dialect.hpp"
 
 #include <Eigen/Core>
 
@@ -90,15 +92,18 @@ struct Block {
 };
 
 struct ReaderOptions {
-  bool refuseUnknownWords = false;   // true: an unknown word is a ParseError
+  bool refuseUnknownWords = false;   // true: any word not understood is a ParseError
+  // A word not understood that would move the machine (an unknown G code, a U V W axis, a frame) stops the
+  // reading at its line, naming it; true skips it and counts it, as any other unknown word.
+  bool skipUnknownMotion = false;
   bool feedInMmPerSecond = false;    // FreeCAD Path commands store F in mm/s; G-code files use mm/min
   Eigen::Vector3d startPosition = Eigen::Vector3d::Zero();  // where the machine is before the first move
   double arcRadiusTolerance = 0.01;  // mm (plus 0.1 % of the radius) between the start and end radius of an arc
-  // LinuxCNC's language where a line uses it: parameters (#1, #<name>, #<_global>), [expressions] and O-word
-  // subroutines, loops and conditions. False for an 840D program (simulate() sets it from the machine).
-  bool linuxcncLanguage = true;
-  std::vector<std::string> subroutineFolders;  // searched in order for NAME.ngc of `o<name> call`
-  long maxLoopIterations = 10'000'000;  // turns of one O-word loop before the reading stops, naming it
+  // The dialect (its language: LinuxCNC's parameters and O-words, Fanuc's Macro B and M98 subprograms, the
+  // 840D's words) and the control's power-on state (dialect.hpp); simulate() takes them from the machine.
+  ControlConventions conventions;
+  std::vector<std::string> subroutineFolders;  // searched in order for subprogram files (NAME.ngc, O1234.nc)
+  long maxLoopIterations = 10'000'000;  // turns of one loop before the reading stops, naming it
 };
 
 struct ReaderStats {

@@ -18,6 +18,41 @@ bool isFrameKeyword(std::string_view name) {
 }
 }  // namespace
 
+Interpreter::Interpreter(const ReaderOptions& options)
+    : options_(options), position_(options.startPosition),
+      retractToR_(options.conventions.dialect == Dialect::LinuxCnc || options.conventions.dialect == Dialect::Grbl) {
+  workOffsets_.fill(options.conventions.workOffset);
+}
+
+Eigen::Vector3d Interpreter::frame() const {
+  return workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_;
+}
+
+Eigen::Vector3d Interpreter::fromProgram(int axis, double value) const {
+  Eigen::Vector3d p = position_;
+  p[axis] = value * unit_ + frame()[axis];
+  return p;
+}
+
+void Interpreter::positions(double (*out)[3]) const {
+  const Eigen::Vector3d work = (position_ - frame()) / unit_;
+  const Eigen::Vector3d machine = (position_ + options_.conventions.workOffset) / unit_;
+  for (int a = 0; a < 3; ++a) {
+    out[0][a] = out[2][a] = work[a];
+    out[1][a] = machine[a];
+  }
+}
+
+double Interpreter::dimension(const Word& w) const {
+  if (!options_.conventions.leastIncrementInput || w.text.find('.') != std::string_view::npos) return w.value;
+  return w.value * (unit_ == 1.0 ? kLeastIncrementMm : kLeastIncrementInch);
+}
+
+double Interpreter::dwellSeconds(const LineWords& w) const {
+  if (!isFanucFamily(options_.conventions.dialect) || w.pHasPoint) return w.pWord;
+  return w.pWord / 1000.0;  // Fanuc: P in ms (no point); Haas: P1000 ms, P1.0 s
+}
+
 bool Interpreter::takeQueued(Block& block) {
   if (queued_.empty()) return false;
   block = queued_.front();
@@ -36,7 +71,7 @@ bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
 bool Interpreter::collect(const Line& line, LineWords& words) {
   for (const Keyword& k : line.keywords) {
     if (isFrameKeyword(k.name)) {
-      unknown(k.name);  // frames are not simulated: the line is skipped
+      unknownMotion(k.name, "a frame that shifts or turns the coordinates");  // when skipped: the whole line
       return false;
     }
     keyword(k, words);
@@ -49,24 +84,32 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
         const int a = w.letter - 'X';
         if (words.hasAxis[a]) throw ParseError(lineNumber_, std::string("axis ") + w.letter + " given twice");
         words.hasAxis[a] = true;
-        words.axis[a] = w.value;
+        words.axis[a] = dimension(w);
         break;
       }
       case 'I': case 'J': case 'K': {
         const int a = w.letter - 'I';
         words.hasOffset[a] = true;
-        words.offset[a] = w.value;
+        words.offset[a] = dimension(w);
+        if (a == 2) words.kCount = w.value;
         break;
       }
-      case 'A': case 'B': case 'C': rotaryWord(w.letter - 'A', w.value, w.text, words); break;
+      case 'A': case 'B': case 'C': rotaryWord(w.letter - 'A', dimension(w), w.text, words); break;
       case 'F': words.fWord = w.value; words.hasFeed = true; break;
-      case 'R': words.radiusWord = w.value; words.hasRadius = true; break;
-      case 'P': words.pWord = w.value; words.hasP = true; break;
-      case 'Q': words.qWord = w.value; words.hasQ = true; break;
+      case 'R': words.radiusWord = dimension(w); words.hasRadius = true; break;
+      case 'P':
+        words.pWord = w.value;
+        words.hasP = true;
+        words.pHasPoint = w.text.find('.') != std::string_view::npos;
+        break;
+      case 'Q': words.qWord = dimension(w); words.hasQ = true; break;
+      case 'E': words.eWord = w.value; words.hasE = true; break;
+      case 'L': words.lWord = w.value; words.hasL = true; break;
       case 'M': mWord(w); break;
       case 'T': ++stats_.toolChanges; break;
       case 'S': spindle_ = w.value; break;
-      case 'N': case 'D': case 'H': case 'L': break;  // no effect on the motion
+      case 'N': case 'D': case 'H': break;  // no effect on the motion
+      case 'U': case 'V': case 'W': unknownMotion(w.text, "an axis the simulator does not have"); break;
       default: unknown(w.text);
     }
   }
@@ -86,7 +129,9 @@ void Interpreter::applyModes(const LineWords& w) {
     }
   }
   if (w.dwell) {
-    const double seconds = w.pWord >= 0.0 ? w.pWord : w.hasFeed ? w.fWord : -1.0;  // LinuxCNC G4 P, Siemens G4 F
+    // LinuxCNC G4 P (s), Siemens G4 F (s), Fanuc G4 P (ms) or X (s)
+    const bool fanucX = isFanucFamily(options_.conventions.dialect) && w.hasAxis[0] && !w.hasP;
+    const double seconds = w.pWord >= 0.0 ? dwellSeconds(w) : fanucX ? w.axis[0] : w.hasFeed ? w.fWord : -1.0;
     if (w.hasP && w.pWord < 0.0)
       throw ParseError(lineNumber_, "G4 P" + number(w.pWord) + ": a dwell lasts 0 s or more; write G4 P<seconds>");
     if (!(seconds >= 0.0)) throw ParseError(lineNumber_, "G4 dwell needs its time: G4 P<seconds> (or F on the 840D)");
@@ -100,6 +145,14 @@ void Interpreter::applyModes(const LineWords& w) {
       throw ParseError(lineNumber_, "G64 Q" + number(w.qWord) + ": the naive-CAM tolerance is 0 or more (mm)");
     mergeTolerance_ = (w.hasQ ? w.qWord : std::max(0.0, w.pWord)) * unit_;
   }
+  if (w.offsetSetting != 0) setOffset(w);
+  if (w.lookAhead != 0) {
+    // On (G05.1 Q1, G05 P10000, G08 P1, G187 with or without P1…P3): corners rounded within E or the machine's
+    // tolerance; off (Q0, P0): the control's plain continuous mode.
+    const bool on = w.lookAhead == 1870 || (w.lookAhead == 51 ? w.hasQ && w.qWord != 0.0 : w.hasP && w.pWord != 0.0);
+    pathMode_ = on ? PathMode::Rounding : PathMode::Continuous;
+    tolerance_ = on ? (w.hasE && w.eWord > 0.0 ? w.eWord * unit_ : options_.conventions.smoothingTolerance) : 0.0;
+  }
   if (w.newMotion >= 0) motion_ = w.newMotion;
   // G0-G3 and G80 end a canned cycle (one modal group); a cycle's G word starts one, from the Z it is at.
   if (w.newMotion >= 0 || w.cancelCycle) cycle_ = 0;
@@ -110,8 +163,10 @@ void Interpreter::applyModes(const LineWords& w) {
 }
 
 bool Interpreter::makeBlock(const LineWords& w, Block& block) {
+  if (w.offsetSetting != 0) return false;
   if (w.rigidTap) return rigidTapBlocks(w, block);
-  if (cycle_ != 0 && (w.cycle > 0 || w.anyAxis())) return cycleBlocks(w, block);
+  if (w.home != 0) return homeBlocks(w, block);
+  if (cycle_ != 0 && (w.cycle > 0 || w.anyAxis())) return repeatedCycle(w, block);
   if ((w.newMotion == 2 || w.newMotion == 3) && !w.anyAxis() && !w.anyOffset() && !w.hasRadius)
     throw ParseError(lineNumber_, "G" + std::to_string(w.newMotion) + " without an end point or a centre: an arc "
                                   "needs X/Y/Z and I/J/K (or R); the line moves nothing");
@@ -121,8 +176,13 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   if (motion_ < 0) throw ParseError(lineNumber_, "coordinates before any motion mode: start with G0 or G1");
 
   Eigen::Vector3d target = position_;
-  for (int a = 0; a < 3; ++a)
-    if (w.hasAxis[a]) target[a] = absolute_ ? w.axis[a] * unit_ : position_[a] + w.axis[a] * unit_;
+  for (int a = 0; a < 3; ++a) {
+    if (!w.hasAxis[a]) continue;
+    if (w.machineCoordinates)  // G53: absolute machine coordinates, this line only
+      target[a] = w.axis[a] * unit_ - options_.conventions.workOffset[a];
+    else
+      target[a] = absolute_ ? fromProgram(a, w.axis[a])[a] : position_[a] + w.axis[a] * unit_;
+  }
   Eigen::Vector3d rotaryTarget = rotary_;
   for (int a = 0; a < 3; ++a)
     if (w.hasRotary[a]) rotaryTarget[a] = absolute_ ? w.rotary[a] : rotary_[a] + w.rotary[a];
@@ -200,30 +260,60 @@ Block Interpreter::straightBlock(const Eigen::Vector3d& target, bool rapid) cons
   return block;
 }
 
-// LinuxCNC's canned cycles (its G-code reference, "G81 Drilling Cycle" and the following sections): the tool
-// goes up to R if below it, across to X Y, down to R, then drills to Z (G81, G82 with a dwell of P s, G86; G83
-// in pecks of Q, back to R after each and rapidly down to 0.254 mm above the last depth; G73 in pecks of Q
-// breaking the chip by a 0.254 mm retract; G85, G89 and G84 feed back out), and retracts to R (G99) or to the
-// Z the cycles started from if higher (G98).
-bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
+void Interpreter::queueMove(const Eigen::Vector3d& target, bool rapid) {
+  if ((target - position_).squaredNorm() == 0.0) return;
+  queued_.push_back(straightBlock(target, rapid));
+  position_ = target;
+  ++stats_.motionBlocks;
+}
+
+bool Interpreter::repeatedCycle(const LineWords& w, Block& block) {
+  // Repeats: L on LinuxCNC and a Haas, K on a Fanuc (L on older ones); K0 / L0 store the cycle's data only.
+  const Dialect dialect = options_.conventions.dialect;
+  double repeats = 1.0;
+  std::string word = "L";
+  if (dialect == Dialect::Fanuc && w.hasOffset[2]) {
+    repeats = w.kCount;
+    word = "K";
+  } else if (w.hasL) {
+    repeats = w.lWord;
+  }
+  if (!(repeats >= 0.0 && repeats <= 10000.0 && std::abs(repeats - std::round(repeats)) < 1e-6))
+    throw ParseError(lineNumber_, "G" + std::to_string(cycle_) + " " + word + number(repeats) +
+                                      ": a cycle's repeat count is a whole number from 0 to 10000");
+  for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
+  return takeQueued(block);
+}
+
+// Canned cycles as LinuxCNC's G-code reference ("G81 Drilling Cycle" and the following sections) and Fanuc's
+// manual describe them: the tool goes up to R if below it, across to X Y, down to R, then drills to Z (G81,
+// G82 with a dwell of P, G86 and G76 out at rapid; G83 in pecks of Q, back to R after each and rapidly down to
+// 0.254 mm above the last depth; G73 in pecks of Q breaking the chip by a 0.254 mm retract; G84, G74, G85,
+// G89 feed back out; G88's manual retract taken as a rapid; a Fanuc's G87 back boring from R below the hole up
+// to Z), and retracts to R (G99) or to the Z the cycles started from if higher (G98). In G91, X Y move from
+// the last hole, R from the starting Z and Z from R.
+bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   const std::string name = "G" + std::to_string(cycle_);
   if (plane_ != 17) throw ParseError(lineNumber_, name + " in G" + std::to_string(plane_) + ": canned cycles are read in "
                                                   "the XY plane (G17) only");
-  if (!absolute_) throw ParseError(lineNumber_, name + " in G91: canned cycles are read in absolute coordinates (G90)");
   if (inverseTime_) throw ParseError(lineNumber_, name + " in G93: give the cycle's feed per minute (G94)");
-  if (w.hasRadius) cycleR_ = w.radiusWord * unit_;
-  if (w.hasAxis[2]) cycleZ_ = w.axis[2] * unit_;
-  if (w.hasQ) cycleQ_ = w.qWord * unit_;
+  const double frameZ = frame().z();
+  if (first && w.hasRadius) cycleR_ = absolute_ ? w.radiusWord * unit_ + frameZ : cycleStartZ_ + w.radiusWord * unit_;
+  if (first && w.hasAxis[2]) cycleZ_ = absolute_ ? w.axis[2] * unit_ + frameZ : cycleR_ + w.axis[2] * unit_;
+  if (first && w.hasQ) cycleQ_ = std::abs(w.qWord) * unit_;
   if (w.hasP && !(w.pWord >= 0.0))
     throw ParseError(lineNumber_, name + " P" + number(w.pWord) + ": a dwell lasts 0 s or more; write P<seconds>");
-  if (w.hasP) cycleP_ = w.pWord;
+  if (w.hasP) cycleP_ = dwellSeconds(w);
   if (!std::isfinite(cycleR_) || !std::isfinite(cycleZ_))
     throw ParseError(lineNumber_, name + " needs R (the retract plane) and Z (the hole's bottom), given on its line "
                                          "or an earlier cycle's");
-  if (cycleZ_ > cycleR_)
+  const bool backBoring = cycle_ == 87;
+  if (!backBoring && cycleZ_ > cycleR_)
     throw ParseError(lineNumber_, name + ": the bottom Z" + number(cycleZ_) + " is above the retract plane R" +
                                       number(cycleR_));
-  const bool pecks = cycle_ == 83 || cycle_ == 73;
+  // A Fanuc or a Haas drills G83/G73 with Q0 in one pass (CAM posts write Q0 for "no peck"); LinuxCNC refuses it.
+  const bool fanucQ0 = isFanucFamily(options_.conventions.dialect) && cycleQ_ == 0.0;
+  const bool pecks = (cycle_ == 83 || cycle_ == 73) && !fanucQ0;
   if (pecks && !(cycleQ_ > 0.0))
     throw ParseError(lineNumber_, name + " needs Q > 0: the depth of each peck (mm)");
   if (pecks && (cycleR_ - cycleZ_) / cycleQ_ > 1e5)
@@ -231,18 +321,13 @@ bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
                                       " is over 100,000 pecks: give a larger Q");
   if (feed_ <= 0.0)
     throw ParseError(lineNumber_, name + " drills at F0: program a positive F before the cycle");
-  const double x = w.hasAxis[0] ? w.axis[0] * unit_ : position_.x();
-  const double y = w.hasAxis[1] ? w.axis[1] * unit_ : position_.y();
-  const double clear = retractToR_ ? cycleR_ : std::max(cycleStartZ_, cycleR_);
+  double x = position_.x(), y = position_.y();
+  if (w.hasAxis[0]) x = absolute_ ? fromProgram(0, w.axis[0]).x() : x + w.axis[0] * unit_;
+  if (w.hasAxis[1]) y = absolute_ ? fromProgram(1, w.axis[1]).y() : y + w.axis[1] * unit_;
+  const double clear = retractToR_ && !backBoring ? cycleR_ : std::max(cycleStartZ_, cycleR_);
   constexpr double kPeckClearance = 0.254;  // mm: LinuxCNC's 0.010 inch above the last peck, or back for G73
-  auto go = [&](double tx, double ty, double tz, bool rapid) {
-    const Eigen::Vector3d target(tx, ty, tz);
-    if ((target - position_).squaredNorm() == 0.0) return;
-    queued_.push_back(straightBlock(target, rapid));
-    position_ = target;
-    ++stats_.motionBlocks;
-  };
-  if (position_.z() < cycleR_) go(position_.x(), position_.y(), cycleR_, true);
+  auto go = [&](double tx, double ty, double tz, bool rapid) { queueMove(Eigen::Vector3d(tx, ty, tz), rapid); };
+  if (position_.z() < cycleR_ && !backBoring) go(position_.x(), position_.y(), cycleR_, true);
   go(x, y, position_.z(), true);
   go(x, y, cycleR_, true);
   if (pecks) {
@@ -256,10 +341,44 @@ bool Interpreter::cycleBlocks(const LineWords& w, Block& block) {
   } else {
     go(x, y, cycleZ_, false);
   }
-  if (cycle_ == 82 || cycle_ == 86 || cycle_ == 89) stats_.dwellTime += cycleP_;
-  if (cycle_ == 84 || cycle_ == 85 || cycle_ == 89) go(x, y, cycleR_, false);
+  if (cycle_ == 82 || cycle_ == 86 || cycle_ == 89 || cycle_ == 88 || cycle_ == 76) stats_.dwellTime += cycleP_;
+  if (cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || cycle_ == 89) go(x, y, cycleR_, false);
   go(x, y, clear, true);
+  return true;
+}
+
+bool Interpreter::homeBlocks(const LineWords& w, Block& block) {
+  if (!w.anyAxis()) return false;  // G28 alone: LinuxCNC moves all axes home, a Fanuc none; neither is timed
+  Eigen::Vector3d through = position_;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasAxis[a]) through[a] = absolute_ ? fromProgram(a, w.axis[a])[a] : position_[a] + w.axis[a] * unit_;
+  Eigen::Vector3d home = through;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasAxis[a]) home[a] = -options_.conventions.workOffset[a];  // machine zero, the reference point
+  queueMove(through, true);
+  queueMove(home, true);
   return takeQueued(block);
+}
+
+void Interpreter::setOffset(const LineWords& w) {
+  if (w.offsetSetting == 92) {  // the current position becomes the programmed one
+    for (int a = 0; a < 3; ++a)
+      if (w.hasAxis[a]) shift_[a] = position_[a] - (workOffsets_[static_cast<size_t>(workOffset_)][a] -
+                                                    options_.conventions.workOffset[a]) - w.axis[a] * unit_;
+    return;
+  }
+  const long l = std::lround(w.lWord), p = std::lround(w.pWord);
+  if (!w.hasL || (l != 2 && l != 20))
+    return unknownMotion("G10 L" + number(w.lWord), "an offset table the simulator does not keep (G10 L2 and L20 are read)");
+  if (!w.hasP || p < 0 || p > 9)
+    throw ParseError(lineNumber_, "G10 L" + std::to_string(l) + " needs P0 to P9: the work offset to set (P0 the active)");
+  const size_t entry = static_cast<size_t>(p == 0 ? workOffset_ : p);
+  for (int a = 0; a < 3; ++a) {
+    if (!w.hasAxis[a]) continue;
+    const double value = w.axis[a] * unit_;
+    // L2: the offset itself (machine coordinates); L20: so that the tool is at the value in that frame
+    workOffsets_[entry][a] = l == 2 ? value : position_[a] + options_.conventions.workOffset[a] - shift_[a] - value;
+  }
 }
 
 bool Interpreter::rigidTapBlocks(const LineWords& w, Block& block) {
@@ -270,18 +389,21 @@ bool Interpreter::rigidTapBlocks(const LineWords& w, Block& block) {
   if (!absolute_) throw ParseError(lineNumber_, "G33.1 in G91: rigid tapping is read in absolute coordinates (G90)");
   Eigen::Vector3d bottom = position_;
   for (int a = 0; a < 3; ++a)
-    if (w.hasAxis[a]) bottom[a] = w.axis[a] * unit_;
+    if (w.hasAxis[a]) bottom[a] = fromProgram(a, w.axis[a])[a];
   const Eigen::Vector3d start = position_;
   const double feed = feed_;
   feed_ = spindle_ * w.offset[2] * unit_ / 60.0;  // the axis follows the spindle: pitch per turn
-  for (const Eigen::Vector3d& target : {bottom, start}) {
-    if ((target - position_).squaredNorm() == 0.0) continue;
-    queued_.push_back(straightBlock(target, false));
-    position_ = target;
-    ++stats_.motionBlocks;
-  }
+  for (const Eigen::Vector3d& target : {bottom, start}) queueMove(target, false);
   feed_ = feed;
   return takeQueued(block);
+}
+
+void Interpreter::unknownMotion(std::string_view word, std::string_view what) {
+  if (!options_.skipUnknownMotion && !options_.refuseUnknownWords)
+    throw ParseError(lineNumber_, "'" + std::string(word) + "' (" + std::string(what) + ") would move the machine in a "
+                                 "way the simulator does not read, so the program stops here; to time it without "
+                                 "that word, skip unknown words (hsm-feedsim --skip-unknown, skip_unknown=True)");
+  unknown(word);
 }
 
 void Interpreter::unknown(std::string_view word) {
@@ -317,20 +439,39 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
       pathMode_ = PathMode::Rounding;
       tolerance_ = roundingTolerance_;
       break;
-    // Accepted without effect on the simulated motion: cutter and length compensation, work offsets,
-    // canned-cycle cancel, feed per minute, exact-stop windows, return modes, machine coordinates.
     case 930: inverseTime_ = true; break;
     case 940: inverseTime_ = false; break;
     case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 890: words.cycle = int(code / 10); break;
+    case 740: case 760: case 870: case 880:  // Fanuc's reverse tapping, fine boring, back boring, boring by hand
+      if (isFanucFamily(options_.conventions.dialect) || code == 880) {
+        words.cycle = int(code / 10);
+      } else {
+        unknownMotion(w.text, "a canned cycle this dialect does not have as read here");
+      }
+      break;
     case 800: words.cancelCycle = true; break;
     case 331: words.rigidTap = true; break;
     case 980: retractToR_ = false; break;
     case 990: retractToR_ = true; break;
-    case 400: case 410: case 420: case 430: case 431: case 490: case 530: case 540: case 550: case 560:
-    case 570: case 580: case 590: case 6010: case 6020: case 6030:
-    case 150: case 160: case 5000: case 5010:
+    case 280: case 300: words.home = int(code / 10); break;
+    case 530: words.machineCoordinates = true; break;
+    case 540: case 550: case 560: case 570: case 580: case 590: workOffset_ = int(code / 10) - 53; break;
+    case 591: case 592: case 593: workOffset_ = int(code - 584); break;  // G59.1 … G59.3: entries 7 … 9
+    case 100: words.offsetSetting = 10; break;
+    case 920: words.offsetSetting = 92; break;
+    case 921: case 922: shift_.setZero(); break;  // G92.1 cancels, G92.2 suspends (not restored: G92.3 unread)
+    case 434: case 2340: toolTip_ = true; break;  // Fanuc G43.4, Haas G234: tool centre point
+    case 490: toolTip_ = false; break;
+    case 50: case 51: case 80: case 1870: words.lookAhead = int(code); break;
+    // Accepted without effect on the simulated motion: cutter and length compensation (the path is timed as
+    // programmed, not offset by the tool's radius), extended work offsets (G54.1 P: taken as G54), cancels of
+    // scaling, mirror, rotation and polar coordinates, exact-stop windows, 840D frame suppression.
+    case 400: case 410: case 420: case 430: case 431: case 1430: case 541: case 500: case 501: case 690: case 150:
+    case 6010: case 6020: case 6030: case 5000: case 5010: case 1030: case 1000:
       break;
-    default: unknown(w.text);
+    case 160: unknownMotion(w.text, "polar coordinates"); break;
+    case 680: case 682: case 531: case 681: unknownMotion(w.text, "a rotated or tilted working plane (read: G43.4, G234)"); break;
+    default: unknownMotion(w.text, "a G code the simulator does not know");
   }
 }
 
@@ -468,7 +609,7 @@ void Interpreter::arc(Block& block, const LineWords& words) {
     if (!(hasOffset[u] || hasOffset[v]))
       throw ParseError(lineNumber_, "arc without centre: give I/J/K (or R / CR=) for the active plane G" +
                                        std::to_string(plane_));
-    for (int a : {u, v}) centre[a] = arcCentreAbsolute_ ? offset[a] * unit_ : s[a] + offset[a] * unit_;
+    for (int a : {u, v}) centre[a] = arcCentreAbsolute_ ? offset[a] * unit_ + frame()[a] : s[a] + offset[a] * unit_;
   }
   centre[n] = s[n];
   const Eigen::Vector3d rs = s - centre, re = Eigen::Vector3d(e[u] - centre[u], e[v] - centre[v], 0.0);

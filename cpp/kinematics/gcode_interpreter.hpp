@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <deque>
 #include <limits>
 #include <string_view>
@@ -15,13 +16,19 @@ namespace hsm::kinematics::detail {
 // What one line says, before it is applied to the modal state.
 struct LineWords {
   int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3
-  int cycle = 0;       // 73, 81…86, 89 when the line has that canned cycle's G word
+  int cycle = 0;       // 73, 74, 76, 81…89 when the line has that canned cycle's G word
+  int home = 0;        // 28 or 30: back to the reference point through the line's point
+  bool machineCoordinates = false;  // G53: the line's coordinates are the machine's
+  int lookAhead = 0;                // G05.1 (51), G05 (50), G08 (80), G187 (1870): a look-ahead mode
+  int offsetSetting = 0;            // 10 (G10 L2/L20), 92 (G92): the line sets an offset, it does not move
   bool cancelCycle = false;  // G80
   bool exactStopHere = false, dwell = false, g64 = false, rigidTap = false;
   bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
-  double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0;
-  bool hasRadius = false, hasFeed = false, hasP = false, hasQ = false;
+  double kCount = 0.0;  // K as written (a Fanuc cycle's repeats), without least-increment scaling
+  double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0, eWord = 0.0, lWord = 0.0;
+  bool hasRadius = false, hasFeed = false, hasP = false, hasQ = false, hasE = false, hasL = false;
+  bool pHasPoint = false;  // P written with a decimal point (a Fanuc-family dwell in s, else in ms)
   bool hasRotary[3] = {false, false, false}, hasVector[3] = {false, false, false};
   double rotary[3] = {0, 0, 0}, vector[3] = {0, 0, 0};  // A B C (deg), A3 B3 C3
 
@@ -34,13 +41,15 @@ struct LineWords {
 class Interpreter {
 public:
   // LinuxCNC's interpreter starts in G99 (a canned cycle retracts to R), as rs274 shows; elsewhere G98.
-  explicit Interpreter(const ReaderOptions& options)
-      : options_(options), position_(options.startPosition), retractToR_(options.linuxcncLanguage) {}
+  explicit Interpreter(const ReaderOptions& options);
 
   // Applies one line (number `lineNumber`); true when it produced a motion block.
   bool interpret(const Line& line, long lineNumber, Block& block);
   // The next block a line made beyond its first (a canned cycle's moves), if any: taken before the next line.
   bool takeQueued(Block& block);
+  // Where the tool is, in program units: the block's end and the work position (rows 0 and 2, in the active
+  // frame) and the machine position (row 1), X Y Z each.
+  void positions(double (*out)[3]) const;
   ReaderStats& stats() { return stats_; }
   const ReaderStats& stats() const { return stats_; }
 
@@ -53,6 +62,22 @@ private:
   bool makeBlock(const LineWords& words, Block& block);
 
   void unknown(std::string_view word);
+  // A word not understood that would move the machine: a ParseError unless the options skip it.
+  void unknownMotion(std::string_view word, std::string_view what);
+  // A dimension word's value in program units: a number without a point counts least increments where the
+  // control reads it so (dialect.hpp).
+  double dimension(const Word& w) const;
+  // A dwell's P in seconds: LinuxCNC's and the 840D's in s; a Fanuc's and a Haas's in ms without a point.
+  double dwellSeconds(const LineWords& words) const;
+  // G28 / G30: rapid to the line's point (the intermediate point), then to the reference point on the axes
+  // named; queued, the first in `block`.
+  bool homeBlocks(const LineWords& words, Block& block);
+  // G10 L2 / L20 (a work offset's table entry) and G92 (a shift of the coordinates).
+  void setOffset(const LineWords& words);
+  // Where the program's coordinates put the tool: a programmed point in the active frame, as a position.
+  Eigen::Vector3d fromProgram(int axis, double value) const;
+  // Each repeat of a canned cycle (K or L), its X Y moved by the line's X Y in G91.
+  bool repeatedCycle(const LineWords& words, Block& block);
   void gWord(const Word& w, LineWords& words);
   void mWord(const Word& w);
   void keyword(const Keyword& k, LineWords& words);
@@ -61,11 +86,14 @@ private:
   void cycle832(std::string_view arguments);
   void arc(Block& block, const LineWords& words);
   // A canned cycle's moves at the line's X Y (LinuxCNC's semantics, G17, G90): queued, the first in `block`.
-  bool cycleBlocks(const LineWords& words, Block& block);
+  // One hole: its moves queued (`first`: the line's R, Z and Q are taken, for the holes after it they stand).
+  bool cycleBlocks(const LineWords& words, bool first);
   // G33.1 rigid tapping: in to the line's end point at the spindle's speed times the pitch K, and back out to
   // where it started (LinuxCNC's RIGID_TAP); queued, the first in `block`.
   bool rigidTapBlocks(const LineWords& words, Block& block);
   Block straightBlock(const Eigen::Vector3d& target, bool rapid) const;
+  // Queues a straight move from where the tool is to `target` (none when it is there).
+  void queueMove(const Eigen::Vector3d& target, bool rapid);
   void rotaryWord(int axis, double value, std::string_view text, LineWords& words);
   // The orientation at the end of the line (A3 B3 C3, a component not given is 0), unit; throws on zero length.
   Eigen::Vector3d orientationTarget(const LineWords& words) const;
@@ -100,6 +128,13 @@ private:
   bool retractToR_ = false;
   double cycleR_ = std::numeric_limits<double>::quiet_NaN(), cycleZ_ = std::numeric_limits<double>::quiet_NaN();
   double cycleQ_ = 0.0, cycleP_ = 0.0, cycleStartZ_ = 0.0;
+  // Work offsets (G54…G59.3: entries 1…9, in machine coordinates), the one in use, and G92's shift. Positions
+  // are kept in the frame of the machine file's work offset, so that a program that never changes offsets
+  // reads in its own coordinates.
+  std::array<Eigen::Vector3d, 10> workOffsets_{};
+  int workOffset_ = 1;
+  Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();  // G92
+  Eigen::Vector3d frame() const;  // the active frame's origin in the positions' frame
   std::deque<Block> queued_;
 };
 

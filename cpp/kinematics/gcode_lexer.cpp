@@ -59,10 +59,36 @@ void LineSource::refill() {
   if (got == 0 || !input_) eof_ = true;
 }
 
+namespace {
+bool has(std::string_view raw, std::string_view what) { return raw.find(what) != std::string_view::npos; }
+
+}  // namespace
+
+// A program in a language the reader does not take is refused at once, in one line that says what it is,
+// instead of at its first odd word (or worse, read as something it is not).
+void refuseOtherLanguages(std::string_view raw, long number) {
+  const char* what = nullptr;
+  if (has(raw, "BEGIN PGM")) {
+    what = "a Heidenhain conversational (Klartext) program ('BEGIN PGM')";
+  } else if ((has(raw, "G54 I") && !has(raw, "G54 I-")) || (has(raw, "G74 ") && has(raw, " L1") && !has(raw, "R")) ||
+             has(raw, "A5=") || has(raw, "B5=")) {
+    what = "a Heidenhain MillPlus program (G54 I.., G74 .. L1 home moves, G7 A5= B5= tilted planes)";
+  } else if (has(raw, "G56 ") && has(raw, " H") && !has(raw, "G43")) {
+    what = "an Okuma OSP program (G56 .. H: Okuma's tool length offset)";
+  }
+  if (what != nullptr)
+    throw ParseError(number, std::string("this is ") + what + ": the simulator reads ISO G-code (LinuxCNC, grbl, "
+                             "Fanuc, Haas) and Siemens 840D programs; post the part for one of them");
+}
+
 const char* afterComment(const char* p, const char* end, long line) {
-  const char* close = static_cast<const char*>(std::memchr(p, ')', static_cast<size_t>(end - p)));
-  if (!close) throw ParseError(line, "comment '(' is not closed: add ')'");
-  return close + 1;
+  // Nested parentheses stay inside the comment: CAM posts write "(#508= (MILL_.25_PROFILE))".
+  int depth = 0;
+  for (; p < end; ++p) {
+    if (*p == '(') ++depth;
+    if (*p == ')' && --depth == 0) return p + 1;
+  }
+  throw ParseError(line, "comment '(' is not closed: add ')'");
 }
 
 void Line::parse(std::string_view raw, long number) {

@@ -35,7 +35,15 @@ private:
   bool eof_ = false;
 };
 
-// Past the comment that opens at p ('('), up to its ')'; ParseError naming `line` when it is not closed.
+inline constexpr long kDialectLines = 40;  // a program in another language says so in its first lines
+
+// A line of a program in a language the reader does not take (Heidenhain conversational, MillPlus, Okuma OSP):
+// a ParseError that says what it is, at once, instead of at its first odd word (or worse, read as something
+// it is not). Given the first kDialectLines lines.
+void refuseOtherLanguages(std::string_view raw, long number);
+
+// Past the comment that opens at p ('('), up to the ')' that closes it (nested ones included); ParseError
+// naming `line` when it is not closed.
 const char* afterComment(const char* p, const char* end, long line);
 
 // ---------------------------------------------------------------------------------------------------------

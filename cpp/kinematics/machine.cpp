@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -225,6 +226,32 @@ void checkRotaryAxes(const MachineModel& m) {
 
 static MachineModel machineFromJsonChecked(const std::string& source, const std::string& origin);
 
+namespace {
+Dialect defaultDialect(ControllerKind controller) {
+  switch (controller) {
+    case ControllerKind::Siemens840D: return Dialect::Siemens840D;
+    case ControllerKind::Grbl: return Dialect::Grbl;
+    default: return Dialect::LinuxCnc;
+  }
+}
+
+ControlConventions conventions(const json& root, ControllerKind controller, const std::string& origin) {
+  ControlConventions c;
+  c.dialect = dialectFromName(text(root, "dialect", origin, dialectName(defaultDialect(controller))), origin);
+  c.powerOnCodes = text(root, "power_on_codes", origin, "");
+  for (const char ch : c.powerOnCodes)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == ' ' || ch == '.' || ch == '-'))
+      bad(origin, "\"power_on_codes\" holds G words such as \"G0 G17 G90 G94 G21 G98\", not '" + std::string(1, ch) + "'");
+  const std::string decimal = text(root, "decimal_point", origin, "whole-units");
+  if (decimal != "whole-units" && decimal != "least-increment")
+    bad(origin, "\"decimal_point\": \"" + decimal + "\" is unknown: \"whole-units\" (X100 is 100 mm) or "
+                "\"least-increment\" (X100 is 0.1 mm, a Fanuc with parameter DPI off)");
+  c.leastIncrementInput = decimal == "least-increment";
+  if (root.contains("work_offset_mm")) c.workOffset = vector3(root, "work_offset_mm", origin);
+  return c;
+}
+}  // namespace
+
 MachineModel machineFromJson(const std::string& source, const std::string& origin) {
   try {
     return machineFromJsonChecked(source, origin);
@@ -276,6 +303,8 @@ static MachineModel machineFromJsonChecked(const std::string& source, const std:
   m.toolTipProgrammed =
       m.hasRotaryAxes() && flag(root, "tool_tip_programmed", origin, m.controller == ControllerKind::LinuxCNC);
   m.rotaryPlanner = rotaryPlanner(root, m, origin);
+  m.conventions = conventions(root, m.controller, origin);
+  m.conventions.smoothingTolerance = m.cornerTolerance;
   if (root.contains("kinematics")) {
     const std::string said = root["kinematics"].is_string() ? root["kinematics"].get<std::string>() : "?";
     if (said != m.kinematicsName())
@@ -308,6 +337,11 @@ std::string machineToJson(const MachineModel& m) {
                {"jerk_limited_by_default", m.jerkLimitedByDefault},
                {"arc_tolerance_mm", m.arcTolerance},
                {"compressor_path_limit_mm", m.compressorPathLimit}};
+  root["dialect"] = dialectName(m.conventions.dialect);
+  if (!m.conventions.powerOnCodes.empty()) root["power_on_codes"] = m.conventions.powerOnCodes;
+  root["decimal_point"] = m.conventions.leastIncrementInput ? "least-increment" : "whole-units";
+  const Eigen::Vector3d& offset = m.conventions.workOffset;
+  root["work_offset_mm"] = {offset.x(), offset.y(), offset.z()};
   if (m.hasRotaryAxes()) {
     root["kinematics"] = m.kinematicsName();
     root["tool_axis"] = {m.toolAxis.x(), m.toolAxis.y(), m.toolAxis.z()};

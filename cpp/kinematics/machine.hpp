@@ -1,6 +1,8 @@
 // Machine models as data: what a controller and its axes allow. Read from JSON (resources/machines/).
 #pragma once
 
+#include "kinematics/dialect.hpp"
+
 #include <Eigen/Core>
 
 #include <string>
@@ -68,6 +70,9 @@ struct MachineModel {
   // kinematics such as xyzac-trt-kins); the 840D's programs switch it with TRAORI / TRAFOOF.
   bool toolTipProgrammed = false;
   RotaryPlanner rotaryPlanner = RotaryPlanner::JointSpace;  // how blocks that turn rotary axes are planned
+  // The program's dialect and what the control assumes where a program says nothing (dialect.hpp); the
+  // dialect follows the controller unless the file names one (a Fanuc or Haas control plans as `controller`).
+  ControlConventions conventions{Dialect::Siemens840D, "", false, Eigen::Vector3d::Zero(), 0.01};
 
   bool hasRotaryAxes() const { return !rotaryAxes.empty(); }
   // "table-table", "head-table", "head-head", "table" or "head" (4 axes), "" (3 axes).

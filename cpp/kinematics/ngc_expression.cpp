@@ -7,9 +7,11 @@
 
 #include <fast_float/fast_float.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <utility>
 
 namespace hsm::kinematics::detail {
@@ -45,6 +47,9 @@ Op wordOperator(const std::string& word) {
   return Op::None;
 }
 
+// Macro B: a vacant value counts as 0 in arithmetic and functions.
+double orZero(double v) { return v != v ? 0.0 : v; }
+
 std::string quoted(const char* p, const char* end) {
   const char* stop = p;
   while (stop < end && stop - p < 24) ++stop;
@@ -55,17 +60,63 @@ std::string quoted(const char* p, const char* end) {
 // ---------------------------------------------------------------------------------------------------------
 // Parameters
 
+namespace {
+constexpr double kVacant = std::numeric_limits<double>::quiet_NaN();
+
+// Macro B's variables a program may set: locals, the two common ranges, and the system variables that change
+// nothing the simulation sees (timers, part counters, tool offsets) or that it refuses by name.
+bool macroCommon(int n) { return (n >= 1 && n <= kMacroLocals) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
+
+std::string fanucRange() { return "Fanuc's variables are #1-#33 (local), #100-#199 and #500-#999 (common) and system ones"; }
+}  // namespace
+
+NgcParameters::NgcParameters(ParameterLanguage language) : language_(language) {
+  numbered_.fill(0.0);
+  if (macroB())  // vacant until set: locals and commons at power-on (#500… are kept by the control: unknown here)
+    for (int n = 1; n <= 999; ++n)
+      if (macroCommon(n)) numbered_[static_cast<size_t>(n)] = kVacant;
+  locals_.emplace_back();
+}
+
+double NgcParameters::systemVariable(int number, long line) const {
+  if (number == 0) return kVacant;
+  const bool position = (number >= 5001 && number <= 5003) || (number >= 5021 && number <= 5023) ||
+                        (number >= 5041 && number <= 5043);
+  if (position && positions_ != nullptr) return positions_[(number % 100 - 1) / 20][number % 10 - 1];
+  if ((number >= 4001 && number <= 4130) || (number >= 5001 && number <= 5106))
+    throw ParseError(line, "#" + std::to_string(number) + " (the control's modal state or a position of another "
+                               "axis) is not simulated: write the value in the program instead");
+  return numbered_[static_cast<size_t>(number)];
+}
+
+void NgcParameters::setSystemVariable(int number, double value, long line) {
+  if (number == 3000)
+    throw ParseError(line, "the program raises alarm #3000 = " + hsm::number(value) + ": it stops here on the machine");
+  const bool harmless = number == 3001 || number == 3002 || number == 3004 || number == 3006 || number == 3901 ||
+                        number == 3902 || (number >= 2001 && number <= 2800);
+  if (!harmless)
+    throw ParseError(line, "#" + std::to_string(number) + " cannot be set here: " + fanucRange() +
+                               " (timers #3001/#3002, counters #3901/#3902, tool offsets #2001-#2800); a work offset "
+                               "set through its variable would move the program, which the simulator does not read");
+  numbered_[static_cast<size_t>(number)] = value;
+}
+
 double NgcParameters::numbered(int number, long line) const {
   if (number < 0 || number > kMaxNumberedParameter)
-    throw ParseError(line, "#" + hsm::number(number) + " is not a parameter: LinuxCNC's numbered parameters are #1 to #" +
+    throw ParseError(line, "#" + hsm::number(number) + " is not a parameter: " +
+                               (macroB() ? fanucRange() + " up to #" : std::string("LinuxCNC's numbered parameters are #1 to #")) +
                                std::to_string(kMaxNumberedParameter));
+  if (macroB() && !macroCommon(number)) return systemVariable(number, line);
   return numbered_[static_cast<size_t>(number)];
 }
 
 void NgcParameters::setNumbered(int number, double value, long line) {
+  if (macroB() && !macroCommon(number) && number >= 0 && number <= kMaxNumberedParameter)
+    return setSystemVariable(number, value, line);
   if (number < 1 || number > kMaxNumberedParameter)
-    throw ParseError(line, "#" + hsm::number(number) + " cannot be set: LinuxCNC's numbered parameters are #1 to #" +
-                               std::to_string(kMaxNumberedParameter));
+    throw ParseError(line, "#" + hsm::number(number) + " cannot be set: " +
+                               (macroB() ? fanucRange() : "LinuxCNC's numbered parameters are #1 to #" +
+                                                              std::to_string(kMaxNumberedParameter)));
   numbered_[static_cast<size_t>(number)] = value;
 }
 
@@ -91,7 +142,7 @@ void NgcParameters::setNamed(const std::string& name, double value) {
 }
 
 void NgcParameters::enterCall(const std::vector<double>& arguments) {
-  std::array<double, kSubroutineArguments> saved{};
+  std::array<double, kMacroLocals> saved{};
   for (int i = 0; i < kSubroutineArguments; ++i) {
     saved[static_cast<size_t>(i)] = numbered_[static_cast<size_t>(i + 1)];
     numbered_[static_cast<size_t>(i + 1)] = i < static_cast<int>(arguments.size()) ? arguments[static_cast<size_t>(i)] : 0.0;
@@ -100,10 +151,20 @@ void NgcParameters::enterCall(const std::vector<double>& arguments) {
   locals_.emplace_back();
 }
 
+void NgcParameters::enterMacroCall(const std::array<double, kMacroLocals>& arguments) {
+  std::array<double, kMacroLocals> saved{};
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    saved[i] = numbered_[i + 1];
+    numbered_[i + 1] = arguments[i];
+  }
+  saved_.push_back(saved);
+  locals_.emplace_back();
+}
+
 void NgcParameters::leaveCall() {
   if (saved_.empty()) return;
-  for (int i = 0; i < kSubroutineArguments; ++i)
-    numbered_[static_cast<size_t>(i + 1)] = saved_.back()[static_cast<size_t>(i)];
+  const int count = macroB() ? kMacroLocals : kSubroutineArguments;
+  for (int i = 0; i < count; ++i) numbered_[static_cast<size_t>(i + 1)] = saved_.back()[static_cast<size_t>(i)];
   saved_.pop_back();
   locals_.pop_back();
 }
@@ -183,15 +244,29 @@ double NgcExpressionReader::unaryFunction(const std::string& name, const char*& 
     ++p;
     return parameters_.exists(parameter) ? 1.0 : 0.0;
   }
-  if (p >= end || *p != '[') fail("'" + name + "' is not a function followed by [argument]: is this a LinuxCNC program?");
+  if (p >= end || *p != '[') fail("'" + name + "' is not a function followed by [argument]: is this a " +
+                                   (parameters_.macroB() ? "Fanuc macro?" : "LinuxCNC program?"));
   ++p;
-  const double a = expression(p, end);
+  if (parameters_.macroB() && (name == "atan" || name == "pow")) {  // Fanuc 30i: ATAN[y,x], POW[a,b]
+    const char* comma = p;
+    int depth = 0;
+    for (; comma < end && !(depth == 0 && (*comma == ',' || *comma == ']')); ++comma)
+      depth += *comma == '[' ? 1 : *comma == ']' ? -1 : 0;
+    if (comma < end && *comma == ',') {
+      const double a = operations(p, comma, '\0');
+      p = comma + 1;
+      const double b = orZero(expression(p, end));
+      return name == "atan" ? std::atan2(orZero(a), b) / kDegree : apply(static_cast<int>(Op::Power), orZero(a), b);
+    }
+  }
+  const double a = orZero(expression(p, end));
   if (name == "atan") {  // ATAN[y]/[x]
     skipBlanks(p, end);
     if (!(p + 1 < end && p[0] == '/' && p[1] == '[')) fail("ATAN takes two arguments: ATAN[y]/[x]");
     p += 2;
-    return std::atan2(a, expression(p, end)) / kDegree;
+    return std::atan2(a, orZero(expression(p, end))) / kDegree;
   }
+  if (parameters_.macroB() && name == "roun") return std::round(a);
   if (name == "abs") return std::abs(a);
   if (name == "acos" || name == "asin") {
     if (a < -1.0 || a > 1.0) fail(name + "[" + number(a) + "]: the argument must be within -1 to 1");
@@ -212,11 +287,21 @@ double NgcExpressionReader::unaryFunction(const std::string& name, const char*& 
     if (a < 0.0) fail("SQRT[" + number(a) + "]: the argument must not be negative");
     return std::sqrt(a);
   }
+  if (parameters_.macroB())
+    fail("'" + name + "' is not a Fanuc macro function read here (ABS ACOS ASIN ATAN COS EXP FIX FUP LN POW ROUND SIN SQRT TAN)");
   fail("'" + name + "' is not a LinuxCNC function (ABS ACOS ASIN ATAN COS EXISTS EXP FIX FUP LN ROUND SIN SQRT TAN)");
 }
 
 double NgcExpressionReader::apply(int op, double a, double b) const {
-  switch (static_cast<Op>(op)) {
+  const Op o = static_cast<Op>(op);
+  if (o == Op::Eq || o == Op::Ne) {  // Macro B: vacant equals only vacant
+    const bool same = NgcParameters::vacant(a) || NgcParameters::vacant(b)
+                          ? NgcParameters::vacant(a) && NgcParameters::vacant(b) : a == b;
+    return (o == Op::Eq) == same ? 1.0 : 0.0;
+  }
+  a = orZero(a);
+  b = orZero(b);
+  switch (o) {
     case Op::Power:
       if (a < 0.0 && std::floor(b) != b) fail("a negative number raised to a non-integer power: check the expression");
       return std::pow(a, b);
@@ -243,7 +328,11 @@ double NgcExpressionReader::apply(int op, double a, double b) const {
   }
 }
 
-double NgcExpressionReader::expression(const char*& p, const char* end) const {
+double NgcExpressionReader::expression(const char*& p, const char* end) const { return operations(p, end, ']'); }
+
+double NgcExpressionReader::toEnd(const char*& p, const char* end) const { return operations(p, end, '\0'); }
+
+double NgcExpressionReader::operations(const char*& p, const char* end, char closing) const {
   // Operator precedence by two stacks, as rs274ngc's read_real_expression (small: on the stack, no allocation).
   constexpr int kDepth = 8;  // at most one pending operator per precedence level, plus the one read
   double values[kDepth];
@@ -256,10 +345,12 @@ double NgcExpressionReader::expression(const char*& p, const char* end) const {
   };
   for (;;) {
     skipBlanks(p, end);
-    if (p >= end) fail("'[' is not closed: add ']'");
-    if (*p == ']') {
-      ++p;
+    const bool ends = closing == ']' ? p < end && *p == ']' : p >= end || *p == '(' || *p == ';';
+    if (p >= end && closing == ']') fail("'[' is not closed: add ']'");
+    if (ends) {
+      if (closing == ']') ++p;
       while (count > 0) reduce();
+      if (count == 0 && NgcParameters::vacant(values[0]) && parameters_.macroB()) return values[0];  // #1=#0
       if (!std::isfinite(values[0])) fail("an expression's value is not a finite number: check it");
       return values[0];
     }
@@ -274,6 +365,8 @@ double NgcExpressionReader::expression(const char*& p, const char* end) const {
       std::string word;
       while (p < end && isLetter(*p)) word += lower(*p++);
       op = wordOperator(word);
+      if (op == Op::None && word[0] == 'e' && (p < end && (isDigit(*p) || *p == '-' || *p == '+')))
+        fail("a number with an exponent ('e" + quoted(p, end) + "'): G-code numbers have none; write it in full (1000, not 1e3)");
       if (op == Op::None) fail("'" + word + "' is not an operator (** * / MOD + - EQ NE GT GE LT LE AND OR XOR)");
     } else {
       fail("'" + quoted(p, end) + "' is not an operator: expected one of ** * / MOD + - EQ NE GT GE LT LE AND OR XOR or ']'");
@@ -299,10 +392,12 @@ bool isFunctionCall(const char* p, const char* end) {
   return p < end && *p == '[';
 }
 
+// With a point always: a computed value is a length in program units, never a count of least increments.
 void appendNumber(std::string& out, double v) {
   char buffer[400];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed);
   out.append(buffer, result.ptr);
+  if (std::find(buffer, result.ptr, '.') == result.ptr) out += ".0";
 }
 }  // namespace
 
@@ -335,7 +430,7 @@ std::string_view substituteParameters(std::string_view raw, long line, NgcParame
       if (p >= end || *p != '=')
         throw ParseError(line, "a parameter stands alone: set it (#1 = ...) or give it as a word's value (X#1)");
       ++p;
-      s.value = reader.value(p, end);
+      s.value = parameters.macroB() ? reader.toEnd(p, end) : reader.value(p, end);
       settings.push_back(std::move(s));
     } else if (isLetter(c) || c == '%' || c == '/') {
       out += c;
@@ -349,7 +444,12 @@ std::string_view substituteParameters(std::string_view raw, long line, NgcParame
         out.append(p, stop);
         p = stop;
       } else if (p < end && (!isLetter(*p) || isFunctionCall(p, end))) {
-        appendNumber(out, reader.value(p, end));
+        const double v = reader.value(p, end);
+        if (NgcParameters::vacant(v)) {  // Macro B: a word given a vacant value is not in the block
+          out.pop_back();
+          continue;
+        }
+        appendNumber(out, v);
       }
       out += ' ';
     } else {

@@ -267,7 +267,7 @@ SimulationResult run(const MachineModel& machine, const SimulationOptions& optio
 SimulationResult simulate(std::istream& program, const MachineModel& machine, const ReaderOptions& reading,
                           const SimulationOptions& options) {
   ReaderOptions language = reading;
-  if (machine.controller == ControllerKind::Siemens840D) language.linuxcncLanguage = false;
+  language.conventions = machine.conventions;
   GcodeReader reader(program, language);
   return run(machine, options, [&](Block& b) { return reader.next(b); }, [&] { return reader.stats(); });
 }

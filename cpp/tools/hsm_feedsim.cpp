@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
   std::string program, machineName, jsonPath, csvPath, tracePath, movesPath;
   std::vector<std::string> subroutineFolders;
   double tracePeriod = 0.004;
-  bool refuseUnknown = false, quiet = false, listMachines = false;
-  app.add_option("program", program, "G-code file (FreeCAD/LinuxCNC or Siemens 840D dialect)");
+  bool refuseUnknown = false, skipUnknown = false, quiet = false, listMachines = false;
+  app.add_option("program", program, "G-code file in the machine's dialect (LinuxCNC, grbl, Fanuc, Haas or Siemens 840D)");
   app.add_option("--machine,-m", machineName, "machine name (see --list-machines) or machine JSON file");
   app.add_option("--json", jsonPath, "write the summary as JSON");
   app.add_option("--csv", csvPath, "write one row per block as CSV (feeds in mm/min)");
@@ -91,6 +91,9 @@ int main(int argc, char** argv) {
   app.add_option("--subroutines", subroutineFolders,
                  "folder of LinuxCNC subroutine files (NAME.ngc for o<name> call), after the program's own; repeatable");
   app.add_flag("--refuse-unknown", refuseUnknown, "stop at the first word the reader does not understand");
+  app.add_flag("--skip-unknown", skipUnknown,
+               "skip and count a word that would move the machine but is not understood (by default it stops the "
+               "reading at its line)");
   app.add_flag("--quiet,-q", quiet, "no progress bar and no summary on the terminal");
   app.add_flag("--list-machines", listMachines, "list the machine models found and exit");
   CLI11_PARSE(app, argc, argv);
@@ -128,7 +131,8 @@ int main(int argc, char** argv) {
     const size_t slash = program.find_last_of('/');  // subroutine files beside the program first, as LinuxCNC
     reading.subroutineFolders.push_back(slash == std::string::npos ? "." : program.substr(0, slash));
     reading.subroutineFolders.insert(reading.subroutineFolders.end(), subroutineFolders.begin(), subroutineFolders.end());
-    reading.linuxcncLanguage = machine.controller != ControllerKind::Siemens840D;
+    reading.skipUnknownMotion = skipUnknown;
+    reading.conventions = machine.conventions;
     if (!movesPath.empty()) {
       std::ofstream moves = openOutput(movesPath, "moves");
       writeMoves(file, reading, moves);

@@ -86,7 +86,7 @@ TEST(BadPrograms, ALineWithoutEndIsRefusedAtOnceWithoutReadingTheFile) {
 }
 
 TEST(BadPrograms, LongButFiniteCoordinatesGiveFiniteTimes) {
-  const std::string program = "G0 X0 Y0 Z0\nG1 X999999999 Y-999999999 Z999999999 F1\nG0 X0\nM30\n";
+  const std::string program = "G0 X0 Y0 Z0\nG1 X999999999. Y-999999999. Z999999999. F1\nG0 X0\nM30\n";
   for (const std::string& name : machineNames({HSM_MACHINES_DIR})) {
     std::istringstream stream(program);
     const SimulationResult result = simulate(stream, preset(name));

@@ -127,7 +127,7 @@ TEST(NgcLanguage, PlainProgramsAndTheSiemensDialectAreReadAsBefore) {
   const std::string plain = "G1 X1 F600\nO1234\nG1 X2 ; comment with # and [\n";
   EXPECT_EQ(xs(readProgram(plain)), (std::vector<double>{1, 2}));
   ReaderOptions siemens;
-  siemens.linuxcncLanguage = false;
+  siemens.conventions.dialect = Dialect::Siemens840D;
   EXPECT_NE(errorOf("#1=2\n", siemens).find("unexpected character '#'"), std::string::npos);
 }
 

@@ -252,7 +252,7 @@ TEST(Machine, PresetsLoadAndBadFilesAreRefusedByKey) {
   for (const auto& entry : std::filesystem::directory_iterator(HSM_MACHINES_DIR))
     files += entry.path().extension() == ".json";
   EXPECT_EQ(names.size(), files);
-  for (const char* needed : {"mikron-ucp710-840d", "linuxcnc-2.9", "grbl"})
+  for (const char* needed : {"mikron-ucp710-840d", "linuxcnc-2.9", "grbl", "fanuc-31i-b5-vmc", "haas-vf2", "haas-umc750"})
     EXPECT_NE(std::find(names.begin(), names.end(), needed), names.end()) << needed;
   const MachineModel m = preset("mikron-ucp710-840d");
   EXPECT_DOUBLE_EQ(m.maxAcceleration.y(), 3000.0);
@@ -262,7 +262,7 @@ TEST(Machine, PresetsLoadAndBadFilesAreRefusedByKey) {
     preset("fanuc");
     FAIL();
   } catch (const hsm::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("use one of grbl, linuxcnc-2.9, "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("use one of fanuc-31i-b5-vmc, grbl, haas-umc750, "), std::string::npos) << e.what();
   }
   std::string text = machineToJson(m);
   text.replace(text.find("\"max_jerk_m_s3\""), 15, "\"max_jerk\"");
