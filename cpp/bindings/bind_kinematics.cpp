@@ -100,9 +100,10 @@ SimulationOptions simulationOptions(bool keepBlocks, double tracePeriod) {
   return options;
 }
 
-ReaderOptions readerOptions(bool refuseUnknown, bool feedPerSecond) {
+ReaderOptions readerOptions(bool refuseUnknown, bool feedPerSecond, bool skipUnknown) {
   ReaderOptions reading;
   reading.refuseUnknownWords = refuseUnknown;
+  reading.skipUnknownMotion = skipUnknown;
   reading.feedInMmPerSecond = feedPerSecond;
   return reading;
 }
@@ -163,6 +164,14 @@ void bindKinematics(py::module_& m) {
       .def_readwrite("tool_axis", &MachineModel::toolAxis)
       .def_readwrite("tool_tip_programmed", &MachineModel::toolTipProgrammed)
       .def_readwrite("rotary_planner", &MachineModel::rotaryPlanner)
+      .def_property(
+          "dialect", [](const MachineModel& m) { return dialectName(m.conventions.dialect); },
+          [](MachineModel& m, const std::string& name) { m.conventions.dialect = dialectFromName(name, "dialect"); },
+          "the programs' language: linuxcnc, grbl, siemens-840d, fanuc or haas")
+      .def_property(
+          "power_on_codes", [](const MachineModel& m) { return m.conventions.powerOnCodes; },
+          [](MachineModel& m, const std::string& codes) { m.conventions.powerOnCodes = codes; },
+          "G words the control is in before a program's first line, e.g. 'G0 G17 G90 G94 G21 G98'")
       .def_property_readonly("kinematics", &MachineModel::kinematicsName,
                              "'table-table', 'head-table', 'head-head', 'table', 'head' or '' (3 axes)");
   m.def(
@@ -238,24 +247,24 @@ void bindKinematics(py::module_& m) {
   m.def(
       "simulate_text",
       [](const std::string& text, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
-         bool perSecond) {
+         bool perSecond, bool skip) {
         std::istringstream stream(text);
         return released([&] {
-          return simulate(stream, machine, readerOptions(refuse, perSecond), simulationOptions(keepBlocks, tracePeriod));
+          return simulate(stream, machine, readerOptions(refuse, perSecond, skip), simulationOptions(keepBlocks, tracePeriod));
         });
       },
       py::arg("text"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
-      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false);
   m.def(
       "simulate_file",
       [](const std::string& path, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
-         bool perSecond) {
+         bool perSecond, bool skip) {
         return released([&] {
-          return simulateFile(path, machine, readerOptions(refuse, perSecond), simulationOptions(keepBlocks, tracePeriod));
+          return simulateFile(path, machine, readerOptions(refuse, perSecond, skip), simulationOptions(keepBlocks, tracePeriod));
         });
       },
       py::arg("path"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
-      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false);
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false);
   m.def(
       "simulate_moves",
       [](const MoveArray& moves, double feed, const MachineModel& machine, bool keepBlocks, double tracePeriod) {

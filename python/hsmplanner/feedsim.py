@@ -71,23 +71,30 @@ def _trace_period(trace_period):
     return period
 
 
-def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, refuse_unknown_words=False):
+def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, refuse_unknown_words=False,
+             skip_unknown=False):
     """Simulate `program` on `machine`; returns a SimulationResult (summary, blocks, trace).
 
-    blocks=True keeps one result per block (arrays in result.blocks); trace_period (s) samples t, x, y, z,
-    speed along the run into result.trace. Without them memory does not grow with the program.
+    The program is read in the machine's dialect (LinuxCNC, grbl, Fanuc, Haas, Siemens 840D: its file's
+    "dialect"). blocks=True keeps one result per block (arrays in result.blocks); trace_period (s) samples t, x, y,
+    z, speed along the run into result.trace. Without them memory does not grow with the program. A word that
+    would move the machine and that the reader does not understand stops the reading with a ValueError naming
+    its line; skip_unknown=True skips and counts it instead (refuse_unknown_words=True refuses any unknown word).
     """
     model, period = load_machine(machine), _trace_period(trace_period)
     commands = _path_commands(program)
     if commands is not None:
-        return _core.simulate_text(path_to_gcode(commands), model, bool(blocks), period, refuse_unknown_words, True)
+        return _core.simulate_text(path_to_gcode(commands), model, bool(blocks), period, refuse_unknown_words, True,
+                                   bool(skip_unknown))
     if isinstance(program, os.PathLike) or (isinstance(program, str) and "\n" not in program
                                             and os.path.isfile(program)):
-        return _core.simulate_file(os.fspath(program), model, bool(blocks), period, refuse_unknown_words, False)
+        return _core.simulate_file(os.fspath(program), model, bool(blocks), period, refuse_unknown_words, False,
+                                   bool(skip_unknown))
     if isinstance(program, str):
         if "\n" not in program and program.strip() and not any(c in program for c in " ;("):
             raise ValueError("program %r is neither an existing file nor G-code text: check the path" % program)
-        return _core.simulate_text(program, model, bool(blocks), period, refuse_unknown_words, False)
+        return _core.simulate_text(program, model, bool(blocks), period, refuse_unknown_words, False,
+                                   bool(skip_unknown))
     raise TypeError("program must be a G-code file, G-code text or FreeCAD Path commands, got %s"
                     % type(program).__name__)
 

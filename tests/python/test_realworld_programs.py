@@ -1,0 +1,79 @@
+"""The shared corpus of real programs (../shared/data/realworld_gcode: other CAMs' posts and shop-written code),
+each read in its own dialect on the machine it was written for: simulated with no word that moves skipped, or
+refused for a limit of the program itself, in one line that says what it is."""
+import math
+import os
+import unittest
+
+import hsmplanner
+from saved_documents import SHARED_DATA
+
+CORPUS = os.path.join(SHARED_DATA, "realworld_gcode")
+
+# program, machine, and None (simulated) or the start of the refusal. The machine is the preset closest to the one
+# the program was posted for; where none fits, the refusal says which limit of ours or of the program stops it.
+PROGRAMS = [
+    ("linuxcnc/impeller_7blade_xyzac.ngc", "linuxcnc-2.9-xyzac-trt", None),
+    ("linuxcnc/boat_xyzac.ngc", "linuxcnc-2.9-xyzac-trt", None),
+    ("linuxcnc/xyzab_tdr_demo.ngc", "linuxcnc-2.9", "line 10: #<_hal[xyzab_tdr_kins.x-rot-point]> reads the machine's HAL"),
+    ("linuxcnc/trochoidal_gcmc.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/w130207lzw_xyzw.ngc", "linuxcnc-2.9", "line 3: 'W0' (an axis the simulator does not have)"),
+    ("linuxcnc/cereal_vcarve.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/mmount_mazak.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/r8s_fusion_parallel.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/hema_p016_fusion_adaptive.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/crankyanker_estlcam.ngc", "linuxcnc-2.9", None),
+    ("linuxcnc/vcarve_openvoronoi.ngc", "linuxcnc-2.9", None),
+    ("grbl/blendercam_parallel.gcode", "grbl", None),
+    ("grbl/freecad_bearingclamp_adaptive.nc", "grbl", None),
+    ("fanuc/mori_nmv5000_g434.nc", "fanuc-31i-b5-vmc", None),
+    # a 4-axis horizontal's continuous B on the trunnion's +-120 deg B; and an arc the post left without its centre
+    ("fanuc/sundstrand_omnimill_4ax.nc", "fanuc-31i-b5-vmc", "line 17: B120.316 is outside the travel of B"),
+    ("fanuc/kuraki_kbt11dx_w.nc", "fanuc-31i-b5-vmc", "line 8: 'W5.' (an axis the simulator does not have)"),
+    ("haas/haas_vf2tr_5axis.nc", "haas-vf2-tr160", "line 2: 'O ENTER OP AND LAST 3 DI' is not a program number"),
+    ("haas/haas_vf2_4axis_test.nc", "haas-vf2-hrt210", None),
+    ("haas/haas_stepblock_o78241.nc", "haas-vf2", None),
+    ("haas/haas_teammachine_engrave.nc", "haas-vf2", None),
+    ("other/cameo_relief.nc", "linuxcnc-2.9", None),
+    ("other/bear_relief.nc", "linuxcnc-2.9", None),
+    ("other/cuq_dmu_5axis_ac.nc", "linuxcnc-2.9-xyzac-trt", "line 5: coordinates before any motion mode"),
+    ("other/okuma_7000m.nc", "fanuc-31i-b5-vmc", "line 19: this is an Okuma OSP program"),
+    ("other/dmc160u_millplus_5axis.nc", "fanuc-31i-b5-vmc", "line 11: this is a Heidenhain MillPlus program"),
+    ("heidenhain/dmc100_tnc_m128_5axis.h", "mikron-ucp710-840d", "line 1: this is a Heidenhain conversational"),
+    ("heidenhain/dangarpt_test.h", "mikron-ucp710-840d", "line 1: this is a Heidenhain conversational"),
+]
+
+
+class RealWorldPrograms(unittest.TestCase):
+    def setUp(self):
+        if not os.path.isdir(CORPUS):
+            self.fail("%s is missing: the shared corpus lives in ../shared/data beside the repository" % CORPUS)
+
+    def test_every_program_is_simulated_or_refused_for_what_it_is(self):
+        rows = []
+        for name, machine, refusal in PROGRAMS:
+            path = os.path.join(CORPUS, name)
+            with self.subTest(program=name):
+                if refusal is not None:
+                    with self.assertRaises(ValueError) as raised:
+                        hsmplanner.simulate(path, machine)
+                    self.assertTrue(str(raised.exception).startswith(refusal), str(raised.exception))
+                    rows.append("%-40s %-24s refused: %s" % (name, machine, str(raised.exception)[:90]))
+                    continue
+                summary = hsmplanner.simulate(path, machine).summary
+                self.assertTrue(math.isfinite(summary.total_time) and summary.total_time > 0, name)
+                self.assertGreater(summary.block_count, 10, name)
+                # no word that moves was skipped (it would have stopped the reading); what is left is M codes
+                moving = [w for w in summary.unknown_word_counts if w[0] in "GUVWXYZABC"]
+                self.assertEqual(moving, [], name)
+                # a machine takes at least length/feed; the rapids' share may make it a little less
+                ratio = summary.total_time / summary.naive_time
+                self.assertGreater(ratio, 0.9, name)
+                rows.append("%-40s %-24s %9.1f s  length/feed %9.1f s  x%.2f  unknown %s"
+                            % (name, machine, summary.total_time, summary.naive_time, ratio,
+                               dict(summary.unknown_word_counts) or "-"))
+        print("\n" + "\n".join(rows))
+
+
+if __name__ == "__main__":
+    unittest.main()
