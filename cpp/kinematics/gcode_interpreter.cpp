@@ -300,7 +300,7 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   const double frameZ = frame().z();
   if (first && w.hasRadius) cycleR_ = absolute_ ? w.radiusWord * unit_ + frameZ : cycleStartZ_ + w.radiusWord * unit_;
   if (first && w.hasAxis[2]) cycleZ_ = absolute_ ? w.axis[2] * unit_ + frameZ : cycleR_ + w.axis[2] * unit_;
-  if (first && w.hasQ) cycleQ_ = std::abs(w.qWord) * unit_;
+  if (first && w.hasQ) cycleQ_ = w.qWord * unit_;
   if (w.hasP && !(w.pWord >= 0.0))
     throw ParseError(lineNumber_, name + " P" + number(w.pWord) + ": a dwell lasts 0 s or more; write P<seconds>");
   if (w.hasP) cycleP_ = dwellSeconds(w);

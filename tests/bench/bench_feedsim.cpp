@@ -3,6 +3,7 @@
 // moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
 // Then LinuxCNC's language: the plain program on the LinuxCNC model, and a program whose moves come from an
 // O-word loop with parameters and expressions.
+// Then Fanuc's: the plain program on the Fanuc preset (its lines kept for jumps back), and a Macro B WHILE loop.
 // Targets: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes), 1,000,000 from
 // loops. Times are the process's CPU time.
 // Run: build/bin/bench_feedsim [five-axis [blocks]]   (five-axis: only the 5-axis program, e.g. under perf)
@@ -52,6 +53,12 @@ std::string loopProgram(long blocks) {
          "o1 while [#<i> LT " + std::to_string(blocks) + "]\n"
          "G1 X[[#<i> MOD 700] * 0.2] Y[FIX[#<i> / 700] * 0.4] Z[-0.5 * SIN[#<i> * 0.5]]\n"
          "#<i> = [#<i> + 1]\no1 endwhile\nM30\n";
+}
+
+// The loop of loopProgram in Fanuc's Macro B.
+std::string macroLoopProgram(long blocks) {
+  return "%\nO0001\nG90 G17 G21\nG0 X0 Y0 Z5\nG1 Z0 F6000\n#1=0\nWHILE [#1 LT " + std::to_string(blocks) +
+         "] DO 1\nG1 X[[#1 MOD 700]*0.2] Y[FIX[#1/700]*0.4] Z[-0.5*SIN[#1*0.5]]\n#1=#1+1\nEND 1\nM30\n%\n";
 }
 
 // CPU seconds of this process (best of three): on a machine other work shares, the wall clock counts the time
@@ -169,6 +176,29 @@ int main(int argc, char** argv) {
   std::printf("LinuxCNC while loop (%ld blocks from a %zu-byte program): read only %5.2f s %10.0f blocks/s, "
               "read + simulate %5.2f s %10.0f blocks/s\n", loopRead, loops.size(), loopReadTime, loopRead / loopReadTime,
               loopTime, looped.blockCount / loopTime);
+
+  const MachineModel fanuc = loadMachine("fanuc-31i-b5-vmc", {HSM_MACHINES_DIR});
+  std::string fanucPlain = program;
+  fanucPlain.replace(fanucPlain.find("CYCLE832(0.01,_ORI_FINISH,1)"), 28, "G05.1 Q1");
+  SimulationSummary fanucSummary, macroSummary;
+  const double fanucTime = seconds([&] {
+    std::istringstream stream(fanucPlain);
+    fanucSummary = simulate(stream, fanuc).summary;
+  });
+  const std::string macroLoop = macroLoopProgram(blocks);
+  const double macroTime = seconds([&] {
+    std::istringstream stream(macroLoop);
+    macroSummary = simulate(stream, fanuc).summary;
+  });
+  std::printf("Fanuc model, plain program: %5.2f s  %10.0f blocks/s read + simulate\n", fanucTime,
+              fanucSummary.blockCount / fanucTime);
+  std::printf("Fanuc Macro B WHILE loop (%ld blocks): read + simulate %5.2f s %10.0f blocks/s\n", macroSummary.blockCount,
+              macroTime, macroSummary.blockCount / macroTime);
+  {
+    std::istringstream stream(finishingProgram(2000000));
+    std::printf("heap in use while simulating 2000000 blocks on the Fanuc model (lines kept for jumps back): %.2f MB "
+                "above the text\n", peakHeapMb(stream, fanuc));
+  }
 
   {  // a subroutine defined at the top, then plain moves: only the subroutine's lines are kept
     std::istringstream stream("o<up> sub\nG0 Z5\no<up> endsub\n" + finishingProgram(2000000) + "o<up> call\n");

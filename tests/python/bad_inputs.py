@@ -117,8 +117,8 @@ CASES = [
            "the bottom Z3 is above the retract plane R1"),
     raises("G81 at F0", "h.simulate('G0 Z5\\nG81 X1 Z-2 R1\\n', 'linuxcnc-2.9')", "ValueError",
            "G81 drills at F0: program a positive F"),
-    raises("G81 in G91", "h.simulate('G0 Z5\\nG91 G81 X1 Z-2 R1 F60\\n', 'linuxcnc-2.9')", "ValueError",
-           "G81 in G91"),
+    raises("G81 in G18", "h.simulate('G0 Z5\\nG18 G81 X1 Z-2 R1 F60\\n', 'linuxcnc-2.9')", "ValueError",
+           "G81 in G18"),
     holds("G81 a billion mm away", "result = h.simulate('G0 Z5\\nG81 X1000000000 Z-2 R1 F60\\n', "
           "'linuxcnc-2.9').summary.block_count", "result >= 3"),
     raises("G82 P-5", "h.simulate('G0 Z5\\nG82 X1 Z-2 R1 P-5 F60\\n', 'linuxcnc-2.9')", "ValueError",

@@ -7,7 +7,7 @@ import FreeCAD
 
 from hsmplanner import _core, direction, feedsim
 
-from .properties import add_inputs, add_results
+from .properties import add_inputs, add_results, refresh_choices
 from . import finishing
 
 from .progress import freecad_progress
@@ -106,6 +106,10 @@ class MachiningDirection(PropertyLimits, InMemoryResult):
         obj.Arrows = 600
         obj.Proxy = self
         self.forget()
+
+    def onDocumentRestored(self, obj):
+        super().onDocumentRestored(obj)
+        refresh_choices(obj, "Machine", machine_choices())
 
     def feed_mm_min(self, obj):
         return obj.Feed if obj.FeedFrom == FEED_FROM[0] else obj.FeedPerTooth.Value * obj.Teeth * obj.SpindleSpeed

@@ -7,7 +7,7 @@ import FreeCAD
 from hsmplanner import feedsim
 
 from .feedrate import is_simulatable, simulate_object
-from .properties import add_results
+from .properties import add_results, refresh_choices
 from .proxy_state import InMemoryResult
 
 TYPE_NAME = "App::FeaturePython"
@@ -59,6 +59,10 @@ class FeedRateAnalysis(InMemoryResult):
         add_results(obj, _OUTPUTS)
         obj.Proxy = self
         self.result = None
+
+    def onDocumentRestored(self, obj):
+        super().onDocumentRestored(obj)
+        refresh_choices(obj, "Machine", feedsim.machine_names() + [CUSTOM_MACHINE])
 
     def machine(self, obj):
         return chosen_machine(obj)

@@ -17,3 +17,15 @@ def add_results(obj, results, mode=READ_ONLY, group="Result"):
     for prop_type, name, tooltip in results:
         obj.addProperty(prop_type, name, group, tooltip)
         obj.setEditorMode(name, mode)
+
+
+def refresh_choices(obj, name, choices):
+    """An enumeration saved by an earlier version offers today's `choices` (a machine added since), keeping the
+    value it was saved with when it is still one of them."""
+    choices = list(choices)
+    if name not in obj.PropertiesList or obj.getEnumerationsOfProperty(name) == choices:
+        return
+    value = getattr(obj, name)
+    setattr(obj, name, choices)
+    if value in choices:
+        setattr(obj, name, value)

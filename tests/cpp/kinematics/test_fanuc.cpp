@@ -5,12 +5,14 @@
 #include "kinematics/gcode.hpp"
 
 #include "support/gcode_errors.hpp"
+#include "support/mutation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 using namespace hsm::kinematics;
@@ -233,4 +235,33 @@ TEST(FanucDialect, OtherIsoDialectsAndUnfinishedTemplatesAreNamed) {
   // G83 with Q0: one pass on a Fanuc (a post's "no peck"), refused by LinuxCNC's reading
   EXPECT_EQ(readProgram("G0 X0. Y0. Z5.\nG83 X1. Z-2. R1. Q0 F100\n", kFanuc).size(), 5u);
   EXPECT_EQ(errorOf("G0 X0 Y0 Z5\nG83 X1 Z-2 R1 Q0 F100\n").rfind("line 2: G83 needs Q > 0", 0), 0u);
+}
+
+// Mutations of a program using the whole Fanuc/Haas language are read or refused with an InputError, never a
+// crash, a non-finite position or an endless run (loops bounded at 1000 turns).
+TEST(FanucMacro, FuzzedProgramsAreReadOrRefusedNeverCrash) {
+  const std::string seed =
+      "%\nO0001\n#1=2.\n#100=#1*3+[SIN[30]]\nN10 G1 X#100 F100\nIF [#1 LT 4] THEN #1=#1+1\nIF [#1 LT 4] GOTO 10\n"
+      "WHILE [#1 GT 0] DO 1\nG91 G81 X1. Z-2. R-1. K2\nG90 G80\n#1=#1-1\nEND 1\nM98 P100 L2\nG65 P200 A1. X2.\n"
+      "M97 P300\nG91 G28 Z0.\nG05.1 Q1\nG43.4 H1 Z5.\nM30\nN300 G4 P100\nM99\nO0100\nG1 Y#0 Z-1.\nM99\n"
+      "O0200\nG1 X#24 Y#1\nM99\n%\n";
+  const std::string alphabet = "#[]=ONGXYZFKLPQRHAM0123456789.-+*/ \nIFWHILEDOENTGOTHabcdefghilnoprstuw%";
+  ReaderOptions bounded;
+  bounded.conventions.dialect = Dialect::Haas;
+  bounded.conventions.powerOnCodes = "G0 G17 G90 G21 G98";
+  bounded.maxLoopIterations = 1000;
+  ASSERT_GT(readProgram(seed, bounded).size(), 10u);
+  std::mt19937 random(11);
+  int read = 0, refused = 0;
+  for (int round = 0; round < 5000; ++round) {
+    const std::string program = hsm::test::mutated(seed, alphabet, random);
+    try {
+      for (const Block& b : readProgram(program, bounded)) ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
+      ++read;
+    } catch (const hsm::InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_GT(refused, 100);
 }

@@ -18,6 +18,7 @@ from ..compat import cam_module, create_tool_bit, tool_corner_radius, tool_shape
 from ..job_controllers import usable_or_added
 from ..op_comments import comment_text, mend_leading_comments
 from ..property_limits import PropertyLimits
+from ..properties import refresh_choices
 from ..finishing import exact_top
 from ..progress import freecad_progress, in_background, staged
 from .commands import program_clearance, sweep_commands, work_plane_comments
@@ -186,6 +187,7 @@ class ObjectVolumeRoughing(PropertyLimits, PathOp.ObjectOp):
 
     def opOnDocumentRestored(self, obj):
         self.add_results(obj)
+        refresh_choices(obj, "Machine", feedsim.machine_names())
         # A document saved before step-up keeps the program it was saved with: one level per slice.
         self.add_step_up_and_rest(obj, 0.0)
         self.add_push_out(obj, 0.0)
