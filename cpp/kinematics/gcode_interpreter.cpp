@@ -288,10 +288,10 @@ bool Interpreter::repeatedCycle(const LineWords& w, Block& block) {
 // Canned cycles as LinuxCNC's G-code reference ("G81 Drilling Cycle" and the following sections) and Fanuc's
 // manual describe them: the tool goes up to R if below it, across to X Y, down to R, then drills to Z (G81,
 // G82 with a dwell of P, G86 and G76 out at rapid; G83 in pecks of Q, back to R after each and rapidly down to
-// 0.254 mm above the last depth; G73 in pecks of Q breaking the chip by a 0.254 mm retract; G84, G74, G85,
-// G89 feed back out; G88's manual retract taken as a rapid; a Fanuc's G87 back boring from R below the hole up
-// to Z), and retracts to R (G99) or to the Z the cycles started from if higher (G98). In G91, X Y move from
-// the last hole, R from the starting Z and Z from R.
+// 0.254 mm above the last depth; G73 in pecks of Q breaking the chip by a 0.254 mm retract; G84, G74, G85 feed
+// back out to R, G89 too on a Fanuc and to the clear level on LinuxCNC; G88's manual retract taken as a
+// rapid; a Fanuc's G87 back boring from R below the hole up to Z), and retracts to R (G99) or to the Z the
+// cycles started from if higher (G98). In G91, X Y move from the last hole, R from the starting Z and Z from R.
 bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   const std::string name = "G" + std::to_string(cycle_);
   if (plane_ != 17) throw ParseError(lineNumber_, name + " in G" + std::to_string(plane_) + ": canned cycles are read in "
@@ -342,7 +342,10 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
     go(x, y, cycleZ_, false);
   }
   if (cycle_ == 82 || cycle_ == 86 || cycle_ == 89 || cycle_ == 88 || cycle_ == 76) stats_.dwellTime += cycleP_;
-  if (cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || cycle_ == 89) go(x, y, cycleR_, false);
+  // LinuxCNC's G89 feeds out to the clear level (rs274 shows it); a Fanuc's, like G85, to R
+  const bool feedsToClear = cycle_ == 89 && !isFanucFamily(options_.conventions.dialect);
+  if (feedsToClear) go(x, y, clear, false);
+  if (cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || (cycle_ == 89 && !feedsToClear)) go(x, y, cycleR_, false);
   go(x, y, clear, true);
   return true;
 }

@@ -50,6 +50,12 @@ def rs274_moves(program, tool_table):
                          stdin=subprocess.DEVNULL)
     unit, feed, inverse, plane, said = 1.0, 0.0, False, PLANES["CANON_PLANE_XY"], []
     moves, position = [], ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+    # rs274 prints positions in the program's coordinates; the machine is there plus the work offset (G54…,
+    # G10) and G92's, which it prints as they change. Our reader gives the machine's position.
+    work, shift = (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
+
+    def machine(values):
+        return tuple(v * unit + w + g for v, w, g in zip(values, work, shift))
     for line in (run.stdout + "\n" + run.stderr).splitlines():
         match = CANON.match(line)
         if not match:
@@ -59,6 +65,10 @@ def rs274_moves(program, tool_table):
         name, arguments = match.group(1), [a.strip() for a in match.group(2).split(",")]
         if name == "USE_LENGTH_UNITS":
             unit = INCH if "INCHES" in arguments[0] else 1.0
+        elif name == "SET_G5X_OFFSET":
+            work = tuple(float(v) * unit for v in arguments[1:4])
+        elif name == "SET_G92_OFFSET":
+            shift = tuple(float(v) * unit for v in arguments[0:3])
         elif name == "SET_FEED_RATE":
             feed = float(arguments[0])
         elif name == "SET_FEED_MODE":
@@ -66,7 +76,7 @@ def rs274_moves(program, tool_table):
         elif name == "SELECT_PLANE":
             plane = PLANES.get(arguments[0], plane)
         elif name == "RIGID_TAP":  # in to (x, y, z) at the spindle's speed times the pitch, and back out
-            bottom = tuple(float(v) * unit for v in arguments[:3])
+            bottom = machine(float(v) for v in arguments[:3])
             for end in (bottom, position[0]):
                 moves.append(Move("STRAIGHT_FEED", end, position[1], None, None))
         elif name in MOVES:
@@ -75,10 +85,12 @@ def rs274_moves(program, tool_table):
             if name == "ARC_FEED":
                 first, second, axis = plane
                 end = [0.0, 0.0, 0.0]
-                end[first], end[second], end[axis] = values[0] * unit, values[1] * unit, values[5] * unit
-                move = Move(name, tuple(end), tuple(values[6:9]), ((first, values[2] * unit), (second, values[3] * unit)), rate)
+                end[first], end[second], end[axis] = values[0], values[1], values[5]
+                offset = machine((0.0, 0.0, 0.0))
+                centre = ((first, values[2] * unit + offset[first]), (second, values[3] * unit + offset[second]))
+                move = Move(name, machine(end), tuple(values[6:9]), centre, rate)
             else:
-                move = Move(name, tuple(v * unit for v in values[:3]), tuple(values[3:6]), None,
+                move = Move(name, machine(values[:3]), tuple(values[3:6]), None,
                             None if name == "STRAIGHT_TRAVERSE" else rate)
             # a move that goes nowhere (as printed: 4 decimals) may make no block in our reader
             move.nowhere = max(abs(a - b) for a, b in zip(move.end + move.rotary, position[0] + position[1])) < 1e-9

@@ -185,6 +185,15 @@ def xyzbc_programs():
     }
 
 
+def offsets_and_cycles():
+    """Work offsets (G10 L2 / L20, G55), G92, G28 and G53, and canned cycles in G91 with L repeats."""
+    return ["G0 X10 Y10 Z5", "G10 L2 P2 X20 Y-5 Z0", "G55 G0 X0 Y0", "G1 X15 Z2", "G54 G0 X5 Y5",
+            "G92 X0 Y0", "G1 X10 Y10", "G92.1", "G0 X30 Y0", "G10 L20 P1 X0 Y0", "G1 X5 Y5", "G10 L2 P1 X0 Y0 Z0",
+            "G0 Z10", "G91 G99 G81 X6 Y0 Z-4 R-3 L3", "G90 G80", "G98 G83 X40 Y20 Z-6 R2 Q1.5", "X44 Y20",
+            "G73 X48 Y20 Z-3 R1 Q1", "G85 X52 Y20 Z-2 R1", "G89 X56 Y20 Z-2 R1 P0.5", "G82 X60 Y20 Z-2 R1 P0.2",
+            "G80", "G28 Z20", "G53 G0 X10 Y10", "G0 X0 Y0 Z5"]
+
+
 def all_programs():
     pocket_title = "pocket 60 x 30 mm zig-zag, 2 mm step-overs at 135 degrees"
     return {
@@ -206,6 +215,8 @@ def all_programs():
         "14_sine_g64": program("sine wave A 5 mm, wavelength 25 mm, 0.5 mm chords", "G64", 6000, sine()),
         "15_sine_g64_p001": program("sine wave A 5 mm, wavelength 25 mm, 0.5 mm chords", "G64 P0.01", 6000,
                                     sine()),
+        "16_offsets_cycles": program("work offsets, G92, G28, G53 and canned cycles in G91 with L", "G64", 1200,
+                                     offsets_and_cycles()),
     }
 
 
