@@ -5,6 +5,7 @@
 #include "kinematics/gcode.hpp"
 #include "kinematics/ngc_program.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -52,8 +53,30 @@ long programNumber(std::string_view b) {
 bool isPercent(std::string_view b) { return !b.empty() && b[0] == '%'; }
 }  // namespace
 
+void MacroProgram::File::keep(std::string_view raw, long number) {
+  if (chunks.empty() || chunkUsed + raw.size() > kChunkBytes) {
+    chunks.push_back(std::make_unique<char[]>(std::max(kChunkBytes, raw.size())));
+    chunkUsed = 0;
+  }
+  char* at = chunks.back().get() + chunkUsed;
+  std::memcpy(at, raw.data(), raw.size());
+  chunkUsed += raw.size();
+  lines.push_back(Stored{std::string_view(at, raw.size()), number, chunksDropped + chunks.size() - 1});
+}
+
+void MacroProgram::File::dropFront(size_t count) {
+  lines.erase(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(count));
+  dropped += count;
+  while (!lines.empty() && chunksDropped < lines.front().chunk) {
+    chunks.pop_front();
+    ++chunksDropped;
+  }
+}
+
 MacroProgram::MacroProgram(LineSource& source, MacroOptions options) : source_(source), options_(std::move(options)) {
-  files_.push_back(File{"the program", {}, 0, true});
+  files_.emplace_back();
+  files_.back().name = "the program";
+  files_.back().streaming = true;
   frames_.emplace_back();
 }
 
@@ -69,7 +92,7 @@ MacroProgram::Stored* MacroProgram::fetch(const Cursor& at) {
     if (!file.streaming) return nullptr;
     std::string_view raw;
     if (!source_.next(raw)) return nullptr;
-    file.lines.push_back(Stored{std::string(raw), ++streamed_});
+    file.keep(raw, ++streamed_);
   }
   return &file.lines[at.index - file.dropped];
 }
@@ -132,14 +155,16 @@ MacroProgram::Cursor MacroProgram::programStart(long number, long line) {
         if (tried.size() < 6) tried.push_back(path);
         std::ifstream stream(path, std::ios::binary);
         if (!stream) continue;
-        File file{name + extension, {}, 0, false};
+        files_.emplace_back();
+        File& file = files_.back();
+        file.name = name + extension;
+        file.streaming = false;
         LineSource lines(stream);
         std::string_view raw;
         for (long n = 1; lines.next(raw); ++n) {
           if (file.lines.size() >= kMaxKeptLines) fail(line, path + " is over " + std::to_string(kMaxKeptLines) + " lines");
-          file.lines.push_back(Stored{std::string(raw), n});
+          file.keep(raw, n);
         }
-        files_.push_back(std::move(file));
         const size_t index = files_.size() - 1;
         size_t startAt = 0;  // its O line, or its first line after a '%'
         for (size_t i = 0; i < files_[index].lines.size(); ++i) {
@@ -265,7 +290,7 @@ bool MacroProgram::flowStatement(std::string_view b, long n) {
       fail(n, "DO " + number(id) + ": a loop's number is 1, 2 or 3 (Fanuc)");
     const bool again = !loops.empty() && loops.back().start.index == here.index && loops.back().start.file == here.file;
     if (holds) {
-      if (!again) loops.push_back(Loop{static_cast<int>(id), here});
+      if (!again) loops.push_back(Loop{static_cast<int>(id), here, 0});
     } else {
       if (again) loops.pop_back();
       long seq = 0;
@@ -286,7 +311,10 @@ bool MacroProgram::flowStatement(std::string_view b, long n) {
     const double id = reader.value(p, end);
     if (loops.empty() || loops.back().id != id)
       fail(n, "END " + number(id) + " without its WHILE ... DO " + number(id) + " (loops close innermost first)");
-    jump(loops.back().start, n);
+    if (++loops.back().turns > options_.maxLoopIterations)
+      fail(n, "WHILE ... DO " + number(id) + " has turned " + std::to_string(options_.maxLoopIterations) +
+                  " times: an endless loop? Check its condition");
+    cursor_ = loops.back().start;
   } else {
     (void)start;
     return false;
@@ -320,8 +348,7 @@ bool MacroProgram::next(std::string_view& line, long& number) {
     File& main = files_[0];
     if (frames_.size() == 1 && frames_[0].loops.empty() && cursor_.file == 0 && main.lines.size() > kMaxKeptLines &&
         cursor_.index > main.dropped + kMaxKeptLines / 2) {
-      main.lines.erase(main.lines.begin(), main.lines.begin() + kMaxKeptLines / 2);
-      main.dropped += kMaxKeptLines / 2;
+      main.dropFront(kMaxKeptLines / 2);
     }
     Stored* stored = fetch(cursor_);
     if (stored == nullptr) {

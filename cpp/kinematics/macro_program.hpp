@@ -12,6 +12,7 @@
 
 #include <deque>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +20,7 @@
 namespace hsm::kinematics::detail {
 
 inline constexpr size_t kMaxKeptLines = 2'000'000;
+inline constexpr size_t kChunkBytes = 1 << 20;
 inline constexpr int kMaxMacroCallDepth = 20;  // Fanuc: 10 M98 levels and 5 G65 levels; generously above both
 
 struct MacroOptions {
@@ -38,14 +40,22 @@ public:
 
 private:
   struct Stored {
-    std::string text;
+    std::string_view text;  // into its file's arena
     long number;
+    size_t chunk;           // the arena chunk holding it, counted from the file's first
   };
   struct File {
     std::string name;
     std::deque<Stored> lines;
     size_t dropped = 0;  // lines let go from the front (the program only)
     bool streaming;      // the program itself: read from the source as needed
+    // The lines' text, in chunks of kChunkBytes: no allocation per line, and whole chunks are let go with the
+    // lines in them.
+    std::deque<std::unique_ptr<char[]>> chunks;
+    size_t chunkUsed = 0, chunksDropped = 0;
+
+    void keep(std::string_view raw, long number);
+    void dropFront(size_t count);
   };
   struct Cursor {
     size_t file = 0, index = 0;  // index counts from the file's first line, dropped ones included
@@ -53,6 +63,7 @@ private:
   struct Loop {
     int id;
     Cursor start;  // the WHILE (or DO) line
+    long turns = 0;
   };
   struct Frame {
     Cursor start;     // the subprogram's first line (for its repeats)
@@ -81,7 +92,7 @@ private:
   LineSource& source_;
   MacroOptions options_;
   NgcParameters parameters_{ParameterLanguage::MacroB};
-  std::vector<File> files_;
+  std::deque<File> files_;  // a deque: a file (its arena) never moves
   std::vector<Frame> frames_;
   std::map<long, Cursor> programs_;          // O-numbers seen, where their first line is
   std::map<std::pair<size_t, size_t>, long> jumpsBack_;  // jumps back to a line, for the loop bound

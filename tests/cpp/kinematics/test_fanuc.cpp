@@ -198,7 +198,7 @@ TEST(FanucMacro, WhatCannotRunIsNamedAndLoopsAreBounded) {
   ReaderOptions bounded = kFanuc;
   bounded.maxLoopIterations = 1000;
   EXPECT_EQ(errorOf("N1 G1 X1. F100\nGOTO 1\n", bounded).rfind("line 2: the program has jumped back to the same line 1000 times", 0), 0u);
-  EXPECT_EQ(errorOf("#1=1\nWHILE [#1 GT 0] DO 1\nEND 1\n", bounded).rfind("line 3: the program has jumped back", 0), 0u);
+  EXPECT_EQ(errorOf("#1=1\nWHILE [#1 GT 0] DO 1\nEND 1\n", bounded).rfind("line 3: WHILE ... DO 1 has turned 1000 times", 0), 0u);
   EXPECT_EQ(errorOf("#3000=12 (TOOL BROKEN)\n", kFanuc).rfind("line 1: the program raises alarm #3000 = 12", 0), 0u);
   EXPECT_EQ(errorOf("GOTO 55\n", kFanuc).rfind("line 1: N55 is not in this program", 0), 0u);
   EXPECT_EQ(errorOf("WHILE [1 EQ 0] DO 1\nG1 X1. F100\n", kFanuc).rfind("line 1: WHILE ... DO 1 has no END 1", 0), 0u);
