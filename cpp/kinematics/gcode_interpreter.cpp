@@ -43,9 +43,10 @@ void Interpreter::positions(double (*out)[3]) const {
   }
 }
 
-double Interpreter::dimension(const Word& w) const {
+double Interpreter::dimension(const Word& w, const LineWords& words) const {
   if (!options_.conventions.leastIncrementInput || w.text.find('.') != std::string_view::npos) return w.value;
-  return w.value * (unit_ == 1.0 ? kLeastIncrementMm : kLeastIncrementInch);
+  const double units = words.units > 0.0 ? words.units : unit_;  // a G20 before it on the line counts
+  return w.value * (units == 1.0 ? kLeastIncrementMm : kLeastIncrementInch);
 }
 
 double Interpreter::dwellSeconds(const LineWords& w) const {
@@ -84,25 +85,25 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
         const int a = w.letter - 'X';
         if (words.hasAxis[a]) throw ParseError(lineNumber_, std::string("axis ") + w.letter + " given twice");
         words.hasAxis[a] = true;
-        words.axis[a] = dimension(w);
+        words.axis[a] = dimension(w, words);
         break;
       }
       case 'I': case 'J': case 'K': {
         const int a = w.letter - 'I';
         words.hasOffset[a] = true;
-        words.offset[a] = dimension(w);
+        words.offset[a] = dimension(w, words);
         if (a == 2) words.kCount = w.value;
         break;
       }
-      case 'A': case 'B': case 'C': rotaryWord(w.letter - 'A', dimension(w), w.text, words); break;
+      case 'A': case 'B': case 'C': rotaryWord(w.letter - 'A', dimension(w, words), w.text, words); break;
       case 'F': words.fWord = w.value; words.hasFeed = true; break;
-      case 'R': words.radiusWord = dimension(w); words.hasRadius = true; break;
+      case 'R': words.radiusWord = dimension(w, words); words.hasRadius = true; break;
       case 'P':
         words.pWord = w.value;
         words.hasP = true;
         words.pHasPoint = w.text.find('.') != std::string_view::npos;
         break;
-      case 'Q': words.qWord = dimension(w); words.hasQ = true; break;
+      case 'Q': words.qWord = dimension(w, words); words.hasQ = true; break;
       case 'E': words.eWord = w.value; words.hasE = true; break;
       case 'L': words.lWord = w.value; words.hasL = true; break;
       case 'M': mWord(w); break;
@@ -117,6 +118,17 @@ bool Interpreter::collect(const Line& line, LineWords& words) {
 }
 
 void Interpreter::applyModes(const LineWords& w) {
+  // LinuxCNC sets the feed before the line's units ("G-code order of execution"): `G20 F6` is 6 mm/min on a
+  // machine that was in G21, as LinuxCNC runs it. Elsewhere the units come first.
+  const bool feedBeforeUnits = options_.conventions.dialect == Dialect::LinuxCnc ||
+                               options_.conventions.dialect == Dialect::Grbl;
+  if (w.units > 0.0 && !feedBeforeUnits) unit_ = w.units;
+  applyFeed(w);
+  if (w.units > 0.0) unit_ = w.units;
+  applyOtherModes(w);
+}
+
+void Interpreter::applyFeed(const LineWords& w) {
   if (w.hasFeed && !w.dwell) {
     // F0 is legal where no feed move follows it (FreeCAD CAM's area operations write `G0 F0 Z…`, as LinuxCNC
     // reads it): a feed move at F0 is the error, named with the line that set it.
@@ -128,6 +140,9 @@ void Interpreter::applyModes(const LineWords& w) {
       zeroFeedLine_ = w.fWord == 0.0 ? lineNumber_ : 0;
     }
   }
+}
+
+void Interpreter::applyOtherModes(const LineWords& w) {
   if (w.dwell) {
     // LinuxCNC G4 P (s), Siemens G4 F (s), Fanuc G4 P (ms) or X (s)
     const bool fanucX = isFanucFamily(options_.conventions.dialect) && w.hasAxis[0] && !w.hasP;
@@ -430,8 +445,8 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
     case 40: words.dwell = true; break;
     case 90: words.exactStopHere = true; break;
     case 170: case 180: case 190: plane_ = int(code / 10); break;
-    case 200: case 700: case 7000: unit_ = 25.4; break;  // G20; 840D G70/G700
-    case 210: case 710: case 7100: unit_ = 1.0; break;   // G21; 840D G71/G710
+    case 200: case 700: case 7000: words.units = 25.4; break;  // G20; 840D G70/G700
+    case 210: case 710: case 7100: words.units = 1.0; break;   // G21; 840D G71/G710
     case 900: absolute_ = true; break;
     case 910: absolute_ = false; break;
     case 901: arcCentreAbsolute_ = true; break;

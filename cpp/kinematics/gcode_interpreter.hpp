@@ -19,6 +19,7 @@ struct LineWords {
   int cycle = 0;       // 73, 74, 76, 81…89 when the line has that canned cycle's G word
   int home = 0;        // 28 or 30: back to the reference point through the line's point
   bool machineCoordinates = false;  // G53: the line's coordinates are the machine's
+  double units = 0.0;  // mm per program unit that G20/G21 (840D G70/G71…) set, applied in the control's order
   int lookAhead = 0;                // G05.1 (51), G05 (50), G08 (80), G187 (1870): a look-ahead mode
   int offsetSetting = 0;            // 10 (G10 L2/L20), 92 (G92): the line sets an offset, it does not move
   bool cancelCycle = false;  // G80
@@ -56,8 +57,10 @@ public:
 private:
   // The line's words and keywords; false when the line is to be skipped (a Siemens frame instruction).
   bool collect(const Line& line, LineWords& words);
-  // Feed, dwell, G64 and the motion mode of the line.
+  // Feed, units, dwell, G64 and the motion mode of the line, in the control's order.
   void applyModes(const LineWords& words);
+  void applyFeed(const LineWords& words);
+  void applyOtherModes(const LineWords& words);
   // The motion block of the line, if it moves.
   bool makeBlock(const LineWords& words, Block& block);
 
@@ -66,7 +69,7 @@ private:
   void unknownMotion(std::string_view word, std::string_view what);
   // A dimension word's value in program units: a number without a point counts least increments where the
   // control reads it so (dialect.hpp).
-  double dimension(const Word& w) const;
+  double dimension(const Word& w, const LineWords& words) const;
   // A dwell's P in seconds: LinuxCNC's and the 840D's in s; a Fanuc's and a Haas's in ms without a point.
   double dwellSeconds(const LineWords& words) const;
   // G28 / G30: rapid to the line's point (the intermediate point), then to the reference point on the axes

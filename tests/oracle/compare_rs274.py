@@ -48,7 +48,7 @@ def rs274_moves(program, tool_table):
     """[Move] as rs274 runs the program; (None, what rs274 said) when it stops on an error."""
     run = subprocess.run(["rs274", "-g", "-t", tool_table, program], capture_output=True, text=True, timeout=120,
                          stdin=subprocess.DEVNULL)
-    unit, feed, inverse, plane, said = 1.0, 0.0, False, PLANES["CANON_PLANE_XY"], []
+    unit, feed, feed_unit, inverse, plane, said = 1.0, 0.0, 1.0, False, PLANES["CANON_PLANE_XY"], []
     moves, position = [], ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
     # rs274 prints positions in the program's coordinates; the machine is there plus the work offset (G54…,
     # G10) and G92's, which it prints as they change. Our reader gives the machine's position.
@@ -70,7 +70,9 @@ def rs274_moves(program, tool_table):
         elif name == "SET_G92_OFFSET":
             shift = tuple(float(v) * unit for v in arguments[0:3])
         elif name == "SET_FEED_RATE":
-            feed = float(arguments[0])
+            # milltask's canon converts F to mm/min when it is set, in the units then in force (rs274 executes F
+            # before the line's G20/G21): a later G20 does not change the speed
+            feed, feed_unit = float(arguments[0]), unit
         elif name == "SET_FEED_MODE":
             inverse = arguments[-1].strip() == "1"
         elif name == "SELECT_PLANE":
@@ -81,7 +83,7 @@ def rs274_moves(program, tool_table):
                 moves.append(Move("STRAIGHT_FEED", end, position[1], None, None))
         elif name in MOVES:
             values = [float(v) for v in arguments]
-            rate = feed if inverse else feed * unit
+            rate = feed if inverse else feed * feed_unit
             if name == "ARC_FEED":
                 first, second, axis = plane
                 end = [0.0, 0.0, 0.0]

@@ -90,7 +90,7 @@ def sampler_cfg(joints):
     return "f" + "f" * joints + "sbsu"
 
 
-def ini_lines(machine, folder, program, run_timeout):
+def ini_lines(machine, folder, program, run_timeout, start_units="mm"):
     linear = [machine.axes[n] for n in LINEAR]
     vmax = math.sqrt(sum(v * v for v, *_ in linear))
     amax = math.sqrt(sum(a * a for _, a, *_ in linear))
@@ -104,6 +104,12 @@ def ini_lines(machine, folder, program, run_timeout):
         f"RUN_TIMEOUT = {run_timeout:.0f}", f"JOINTS = {machine.joints}",
         "[TASK]", "TASK = milltask", "CYCLE_TIME = 0.001",
         "[RS274NGC]", f"PARAMETER_FILE = {folder}/oracle.var",
+    ]
+    if start_units == "inch":
+        # an inch program starts in G20, as on the inch machine it was written for: LinuxCNC reads the F of the
+        # line that holds the G20 before the G20 (order of execution), in the units the interpreter starts in
+        ini += ["RS274NGC_STARTUP_CODE = G20"]
+    ini += [
         "[EMCMOT]", "EMCMOT = motmod", "COMM_TIMEOUT = 1.0", "BASE_PERIOD = 0",
         f"SERVO_PERIOD = {round(machine.period * 1e9)}",
         "[EMCIO]", "EMCIO = io", "CYCLE_TIME = 0.100", f"TOOL_TABLE = {folder}/tool.tbl",
@@ -175,10 +181,11 @@ def tool_table():
     return "".join("T%d P%d D0 Z0 ;oracle tool %d\n" % (n, n, n) for n in range(1, ORACLE_TOOLS + 1))
 
 
-def write_config(machine, folder, program, run_timeout, fallback_uid):
-    """INI, HAL, the DISPLAY wrapper and a tool table in folder; returns the INI's path."""
+def write_config(machine, folder, program, run_timeout, fallback_uid, start_units="mm"):
+    """INI, HAL, the DISPLAY wrapper and a tool table in folder; returns the INI's path. start_units: the
+    length units the interpreter starts in ("mm" or "inch", its RS274NGC_STARTUP_CODE)."""
     with open(os.path.join(folder, "oracle.ini"), "w") as f:
-        f.write("\n".join(ini_lines(machine, folder, program, run_timeout)) + "\n")
+        f.write("\n".join(ini_lines(machine, folder, program, run_timeout, start_units)) + "\n")
     with open(os.path.join(folder, "oracle.hal"), "w") as f:
         f.write("\n".join(hal_lines(machine)) + "\n")
     with open(os.path.join(folder, "tool.tbl"), "w") as f:

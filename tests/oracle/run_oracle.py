@@ -11,7 +11,8 @@ with the same machine file, and prints and writes the table program, LinuxCNC s,
 
     /usr/bin/python3 tests/oracle/run_oracle.py [PROGRAM ...] [--out build/oracle] [--max-error 2]
 
-Without programs: tests/oracle/programs/*.ngc and tests/golden/linuxcnc_fixed.ngc on machine.json,
+Without programs: tests/oracle/programs/*.ngc, tests/golden/linuxcnc_fixed.ngc and three real programs of the
+shared corpus (../shared/data/realworld_gcode/linuxcnc: gcmc, a V-carve, OpenVoronoi) on machine.json,
 programs_xyzac/*.ngc on machine_xyzac.json, programs_xyzbc/*.ngc on machine_xyzbc.json. Writes OUT/oracle.md,
 OUT/oracle.csv and per program OUT/<name>/ (LinuxCNC's sampled trace and per-line speeds, hsm-feedsim's
 summary, blocks and trace). Exit code: 0 (the table is a measurement), 2 if LinuxCNC failed on a program
@@ -43,6 +44,10 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 # on xyzac-trt-kins and xyzbc-trt-kins in TCP mode), and programs from elsewhere run on the 3-axis machine
 SETS = [("programs", "machine.json"), ("programs_xyzac", "machine_xyzac.json"), ("programs_xyzbc", "machine_xyzbc.json")]
 EXTRA_PROGRAMS = [os.path.join(REPO, "tests", "golden", "linuxcnc_fixed.ngc")]
+# real programs of the shared corpus (other CAMs' output, read from ../shared, never copied here) whose run fits
+# the 10-minute budget of one program: the others take 13 to 48 min in real time (docs/oracle.md)
+CORPUS = os.path.join(os.path.dirname(REPO), "shared", "data", "realworld_gcode", "linuxcnc")
+CORPUS_PROGRAMS = ["trochoidal_gcmc.ngc", "cereal_vcarve.ngc", "vcarve_openvoronoi.ngc"]
 RUN_LOCK = "/tmp/hsm-oracle.lock"
 MARGIN_S = 90.0  # LinuxCNC's start and shutdown, on top of the program's length bound
 LINUXCNC_LOCK = "/tmp/linuxcnc.lock"
@@ -148,15 +153,30 @@ def fallback_uid():
 WORD = re.compile(r"([A-Za-z])\s*([-+]?\d*\.?\d+)")
 
 
-def naive_time(path):
+def program_units(path):
+    """"inch" when the program's first G20/G21 is a G20 (the interpreter then starts in G20, as on the inch machine
+    the program was written for: see oracle_config.ini_lines), "mm" otherwise."""
+    with open(path, errors="replace") as f:
+        for raw in f:
+            text = re.sub(r"\(.*?\)", "", raw.split(";")[0])
+            for letter, number in WORD.findall(text):
+                if letter.upper() == "G" and float(number) in (20, 21):
+                    return "inch" if float(number) == 20 else "mm"
+    return "mm"
+
+
+def naive_time(path, start_units="mm"):
     """Σ length / F + dwells over the program (arcs counted as full circles, rapids at 1000 mm/min): a generous
-    upper bound of the motion time of any sane program, for the timeout only."""
-    pos, angles, feed, motion, total = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], 1000.0, 0, 0.0
+    upper bound of the motion time of any sane program, for the timeout only. Lengths and F in mm from the
+    G20/G21 in effect, starting in start_units; an F is read in the units in force before its line's G20/G21,
+    as LinuxCNC does (so `G20 F6` on a control that starts in mm is 6 mm/min)."""
+    scale = 25.4 if start_units == "inch" else 1.0
+    pos, angles, feed, feed_deg, motion, total = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], 1000.0, 1000.0, 0, 0.0
     with open(path, errors="replace") as f:
         for raw in f:
             text = re.sub(r"\(.*?\)", "", raw.split(";")[0])
             words = WORD.findall(text)
-            values, dwell = {}, False
+            values, dwell, line_scale = {}, False, scale
             for letter, number in words:
                 letter = letter.upper()
                 if letter == "G":
@@ -164,17 +184,24 @@ def naive_time(path):
                     if g in (0, 1, 2, 3):
                         motion = int(g)
                     dwell = dwell or g == 4
+                    if g in (20, 21):
+                        line_scale = 25.4 if g == 20 else 1.0
                 elif letter in "XYZABCFRIJKP":
                     values[letter] = float(number)
+            if "F" in values and values["F"] > 0:
+                feed = values["F"] * scale  # mm/min (deg/min on the rotary axes alone: not scaled)
+                feed_deg = values["F"]
+            scale = line_scale
+            for letter in "XYZRIJK":
+                if letter in values:
+                    values[letter] *= scale
             if dwell:
                 total += abs(values.get("P", 0.0))
                 continue
-            if "F" in values and values["F"] > 0:
-                feed = values["F"]
             target = [values.get(a, p) for a, p in zip("XYZ", pos)]
             turned = [values.get(a, p) for a, p in zip("ABC", angles)]
             if target == pos and turned != angles:  # the rotary axes alone: F in deg/min
-                total += math.dist(turned, angles) / (1000.0 if motion == 0 else feed) * 60.0
+                total += math.dist(turned, angles) / (1000.0 if motion == 0 else feed_deg) * 60.0
             angles = turned
             if target != pos:
                 length = math.dist(target, pos)
@@ -202,10 +229,11 @@ def tail(path, lines=40):
 def run_linuxcnc(program, machine):
     """Runs the program in LinuxCNC; returns (samples path, status dict, folder, log text). Raises RunFailed
     (with the log's tail) when LinuxCNC fails, after ending whatever of it is left."""
-    limit = 30.0 + 10.0 * naive_time(program)
+    units = program_units(program)
+    limit = 30.0 + 10.0 * naive_time(program, units)
     folder = tempfile.mkdtemp(prefix="hsm-oracle-")
     uid = fallback_uid()
-    ini = write_config(machine, folder, program, limit, uid)
+    ini = write_config(machine, folder, program, limit, uid, units)
     marker = uuid.uuid4().hex
     env = {
         "PATH": "/usr/bin:/bin:/usr/sbin:/sbin", "HOME": folder, "LANG": "C.UTF-8",
@@ -266,6 +294,7 @@ def run_linuxcnc(program, machine):
     if leftovers:
         status.setdefault("messages", []).append("killed leftover processes: " + ", ".join(leftovers))
     status["realtime_delay_reported"] = "Unexpected realtime delay" in log_text
+    status["start_units"] = units
     return os.path.join(folder, "samples.txt"), status, folder, log_text
 
 
@@ -374,6 +403,17 @@ def write_per_line(path, per_line, period):
 # ---------------------------------------------------------------------------------------------------------
 # hsm-feedsim
 
+def inch_start_copy(machine_file):
+    """The machine file with G20 added to its power-on codes (hsm-feedsim's start in inches), beside it."""
+    with open(machine_file) as f:
+        data = json.load(f)
+    data["power_on_codes"] = (data.get("power_on_codes", "") + " G20").strip()
+    copy = os.path.splitext(machine_file)[0] + "_g20.json"
+    with open(copy, "w") as f:
+        json.dump(data, f, indent=1)
+    return copy
+
+
 def run_feedsim(feedsim, program, machine_file, folder):
     """Our simulated time; waits up to 5 min for the binary if it is being rebuilt."""
     end = time.monotonic() + 300
@@ -449,6 +489,7 @@ def default_programs():
             found += sorted(os.path.join(path, name) for name in os.listdir(path) if name.endswith(".ngc"))
         if folder == "programs":
             found += [p for p in EXTRA_PROGRAMS if os.path.exists(p)]
+            found += [p for p in (os.path.join(CORPUS, name) for name in CORPUS_PROGRAMS) if os.path.exists(p)]
     return found
 
 
@@ -525,6 +566,7 @@ def main():
             detail["wall_run_s"] = status.get("wall_run_s")
             detail["realtime_delay_reported"] = status.get("realtime_delay_reported")
             detail["messages"] = status.get("messages", [])
+            detail["start_units"] = status.get("start_units")
             write_trace(os.path.join(folder, "linuxcnc_trace.csv"), rows, first, last, period, machine.axes)
             write_per_line(os.path.join(folder, "linuxcnc_lines.csv"), detail["per_line"], period)
             with open(os.path.join(folder, "linuxcnc.json"), "w") as f:
@@ -540,6 +582,8 @@ def main():
                 print("---- LinuxCNC log tail ----\n" + failure.log_tail.rstrip() + "\n---------------------------",
                       flush=True)
         try:
+            if program_units(program) == "inch":  # hsm-feedsim starts in G20 too, as LinuxCNC's interpreter does
+                machine_file = inch_start_copy(machine_file)
             summary = run_feedsim(args.feedsim, program, machine_file, folder)
             result["ours_s"] = summary["total_time_s"]
             result["programmed_mm"] = summary["cutting_length_mm"] + summary["rapid_length_mm"]

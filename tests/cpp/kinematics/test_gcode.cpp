@@ -32,9 +32,16 @@ TEST(Gcode, LinesFeedsAndModalState) {
 
 TEST(Gcode, InchesAndFreeCadFeedsInMmPerSecond) {
   EXPECT_DOUBLE_EQ(readProgram("G70 G1 X1 F10\nG71 X1\n")[1].end.x(), 1.0);  // 840D: G70 inch, G71 mm
-  const auto inch = readProgram("G20 G1 X1 F10\n");
+  const auto inch = readProgram("G20\nG1 X1 F10\n");
   EXPECT_DOUBLE_EQ(inch[0].end.x(), 25.4);
   EXPECT_DOUBLE_EQ(inch[0].feed, 254.0 / 60.0);
+  // LinuxCNC sets F before the line's G20 ("order of execution"; rs274 shows it): from G21, `G20 F10` is 10 mm/min
+  const auto sameLine = readProgram("G20 G1 X1 F10\n");
+  EXPECT_DOUBLE_EQ(sameLine[0].end.x(), 25.4);
+  EXPECT_DOUBLE_EQ(sameLine[0].feed, 10.0 / 60.0);
+  ReaderOptions siemens;
+  siemens.conventions.dialect = Dialect::Siemens840D;
+  EXPECT_DOUBLE_EQ(readProgram("G70 G1 X1 F10\n", siemens)[0].feed, 254.0 / 60.0);
   ReaderOptions path;
   path.feedInMmPerSecond = true;
   EXPECT_DOUBLE_EQ(readProgram("G1 X1 F10\n", path)[0].feed, 10.0);
