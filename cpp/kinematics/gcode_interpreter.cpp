@@ -179,6 +179,15 @@ void Interpreter::applyOtherModes(const LineWords& w) {
 
 bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   if (w.offsetSetting != 0) return false;
+  if (w.mcall) {  // MCALL CYCLE8x(…): called after each move from the next on; MCALL alone: no more
+    mcallCycle_ = w.siemensCycle;
+    mcallArguments_ = std::string(w.siemensArguments);
+    return false;
+  }
+  if (w.siemensCycle != 0) {
+    siemensDrilling(w.siemensCycle, std::string(w.siemensArguments));
+    return takeQueued(block);
+  }
   if (w.rigidTap) return rigidTapBlocks(w, block);
   if (w.home != 0) return homeBlocks(w, block);
   if (cycle_ != 0 && (w.cycle > 0 || w.anyAxis())) return repeatedCycle(w, block);
@@ -250,6 +259,7 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   rotary_ = rotaryTarget;
   orientation_ = orientationTarget;
   ++stats_.motionBlocks;
+  if (mcallCycle_ != 0) siemensDrilling(mcallCycle_, mcallArguments_);  // its moves follow this block's
   return true;
 }
 
@@ -296,7 +306,17 @@ bool Interpreter::repeatedCycle(const LineWords& w, Block& block) {
   if (!(repeats >= 0.0 && repeats <= 10000.0 && std::abs(repeats - std::round(repeats)) < 1e-6))
     throw ParseError(lineNumber_, "G" + std::to_string(cycle_) + " " + word + number(repeats) +
                                       ": a cycle's repeat count is a whole number from 0 to 10000");
-  for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
+  // LinuxCNC runs a cycle's moves in exact stop (rs274 shows SET_MOTION_CONTROL_MODE(CANON_EXACT_PATH) around
+  // them), as a Fanuc positions at each of its points; the path mode in force comes back after.
+  const PathMode mode = pathMode_;
+  pathMode_ = PathMode::ExactStop;
+  try {
+    for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
+  } catch (...) {
+    pathMode_ = mode;
+    throw;
+  }
+  pathMode_ = mode;
   return takeQueued(block);
 }
 
@@ -339,7 +359,9 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   double x = position_.x(), y = position_.y();
   if (w.hasAxis[0]) x = absolute_ ? fromProgram(0, w.axis[0]).x() : x + w.axis[0] * unit_;
   if (w.hasAxis[1]) y = absolute_ ? fromProgram(1, w.axis[1]).y() : y + w.axis[1] * unit_;
-  const double clear = retractToR_ && !backBoring ? cycleR_ : std::max(cycleStartZ_, cycleR_);
+  const double clear = std::isfinite(cycleClear_)        ? cycleClear_
+                       : retractToR_ && !backBoring ? cycleR_
+                                                    : std::max(cycleStartZ_, cycleR_);
   constexpr double kPeckClearance = 0.254;  // mm: LinuxCNC's 0.010 inch above the last peck, or back for G73
   auto go = [&](double tx, double ty, double tz, bool rapid) { queueMove(Eigen::Vector3d(tx, ty, tz), rapid); };
   if (position_.z() < cycleR_ && !backBoring) go(position_.x(), position_.y(), cycleR_, true);
@@ -363,6 +385,90 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   if (cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || (cycle_ == 89 && !feedsToClear)) go(x, y, cycleR_, false);
   go(x, y, clear, true);
   return true;
+}
+
+namespace {
+// The comma-separated arguments of an 840D cycle call; an empty one is NaN (not given).
+std::vector<double> cycleArguments(const std::string& text, const std::string& name, long line) {
+  std::vector<double> values;
+  size_t from = 0;
+  for (;;) {
+    const size_t comma = std::min(text.find(',', from), text.size());
+    std::string_view item(text.data() + from, comma - from);
+    while (!item.empty() && (item.front() == ' ' || item.front() == '\t')) item.remove_prefix(1);
+    while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.remove_suffix(1);
+    double value = std::numeric_limits<double>::quiet_NaN();
+    if (!item.empty() && item.front() != '"') {
+      const char* begin = item.data() + (item.front() == '+' ? 1 : 0);
+      const auto parsed = fast_float::from_chars(begin, item.data() + item.size(), value, fast_float::chars_format::fixed);
+      if (parsed.ec != std::errc() || parsed.ptr != item.data() + item.size() || !std::isfinite(value))
+        throw ParseError(line, name + " argument " + std::to_string(values.size() + 1) + " '" + std::string(item) +
+                                   "' is not a number: the 840D's R parameters and expressions are not read yet; "
+                                   "write the value");
+    }
+    values.push_back(value);
+    if (comma >= text.size()) return values;
+    from = comma + 1;
+  }
+}
+}  // namespace
+
+// Siemens SINUMERIK 840D sl Cycles Programming Manual, "Drilling cycles": CYCLE81(RTP, RFP, SDIS, DP, DPR) and
+// the others with these first five: rapid to the reference plane RFP plus the safety distance SDIS, in to the
+// final depth DP (or DPR below RFP), back to the retraction plane RTP. CYCLE82 dwells DTB s; CYCLE83 pecks
+// (FDEP or FDPR the first depth, each peck that deep: the degression DAM is not applied; VARI 1 back to
+// RFP + SDIS after each, 0 breaking the chip); CYCLE84 taps at S times the pitch PIT and back; CYCLE85 and
+// CYCLE89 feed out to RFP + SDIS; CYCLE86, 87, 88 come out at rapid (87's and 88's operator stop not timed).
+void Interpreter::siemensDrilling(int number, const std::string& arguments) {
+  const std::string name = "CYCLE" + std::to_string(number);
+  std::vector<double> a = cycleArguments(arguments, name, lineNumber_);
+  a.resize(16, std::numeric_limits<double>::quiet_NaN());
+  auto given = [&](int i) { return std::isfinite(a[static_cast<size_t>(i)]); };
+  if (!given(0) || !given(1) || (!given(3) && !given(4)))
+    throw ParseError(lineNumber_, name + " needs RTP, RFP and DP (or DPR): the retraction and reference planes and "
+                                         "the final depth");
+  const double rtp = a[0] * unit_, rfp = a[1] * unit_, sdis = given(2) ? a[2] * unit_ : 0.0;
+  const double frameZ = frame().z();
+  cycleClear_ = rtp + frameZ;
+  cycleR_ = rfp + sdis + frameZ;
+  cycleZ_ = (given(3) ? a[3] * unit_ : rfp - std::abs(a[4]) * unit_) + frameZ;
+  cycleP_ = 0.0;
+  const int dwellArgument = number == 82 || number == 85 || number == 86 || number == 88 || number == 89 ? 5
+                            : number == 83                                                             ? 8
+                                                                                                       : -1;
+  if (dwellArgument > 0 && given(dwellArgument)) cycleP_ = std::abs(a[static_cast<size_t>(dwellArgument)]);
+  int as = number;
+  const double feed = feed_;
+  if (number == 83) {
+    const double first = given(6) ? std::abs(a[6]) * unit_ : given(5) ? rfp + frameZ - (a[5] * unit_ + frameZ) : 0.0;
+    cycleQ_ = first > 0.0 ? first : (cycleR_ - cycleZ_);
+    as = given(11) && a[11] == 0.0 ? 73 : 83;
+  } else if (number == 84) {
+    const double pitch = given(8) ? std::abs(a[8]) * unit_ : 0.0;
+    const double speed = given(10) ? std::abs(a[10]) : spindle_;
+    if (!(pitch > 0.0 && speed > 0.0))
+      throw ParseError(lineNumber_, "CYCLE84 needs the pitch PIT (argument 9) and a spindle speed (SST or S)");
+    feed_ = speed * pitch / 60.0;
+  } else if (number == 87 || number == 88) {
+    as = 86;
+  }
+  const int savedCycle = cycle_;
+  const PathMode mode = pathMode_;
+  cycle_ = as;
+  pathMode_ = PathMode::ExactStop;
+  try {
+    cycleBlocks(LineWords{}, false);
+  } catch (...) {
+    cycle_ = savedCycle;
+    pathMode_ = mode;
+    feed_ = feed;
+    cycleClear_ = std::numeric_limits<double>::quiet_NaN();
+    throw;
+  }
+  cycle_ = savedCycle;
+  pathMode_ = mode;
+  feed_ = feed;
+  cycleClear_ = std::numeric_limits<double>::quiet_NaN();
 }
 
 bool Interpreter::homeBlocks(const LineWords& w, Block& block) {
@@ -488,8 +594,11 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
     case 6010: case 6020: case 6030: case 5000: case 5010: case 1030: case 1000:
       break;
     case 160: unknownMotion(w.text, "polar coordinates"); break;
+    default:
+      // The 840D's settable zero offsets G505…G599 (and G500 off), taken as the program's work offset
+      if (options_.conventions.dialect == Dialect::Siemens840D && code >= 5000 && code <= 5990 && code % 10 == 0) break;
+      unknownMotion(w.text, "a G code the simulator does not know");
     case 680: case 682: case 531: case 681: unknownMotion(w.text, "a rotated or tilted working plane (read: G43.4, G234)"); break;
-    default: unknownMotion(w.text, "a G code the simulator does not know");
   }
 }
 
@@ -519,6 +628,11 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     // operator messages
   } else if (name == "CYCLE832" && k.call) {
     cycle832(k.arguments);
+  } else if (name.size() == 7 && name.substr(0, 6) == "CYCLE8" && name[6] >= '1' && name[6] <= '9' && k.call) {
+    words.siemensCycle = 80 + (name[6] - '0');
+    words.siemensArguments = k.arguments;
+  } else if (name == "MCALL") {
+    words.mcall = true;
   } else if ((name == "A" || name == "B" || name == "C") && k.hasValue) {
     rotaryWord(name[0] - 'A', k.value, name, words);
   } else if ((name == "A3" || name == "B3" || name == "C3") && k.hasValue) {

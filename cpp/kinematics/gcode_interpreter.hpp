@@ -8,6 +8,7 @@
 
 #include <array>
 #include <deque>
+#include <string>
 #include <limits>
 #include <string_view>
 
@@ -20,6 +21,9 @@ struct LineWords {
   int home = 0;        // 28 or 30: back to the reference point through the line's point
   bool machineCoordinates = false;  // G53: the line's coordinates are the machine's
   double units = 0.0;  // mm per program unit that G20/G21 (840D G70/G71…) set, applied in the control's order
+  int siemensCycle = 0;             // 81…89: the line calls CYCLE81…CYCLE89 (with `siemensArguments`)
+  std::string_view siemensArguments;
+  bool mcall = false;               // 840D MCALL: the line's cycle is called after each move that follows
   int lookAhead = 0;                // G05.1 (51), G05 (50), G08 (80), G187 (1870): a look-ahead mode
   int offsetSetting = 0;            // 10 (G10 L2/L20), 92 (G92): the line sets an offset, it does not move
   bool cancelCycle = false;  // G80
@@ -72,6 +76,8 @@ private:
   double dimension(const Word& w, const LineWords& words) const;
   // A dwell's P in seconds: LinuxCNC's and the 840D's in s; a Fanuc's and a Haas's in ms without a point.
   double dwellSeconds(const LineWords& words) const;
+  // The 840D's drilling cycle CYCLE81…CYCLE89 with its arguments at the current X Y: queued.
+  void siemensDrilling(int number, const std::string& arguments);
   // G28 / G30: rapid to the line's point (the intermediate point), then to the reference point on the axes
   // named; queued, the first in `block`.
   bool homeBlocks(const LineWords& words, Block& block);
@@ -131,6 +137,9 @@ private:
   bool retractToR_ = false;
   double cycleR_ = std::numeric_limits<double>::quiet_NaN(), cycleZ_ = std::numeric_limits<double>::quiet_NaN();
   double cycleQ_ = 0.0, cycleP_ = 0.0, cycleStartZ_ = 0.0;
+  double cycleClear_ = std::numeric_limits<double>::quiet_NaN();  // the 840D's RTP: where every hole retracts to
+  int mcallCycle_ = 0;              // the 840D's modal cycle (MCALL CYCLE8x), 0: none
+  std::string mcallArguments_;
   // Work offsets (G54…G59.3: entries 1…9, in machine coordinates), the one in use, and G92's shift. Positions
   // are kept in the frame of the machine file's work offset, so that a program that never changes offsets
   // reads in its own coordinates.

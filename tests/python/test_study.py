@@ -21,7 +21,7 @@ class Grid(unittest.TestCase):
                               (dict(k=(0.5,), p=()), "guide curves need both K"),
                               (dict(), "the grid is empty"),
                               (dict(planes_deg=(0,), feeds_mm_min=(0,)), "feed 0 mm/min must be positive"),
-                              (dict(planes_deg=(0,), machines=("haas-vf2",)), "machine 'haas-vf2' is unknown"),
+                              (dict(planes_deg=(0,), machines=("okuma-mb46",)), "machine 'okuma-mb46' is unknown"),
                               (dict(planes_deg=range(0, 100000)), "narrow the ranges"),
                               (dict(planes_deg=(1e300,)), "plane angle 1e+300° must lie within [-360, 360]"),
                               # each range under the limit, their product far over it: refused before any is made

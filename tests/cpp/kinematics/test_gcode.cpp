@@ -298,3 +298,39 @@ TEST(CannedCycles, RigidTappingGoesInAtTheSpindlesPitchAndBackOut) {
   EXPECT_NE(errorOf("G0 Z10\nG33.1 Z-5 K1\n").find("line 2: G33.1 taps at S0"), std::string::npos);
   EXPECT_NE(errorOf("S100 G0 Z10\nG33.1 Z-5\n").find("line 2: G33.1 needs K > 0"), std::string::npos);
 }
+
+// SINUMERIK 840D sl Cycles Programming Manual, "Drilling cycles" (CYCLE81 … CYCLE89) and "Modal call (MCALL)":
+// at the current X Y, rapid to RFP + SDIS, in to DP (or DPR below RFP), back to RTP; MCALL calls the cycle
+// after every move from the next one on, until MCALL alone.
+TEST(SiemensCycles, DrillingCyclesAndTheirModalCall) {
+  ReaderOptions siemens;
+  siemens.conventions.dialect = Dialect::Siemens840D;
+  const auto once = readProgram("G0 X10 Y5 Z50\nG1 F100\nCYCLE81(20, 0, 2, -10)\nG0 X0\n", siemens);
+  ASSERT_EQ(once.size(), 5u);
+  EXPECT_EQ(once[1].end, Eigen::Vector3d(10, 5, 2));
+  EXPECT_EQ(once[1].motion, Motion::Rapid);
+  EXPECT_EQ(once[2].end, Eigen::Vector3d(10, 5, -10));
+  EXPECT_EQ(once[2].motion, Motion::Linear);
+  EXPECT_EQ(once[2].pathMode, PathMode::ExactStop);
+  EXPECT_EQ(once[3].end, Eigen::Vector3d(10, 5, 20));
+  EXPECT_EQ(once[4].pathMode, PathMode::Continuous);  // the path mode comes back after the cycle
+  std::istringstream modal("G0 X0 Y0 Z20\nG1 F100\nMCALL CYCLE82(10, 0, 1, , 5, 0.5)\nG0 X10\nX20\nMCALL\nX30\n");
+  GcodeReader reader(modal, siemens);
+  std::vector<Block> blocks;
+  for (Block b; reader.next(b);) blocks.push_back(b);
+  std::vector<double> bottoms;
+  for (const Block& b : blocks)
+    if (b.motion == Motion::Linear) bottoms.push_back(b.end.x());
+  EXPECT_EQ(bottoms, (std::vector<double>{10, 20}));  // DPR 5: 5 mm below RFP 0
+  EXPECT_DOUBLE_EQ(reader.stats().dwellTime, 1.0);
+  EXPECT_EQ(blocks.back().end, Eigen::Vector3d(30, 0, 10));  // after MCALL alone: no cycle
+  // CYCLE83, swarf removal (VARI 1): pecks of FDPR 4 to DP -10 from RFP 0, back to RFP + SDIS after each
+  const auto deep = readProgram("G0 X0 Y0 Z20\nG1 F100\nCYCLE83(10, 0, 1, -10, , , 4, 0, 0, 0, 1, 1)\n", siemens);
+  int pecks = 0;
+  for (const Block& b : deep) pecks += b.motion == Motion::Linear;
+  EXPECT_EQ(pecks, 3);  // 1 -> -3 -> -7 -> -10
+  EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(R1, 0, 1, -5)\n", siemens)
+                .rfind("line 3: CYCLE81 argument 1 'R1' is not a number: the 840D's R parameters", 0), 0u);
+  EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(10, 0)\n", siemens).rfind("line 3: CYCLE81 needs RTP, RFP and DP", 0), 0u);
+  EXPECT_EQ(readProgram("G505 G0 X1\nG503 X2\nG500 X3\n", siemens).size(), 3u);  // settable zero offsets
+}
