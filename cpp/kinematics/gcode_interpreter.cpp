@@ -492,6 +492,7 @@ void Interpreter::setOffset(const LineWords& w) {
     return;
   }
   const long l = std::lround(w.lWord), p = std::lround(w.pWord);
+  if (w.hasL && (l == 1 || l == 10 || l == 11)) return unknown("G10 L" + number(w.lWord));  // tool data: no move here
   if (!w.hasL || (l != 2 && l != 20))
     return unknownMotion("G10 L" + number(w.lWord), "an offset table the simulator does not keep (G10 L2 and L20 are read)");
   if (!w.hasP || p < 0 || p > 9)

@@ -221,7 +221,9 @@ TEST(FanucMacro, TheMainProgramEndsAtM30OrM99) {
 TEST(FanucDialect, WorkOffsetsAndG92) {
   const auto blocks = readProgram(
       "G10 L2 P2 X-290. Y-200. Z-400.\nG0 G55 X0.\nG54 X0.\nG92 X100.\nX110.\nG92.1\nX0.\nG10 L20 P1 X5.\nX5.\nX6.\n", kFanuc);
-  EXPECT_EQ(column(blocks, 0), (std::vector<double>{10, 0, 10, 0, 1}));  // L20: here is X5  // G55 is 10 mm further in X; G92: here is 100
+  EXPECT_EQ(column(blocks, 0), (std::vector<double>{10, 0, 10, 0, 1}));  // L20: here is X5
+  EXPECT_EQ(readProgram("G10 L1 P1 Z5. R2.\nG0 X1.\n", kFanuc).size(), 1u);  // tool data: counted, no move
+  EXPECT_EQ(errorOf("G10 L3 P1 X5.\n", kFanuc).rfind("line 1: 'G10 L3' (an offset table", 0), 0u);  // G55 is 10 mm further in X; G92: here is 100
 }
 
 // Programs of other ISO dialects and templates a post left unfinished are refused in one line that says so.
