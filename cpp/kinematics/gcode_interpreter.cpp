@@ -25,7 +25,36 @@ Interpreter::Interpreter(const ReaderOptions& options)
 }
 
 Eigen::Vector3d Interpreter::frame() const {
-  return workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_;
+  return workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_ + programmable_;
+}
+
+// SINUMERIK 840D sl Programming Manual Fundamentals, "Coordinate transformations (frames)": TRANS X Y Z replaces
+// the programmable frame by that translation, ATRANS adds to it; TRANS, ROT, SCALE or MIRROR alone clears the
+// whole programmable frame. A rotation, scaling or mirroring with values is not read: it stops the reading.
+void Interpreter::programmableFrame(std::string_view name, const Line& line) {
+  Eigen::Vector3d values = Eigen::Vector3d::Zero();
+  bool any = false;
+  for (int i = 0; i < line.wordCount; ++i) {
+    const Word& w = line.words[static_cast<size_t>(i)];
+    if (w.letter >= 'X' && w.letter <= 'Z') {
+      values[w.letter - 'X'] = w.value * unit_;
+      any = true;
+    } else if (w.letter != 'N') {
+      any = true;  // ROT RPL=…, an A B C angle…: more than a translation
+      if (name == "TRANS" || name == "ATRANS") return unknownMotion(w.text, "a frame of more than X Y Z");
+    }
+  }
+  if (!any && line.keywords.size() == 1 && (name == "TRANS" || name == "ROT" || name == "SCALE" || name == "MIRROR")) {
+    programmable_.setZero();
+    return;
+  }
+  if (name == "TRANS") {
+    programmable_ = values;
+  } else if (name == "ATRANS") {
+    programmable_ += values;
+  } else {
+    unknownMotion(name, "a frame that turns, scales or mirrors the coordinates");
+  }
 }
 
 Eigen::Vector3d Interpreter::fromProgram(int axis, double value) const {
@@ -72,8 +101,8 @@ bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
 bool Interpreter::collect(const Line& line, LineWords& words) {
   for (const Keyword& k : line.keywords) {
     if (isFrameKeyword(k.name)) {
-      unknownMotion(k.name, "a frame that shifts or turns the coordinates");  // when skipped: the whole line
-      return false;
+      programmableFrame(k.name, line);
+      return false;  // the line's coordinates were the frame's, not a move
     }
     keyword(k, words);
   }

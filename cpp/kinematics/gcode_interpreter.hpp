@@ -81,6 +81,8 @@ private:
   // G28 / G30: rapid to the line's point (the intermediate point), then to the reference point on the axes
   // named; queued, the first in `block`.
   bool homeBlocks(const LineWords& words, Block& block);
+  // The 840D's TRANS / ATRANS (and the frame cleared by TRANS, ROT, SCALE or MIRROR alone).
+  void programmableFrame(std::string_view name, const Line& line);
   // G10 L2 / L20 (a work offset's table entry) and G92 (a shift of the coordinates).
   void setOffset(const LineWords& words);
   // Where the program's coordinates put the tool: a programmed point in the active frame, as a position.
@@ -146,6 +148,7 @@ private:
   std::array<Eigen::Vector3d, 10> workOffsets_{};
   int workOffset_ = 1;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();  // G92
+  Eigen::Vector3d programmable_ = Eigen::Vector3d::Zero();  // the 840D's programmable frame (TRANS, ATRANS)
   Eigen::Vector3d frame() const;  // the active frame's origin in the positions' frame
   std::deque<Block> queued_;
 };

@@ -106,17 +106,17 @@ TEST(Gcode, UnknownWordsStopTheReadingOrAreCounted) {
   EXPECT_EQ(errorOf("G1 X1 F100\nG1 X2 U5\n").rfind("line 2: 'U5' (an axis the simulator does not have) would move", 0), 0u)
       << errorOf("G1 X1 F100\nG1 X2 U5\n");
   EXPECT_EQ(errorOf("G0 X1\nG12.1 X3\n").rfind("line 2: 'G12.1' (a G code the simulator does not know)", 0), 0u);
-  EXPECT_EQ(errorOf("G0 X1\nTRANS X10\n").rfind("line 2: 'TRANS' (a frame", 0), 0u);
+  EXPECT_EQ(errorOf("G0 X1\nROT Z30\n").rfind("line 2: 'ROT' (a frame that turns", 0), 0u);
   EXPECT_NE(errorOf("G0 X1\nG16\n").find("--skip-unknown"), std::string::npos);  // says what to do
   ReaderOptions skipping;
   skipping.skipUnknownMotion = true;
-  std::istringstream stream("G1 X1 F100 U5\nG28\nFOO\nG1 X2 E0.5\nTRANS X10\nG1 X3\nM123\n");
+  std::istringstream stream("G1 X1 F100 U5\nG28\nFOO\nG1 X2 E0.5\nROT Z10\nG1 X3\nM123\n");
   GcodeReader reader(stream, skipping);
   Block b;
   int moves = 0;
   while (reader.next(b)) ++moves;
-  EXPECT_EQ(moves, 3);  // TRANS X10 shifts a frame: when skipped, not a move either
-  EXPECT_EQ(reader.stats().unknownWords, 4);  // U5 FOO TRANS M123; G28 alone moves nothing
+  EXPECT_EQ(moves, 3);  // ROT Z10 turns a frame: when skipped, not a move either
+  EXPECT_EQ(reader.stats().unknownWords, 4);  // U5 FOO ROT M123; G28 alone moves nothing
   EXPECT_EQ(reader.stats().unknownWordCounts.at("M123"), 1);
   EXPECT_EQ(reader.stats().unknownWordCounts.at("U5"), 1);
   ReaderOptions strict;
@@ -333,4 +333,18 @@ TEST(SiemensCycles, DrillingCyclesAndTheirModalCall) {
                 .rfind("line 3: CYCLE81 argument 1 'R1' is not a number: the 840D's R parameters", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(10, 0)\n", siemens).rfind("line 3: CYCLE81 needs RTP, RFP and DP", 0), 0u);
   EXPECT_EQ(readProgram("G505 G0 X1\nG503 X2\nG500 X3\n", siemens).size(), 3u);  // settable zero offsets
+}
+
+// SINUMERIK 840D sl Programming Manual Fundamentals, "Frames": TRANS replaces the programmable frame by a
+// translation, ATRANS adds one, TRANS (or ROT) alone clears it; a rotation stops the reading.
+TEST(SiemensFrames, TranslationsShiftTheProgramAndRotationsAreNamed) {
+  ReaderOptions siemens;
+  siemens.conventions.dialect = Dialect::Siemens840D;
+  const auto blocks = readProgram("G0 X1 Y1 Z10\nTRANS X10 Y5\nG0 X0 Y0\nATRANS X1\nG0 X0\nTRANS\nG0 X0 Y0\nROT\n", siemens);
+  ASSERT_EQ(blocks.size(), 4u);
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(10, 5, 10));
+  EXPECT_EQ(blocks[2].end, Eigen::Vector3d(11, 5, 10));
+  EXPECT_EQ(blocks[3].end, Eigen::Vector3d(0, 0, 10));
+  EXPECT_EQ(errorOf("G0 X0\nROT Y-90\n", siemens).rfind("line 2: 'ROT' (a frame that turns, scales or mirrors", 0), 0u);
+  EXPECT_EQ(errorOf("G0 X0\nTRANS X1 A5\n", siemens).rfind("line 2: 'A5' (a frame of more than X Y Z)", 0), 0u);
 }
