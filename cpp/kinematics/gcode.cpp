@@ -4,6 +4,7 @@
 #include "kinematics/gcode_interpreter.hpp"
 #include "kinematics/macro_program.hpp"
 #include "kinematics/ngc_program.hpp"
+#include "kinematics/siemens_variables.hpp"
 
 #include <Eigen/Geometry>
 
@@ -80,6 +81,8 @@ struct GcodeReader::Impl {
   std::unique_ptr<detail::NgcProgram> ngc;      // LinuxCNC's O-words (and grbl's programs)
   std::unique_ptr<detail::MacroProgram> macro;  // Fanuc's and Haas's subprograms and Macro B
   double positions[3][3] = {};                  // for Macro B's position variables
+  detail::SiemensVariables siemens;             // the 840D's R parameters and DEF variables
+  std::string rewritten;
   long lineNumber = 0;
 
   Impl(std::istream& input, const ReaderOptions& options)
@@ -105,6 +108,7 @@ struct GcodeReader::Impl {
     if (macro) return macro->next(raw, number);
     if (!source.next(raw)) return false;
     number = ++lineNumber;
+    if (dialect == Dialect::Siemens840D) raw = siemens.substitute(raw, number, rewritten);
     return true;
   }
 

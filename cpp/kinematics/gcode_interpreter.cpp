@@ -446,7 +446,8 @@ std::vector<double> cycleArguments(const std::string& text, const std::string& n
 // the others with these first five: rapid to the reference plane RFP plus the safety distance SDIS, in to the
 // final depth DP (or DPR below RFP), back to the retraction plane RTP. CYCLE82 dwells DTB s; CYCLE83 pecks
 // (FDEP or FDPR the first depth, each peck that deep: the degression DAM is not applied; VARI 1 back to
-// RFP + SDIS after each, 0 breaking the chip); CYCLE84 taps at S times the pitch PIT and back; CYCLE85 and
+// RFP + SDIS after each, 0 breaking the chip); CYCLE84 taps at SST times the pitch PIT (at F without PIT) and
+// back; CYCLE85 and
 // CYCLE89 feed out to RFP + SDIS; CYCLE86, 87, 88 come out at rapid (87's and 88's operator stop not timed).
 void Interpreter::siemensDrilling(int number, const std::string& arguments) {
   const std::string name = "CYCLE" + std::to_string(number);
@@ -473,11 +474,12 @@ void Interpreter::siemensDrilling(int number, const std::string& arguments) {
     cycleQ_ = first > 0.0 ? first : (cycleR_ - cycleZ_);
     as = given(11) && a[11] == 0.0 ? 73 : 83;
   } else if (number == 84) {
+    // At SST (or S) times the pitch PIT; a call without PIT (posts leave it out) taps at the programmed F
     const double pitch = given(8) ? std::abs(a[8]) * unit_ : 0.0;
     const double speed = given(10) ? std::abs(a[10]) : spindle_;
-    if (!(pitch > 0.0 && speed > 0.0))
-      throw ParseError(lineNumber_, "CYCLE84 needs the pitch PIT (argument 9) and a spindle speed (SST or S)");
-    feed_ = speed * pitch / 60.0;
+    if (pitch > 0.0 && !(speed > 0.0))
+      throw ParseError(lineNumber_, "CYCLE84 taps at S0: program the spindle speed (SST, argument 11, or S)");
+    if (pitch > 0.0) feed_ = speed * pitch / 60.0;
   } else if (number == 87 || number == 88) {
     as = 86;
   }
@@ -661,8 +663,16 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
   } else if (name.size() == 7 && name.substr(0, 6) == "CYCLE8" && name[6] >= '1' && name[6] <= '9' && k.call) {
     words.siemensCycle = 80 + (name[6] - '0');
     words.siemensArguments = k.arguments;
+  } else if (name == "CYCLE800" && k.call) {
+    // CYCLE800() alone deselects a swivel; with its data it swivels the tool axis (3+2), not read yet
+    if (k.arguments.find_first_not_of(" \t,") != std::string_view::npos)
+      unknownMotion(name, "a swivel of the tool axis and its rotated frame");
   } else if (name == "MCALL") {
     words.mcall = true;
+  } else if (name == "SUPA") {
+    words.machineCoordinates = true;  // this block in machine coordinates, every frame suppressed (as G53 here)
+  } else if (name == "FNORM" || name == "SETMS" || name == "SBLOF" || name == "SBLON") {
+    // feed per minute (G94's), the master spindle, single-block suppression: nothing the motion shows
   } else if ((name == "A" || name == "B" || name == "C") && k.hasValue) {
     rotaryWord(name[0] - 'A', k.value, name, words);
   } else if ((name == "A3" || name == "B3" || name == "C3") && k.hasValue) {

@@ -242,8 +242,13 @@ const char* Line::assignment(const char* p, const char* end, Keyword& k, long nu
     stop = numberAt(p, end, k.value, std::string(k.name) + "=", number);
     if (stop == end || *stop == ' ' || *stop == '\t' || *stop == ';') return stop;
   }
-  // An expression or a variable (R1=R2*3): not evaluated; keep the name so it counts as unknown.
+  // An expression or a variable (R1=R2*3): not evaluated; keep the name so it counts as unknown. A name in
+  // quotes (T="DRILL 8.5") is one value, blanks and all.
   k.hasValue = false;
+  if (p < end && *p == '"') {
+    const char* close = std::find(p + 1, end, '"');
+    return close < end ? close + 1 : end;
+  }
   while (p < end && *p != ' ' && *p != '\t' && *p != ';') ++p;
   return p;
 }

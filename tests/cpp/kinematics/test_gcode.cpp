@@ -347,4 +347,31 @@ TEST(SiemensFrames, TranslationsShiftTheProgramAndRotationsAreNamed) {
   EXPECT_EQ(blocks[3].end, Eigen::Vector3d(0, 0, 10));
   EXPECT_EQ(errorOf("G0 X0\nROT Y-90\n", siemens).rfind("line 2: 'ROT' (a frame that turns, scales or mirrors", 0), 0u);
   EXPECT_EQ(errorOf("G0 X0\nTRANS X1 A5\n", siemens).rfind("line 2: 'A5' (a frame of more than X Y Z)", 0), 0u);
+  EXPECT_EQ(readProgram("CYCLE800()\nG0 X1\n", siemens).size(), 1u);  // a swivel deselected: nothing moves
+  EXPECT_EQ(errorOf("CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,1)\n", siemens)
+                .rfind("line 1: 'CYCLE800' (a swivel of the tool axis", 0), 0u);
+}
+
+// SINUMERIK 840D sl Job Planning, "Flexible NC programming": R parameters, DEF variables, arithmetic and the
+// standard functions, assignments to addresses (X=R1+5, CR=…); SUPA moves in machine coordinates.
+TEST(SiemensVariables, ParametersVariablesAndAssignments) {
+  ReaderOptions siemens;
+  siemens.conventions.dialect = Dialect::Siemens840D;
+  siemens.conventions.workOffset = Eigen::Vector3d(0, 0, -300);
+  const auto blocks = readProgram(
+      "DEF REAL _DEPTH=-2, _STEP\nR1=10 R2=R1*2+SQRT(16)\n_STEP=R2 DIV 5\nG1 F100 X=R1+5 Y=_STEP Z=_DEPTH\n"
+      "G2 X=R1 Y=R2-24 CR=POT(3)-4\nR3=ATAN2(1,1)+MINVAL(2,3)+TRUNC(-1.5)+7 MOD 4\nG1 X=R3 ; R4=99\n"
+      "SUPA G0 Z0\n",
+      siemens);
+  ASSERT_EQ(blocks.size(), 4u);
+  EXPECT_EQ(blocks[0].end, Eigen::Vector3d(15, 4, -2));  // R2 = 24, _STEP = 24 DIV 5 = 4
+  EXPECT_EQ(blocks[1].end, Eigen::Vector3d(10, 0, -2));
+  EXPECT_DOUBLE_EQ(blocks[1].radius, 5.0);
+  EXPECT_DOUBLE_EQ(blocks[2].end.x(), 45.0 + 2.0 - 1.0 + 3.0);
+  EXPECT_DOUBLE_EQ(blocks[3].end.z(), 300.0);  // machine Z0, 300 mm above the program's zero
+  EXPECT_EQ(errorOf("G1 X=R1+_NOPE F100\n", siemens).rfind("line 1: '_NOPE' is neither an R parameter nor a variable", 0), 0u);
+  EXPECT_EQ(errorOf("R1=1/0\n", siemens).rfind("line 1: division by zero", 0), 0u);
+  EXPECT_EQ(errorOf("R1=SQRT(-1)\n", siemens).rfind("line 1: SQRT(-1)", 0), 0u);
+  EXPECT_EQ(errorOf("DEF LONG X1\n", siemens).rfind("line 1: DEF LONG: the types read are REAL", 0), 0u);
+  EXPECT_EQ(errorOf("G1 X=IC(5) F100\n", siemens).rfind("line 1: IC(): an incremental value", 0), 0u);
 }

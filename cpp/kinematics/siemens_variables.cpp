@@ -1,0 +1,292 @@
+#include "kinematics/siemens_variables.hpp"
+
+#include "common/ascii.hpp"
+#include "common/text.hpp"
+#include "kinematics/gcode.hpp"
+
+#include <fast_float/fast_float.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace hsm::kinematics::detail {
+
+namespace {
+constexpr double kDegree = M_PI / 180.0;
+constexpr auto isLetter = isAsciiLetter;
+constexpr auto isDigit = isAsciiDigit;
+constexpr auto upper = asciiUpper;
+
+void blanks(const char*& p, const char* end) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+}
+
+bool identifierChar(char c) { return isLetter(c) || isDigit(c) || c == '_'; }
+
+std::string identifier(const char*& p, const char* end) {
+  std::string name;
+  while (p < end && identifierChar(*p)) name += upper(*p++);
+  return name;
+}
+
+bool isRParameter(const std::string& name) {
+  return name.size() >= 2 && name.size() <= 4 && name[0] == 'R' &&
+         std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
+}
+
+void appendValue(std::string& out, double v) {
+  char buffer[400];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed);
+  out.append(buffer, result.ptr);
+}
+}  // namespace
+
+// Recursive descent over the 840D's arithmetic: sum := product {(+|-) product}; product := unary {(*|/|DIV|MOD)
+// unary}; unary := [+|-] primary; primary := number | variable | (sum) | FUNCTION(sum[, sum]).
+class SiemensVariables::Reader {
+public:
+  Reader(const SiemensVariables& variables, long line) : variables_(variables), line_(line) {}
+
+  double sum(const char*& p, const char* end) const {
+    double value = product(p, end);
+    for (;;) {
+      const char* q = p;
+      blanks(q, end);
+      if (q < end && (*q == '+' || *q == '-')) {
+        const char op = *q++;
+        p = q;
+        const double right = product(p, end);
+        value = op == '+' ? value + right : value - right;
+      } else {
+        return value;
+      }
+    }
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& message) const { throw ParseError(line_, message); }
+
+  double product(const char*& p, const char* end) const {
+    double value = unary(p, end);
+    for (;;) {
+      const char* q = p;
+      blanks(q, end);
+      std::string word;
+      char op = 0;
+      if (q < end && (*q == '*' || *q == '/')) {
+        op = *q++;
+      } else if (q + 3 <= end && isLetter(*q)) {
+        const char* r = q;
+        word = identifier(r, end);
+        if (word == "DIV" || word == "MOD") {
+          op = word[0];
+          q = r;
+        }
+      }
+      if (op == 0) return value;
+      p = q;
+      const double right = unary(p, end);
+      if ((op == '/' || op == 'D' || op == 'M') && right == 0.0) fail("division by zero in an expression");
+      value = op == '*' ? value * right : op == '/' ? value / right : op == 'D' ? std::trunc(value / right)
+                                                                               : std::fmod(value, right);
+    }
+  }
+
+  double unary(const char*& p, const char* end) const {
+    blanks(p, end);
+    if (p < end && (*p == '-' || *p == '+')) {
+      const char sign = *p++;
+      const double v = unary(p, end);
+      return sign == '-' ? -v : v;
+    }
+    return primary(p, end);
+  }
+
+  double primary(const char*& p, const char* end) const {
+    blanks(p, end);
+    if (p >= end) fail("a value is missing at the end of the line");
+    if (*p == '(') {
+      ++p;
+      const double v = sum(p, end);
+      close(p, end);
+      return v;
+    }
+    if (isDigit(*p) || *p == '.') {
+      double v = 0.0;
+      const auto parsed = fast_float::from_chars(p, end, v, fast_float::chars_format::fixed);
+      if (parsed.ec != std::errc()) fail("'" + std::string(p, std::min<size_t>(end - p, 16)) + "' is not a number");
+      p = parsed.ptr;
+      return v;
+    }
+    if (!isLetter(*p) && *p != '_')
+      fail(std::string("unexpected character '") + *p + "' in an expression");
+    const std::string name = identifier(p, end);
+    const char* q = p;
+    blanks(q, end);
+    if (q < end && *q == '(') {
+      p = q + 1;
+      return function(name, p, end);
+    }
+    return variables_.get(name, line_);
+  }
+
+  void close(const char*& p, const char* end) const {
+    blanks(p, end);
+    if (p >= end || *p != ')') fail("'(' is not closed: add ')'");
+    ++p;
+  }
+
+  double function(const std::string& name, const char*& p, const char* end) const {
+    const double a = sum(p, end);
+    blanks(p, end);
+    if (name == "ATAN2" || name == "MINVAL" || name == "MAXVAL") {
+      if (p >= end || *p != ',') fail(name + " takes two arguments: " + name + "(a, b)");
+      ++p;
+      const double b = sum(p, end);
+      close(p, end);
+      return name == "ATAN2" ? std::atan2(a, b) / kDegree : name == "MINVAL" ? std::min(a, b) : std::max(a, b);
+    }
+    close(p, end);
+    if (name == "SIN") return std::sin(a * kDegree);
+    if (name == "COS") return std::cos(a * kDegree);
+    if (name == "TAN") return std::tan(a * kDegree);
+    if (name == "ASIN" || name == "ACOS") {
+      if (a < -1.0 || a > 1.0) fail(name + "(" + number(a) + "): the argument must be within -1 to 1");
+      return (name == "ASIN" ? std::asin(a) : std::acos(a)) / kDegree;
+    }
+    if (name == "SQRT") {
+      if (a < 0.0) fail("SQRT(" + number(a) + "): the argument must not be negative");
+      return std::sqrt(a);
+    }
+    if (name == "POT") return a * a;
+    if (name == "ABS") return std::abs(a);
+    if (name == "TRUNC") return std::trunc(a);
+    if (name == "ROUND") return std::round(a);
+    if (name == "AC") return a;
+    if (name == "IC") fail("IC(): an incremental value on one axis is not read yet; program it in G91 or absolute");
+    fail("'" + name + "(' is not an 840D function read here (SIN COS TAN ASIN ACOS ATAN2 SQRT POT ABS TRUNC ROUND "
+                      "MINVAL MAXVAL AC)");
+  }
+
+  const SiemensVariables& variables_;
+  long line_;
+};
+
+bool SiemensVariables::isVariable(const std::string& name) const {
+  return isRParameter(name) || named_.count(name) > 0;
+}
+
+double SiemensVariables::get(const std::string& name, long line) const {
+  if (isRParameter(name)) return r_[static_cast<size_t>(std::stoi(name.substr(1)))];
+  const auto found = named_.find(name);
+  if (found == named_.end())
+    throw ParseError(line, "'" + name + "' is neither an R parameter nor a variable declared by DEF: declare it "
+                                        "(DEF REAL " + name + ") or check its spelling");
+  return found->second;
+}
+
+void SiemensVariables::set(const std::string& name, double value, long line) {
+  if (!std::isfinite(value)) throw ParseError(line, name + " would be set to a value that is not a finite number");
+  if (isRParameter(name))
+    r_[static_cast<size_t>(std::stoi(name.substr(1)))] = value;
+  else
+    named_[name] = value;
+}
+
+void SiemensVariables::declare(const char*& p, const char* end, long line) {
+  blanks(p, end);
+  const std::string type = identifier(p, end);
+  static const char* kTypes[] = {"REAL", "INT", "BOOL", "CHAR", "STRING", "AXIS", "FRAME"};
+  if (std::none_of(std::begin(kTypes), std::end(kTypes), [&](const char* t) { return type == t; }))
+    throw ParseError(line, "DEF " + type + ": the types read are REAL, INT, BOOL, CHAR, STRING, AXIS and FRAME");
+  for (;;) {
+    blanks(p, end);
+    const std::string name = identifier(p, end);
+    if (name.empty()) throw ParseError(line, "DEF " + type + " needs a variable's name");
+    if (p < end && *p == '[') throw ParseError(line, "DEF " + name + "[…]: arrays are not read yet");
+    double value = 0.0;
+    blanks(p, end);
+    if (p < end && *p == '=') {
+      ++p;
+      blanks(p, end);
+      if (p < end && *p == '"') {  // a STRING's or CHAR's value: skipped
+        const char* close = std::find(p + 1, end, '"');
+        p = close < end ? close + 1 : end;
+      } else {
+        value = Reader(*this, line).sum(p, end);
+      }
+    }
+    named_[name] = value;
+    blanks(p, end);
+    if (p >= end || *p == ';') return;
+    if (*p != ',') throw ParseError(line, "DEF: names are separated by commas");
+    ++p;
+  }
+}
+
+std::string_view SiemensVariables::substitute(std::string_view raw, long line, std::string& out) {
+  const bool declares = raw.find("DEF ") != std::string_view::npos || raw.find("def ") != std::string_view::npos;
+  if (raw.find('=') == std::string_view::npos && !declares) return raw;
+  out.clear();
+  const char* p = raw.data();
+  const char* end = p + raw.size();
+  while (p < end) {
+    const char c = *p;
+    if (c == ';') break;
+    if (c == '"') {  // a string (MSG("…"), T="name"): as written
+      const char* close = std::find(p + 1, end, '"');
+      out.append(p, close < end ? close + 1 : end);
+      p = close < end ? close + 1 : end;
+      continue;
+    }
+    if (!(isLetter(c) || c == '_')) {
+      out += c;
+      ++p;
+      continue;
+    }
+    const char* start = p;
+    const std::string name = identifier(p, end);
+    if (name == "DEF" && (p == end || *p == ' ' || *p == '\t')) {
+      declare(p, end, line);
+      break;
+    }
+    const char* q = p;
+    blanks(q, end);
+    const bool assigns = q < end && *q == '=' && !(q + 1 < end && q[1] == '=');
+    if (!assigns) {
+      out.append(start, p);
+      continue;
+    }
+    p = q + 1;
+    blanks(p, end);
+    if (p < end && *p == '"') {  // T="DRILL 8.5": a name, as written
+      const char* close = std::find(p + 1, end, '"');
+      out.append(start, close < end ? close + 1 : end);
+      p = close < end ? close + 1 : end;
+      continue;
+    }
+    {  // `A3= F100`: the value is missing, the next word follows
+      const char* r = p;
+      const std::string next = identifier(r, end);
+      const bool word = next.size() >= 2 && isLetter(next[0]) && std::all_of(next.begin() + 1, next.end(), [](char ch) {
+        return isDigit(ch);
+      }) && !isVariable(next);
+      if (p >= end || *p == ';' || (word && (r >= end || *r != '(')))
+        throw ParseError(line, name + "= needs a number, or an expression of R parameters and DEF variables");
+    }
+    const double value = Reader(*this, line).sum(p, end);
+    if (isVariable(name)) {
+      set(name, value, line);  // an assignment to a variable: nothing for the lexer
+      continue;
+    }
+    out += ' ';
+    out += name;
+    if (name.size() > 1) out += '=';  // CR=, ADIS=, A3=: keywords with a value; X=…: the word X…
+    appendValue(out, value);
+    out += ' ';
+  }
+  return out;
+}
+
+}  // namespace hsm::kinematics::detail
