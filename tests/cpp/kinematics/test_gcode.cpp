@@ -375,3 +375,28 @@ TEST(SiemensVariables, ParametersVariablesAndAssignments) {
   EXPECT_EQ(errorOf("DEF LONG X1\n", siemens).rfind("line 1: DEF LONG: the types read are REAL", 0), 0u);
   EXPECT_EQ(errorOf("G1 X=IC(5) F100\n", siemens).rfind("line 1: IC(): an incremental value", 0), 0u);
 }
+
+// Mutations of a program in the 840D's variables, cycles and frames are read or refused with an InputError.
+TEST(SiemensVariables, FuzzedProgramsAreReadOrRefusedNeverCrash) {
+  const std::string seed =
+      "DEF REAL _D=-2, _S\nR1=10 R2=R1*2+SQRT(16)\n_S=R2 DIV 5\nG1 F100 X=R1+5 Y=_S Z=_D\nG2 X=R1 Y=R2-24 CR=POT(3)-4\n"
+      "TRANS X5\nATRANS Y=R1\nMCALL CYCLE83(10, 0, 1, -10, , , 4, 0, 0, 0, 1, 1)\nG0 X20\nMCALL\nTRANS\n"
+      "SUPA G0 Z0\nCYCLE81(20, 0, 2, -10)\nT=\"DRILL 8.5\" M6\nR3=ATAN2(1,1)+MINVAL(2,3)+7 MOD 4\nG1 X=R3\n";
+  const std::string alphabet = "RDEF_=()+-*/,. \n0123456789XYZGCTRANSMOPQIVL\"";
+  ReaderOptions siemens;
+  siemens.conventions.dialect = Dialect::Siemens840D;
+  ASSERT_GT(readProgram(seed, siemens).size(), 10u);
+  std::mt19937 random(13);
+  int read = 0, refused = 0;
+  for (int round = 0; round < 5000; ++round) {
+    const std::string program = hsm::test::mutated(seed, alphabet, random);
+    try {
+      for (const Block& b : readProgram(program, siemens)) ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
+      ++read;
+    } catch (const hsm::InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_GT(refused, 100);
+}
