@@ -225,9 +225,26 @@ void SiemensVariables::declare(const char*& p, const char* end, long line) {
   }
 }
 
+bool SiemensVariables::plainAssignments(std::string_view raw) const {
+  // Every '=' gives an address (A3=, CR=) a plain number, as posts write them: the lexer reads the line as it is.
+  for (size_t at = raw.find('='); at != std::string_view::npos; at = raw.find('=', at + 1)) {
+    size_t from = at;
+    while (from > 0 && identifierChar(raw[from - 1])) --from;
+    std::string name;
+    for (size_t i = from; i < at; ++i) name += upper(raw[i]);
+    if (name.size() < 2 || isVariable(name)) return false;  // X=5 is rewritten as the word X5
+    size_t p = at + 1;
+    if (p < raw.size() && (raw[p] == '-' || raw[p] == '+')) ++p;
+    const size_t digits = p;
+    while (p < raw.size() && (isDigit(raw[p]) || raw[p] == '.')) ++p;
+    if (p == digits || (p < raw.size() && raw[p] != ' ' && raw[p] != '\t' && raw[p] != ';')) return false;
+  }
+  return true;
+}
+
 std::string_view SiemensVariables::substitute(std::string_view raw, long line, std::string& out) {
   const bool declares = raw.find("DEF ") != std::string_view::npos || raw.find("def ") != std::string_view::npos;
-  if (raw.find('=') == std::string_view::npos && !declares) return raw;
+  if (!declares && plainAssignments(raw)) return raw;
   out.clear();
   const char* p = raw.data();
   const char* end = p + raw.size();

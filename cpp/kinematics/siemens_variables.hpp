@@ -27,6 +27,7 @@ private:
 
   void declare(const char*& p, const char* end, long line);
   bool isVariable(const std::string& name) const;
+  bool plainAssignments(std::string_view raw) const;
   double get(const std::string& name, long line) const;
   void set(const std::string& name, double value, long line);
 
