@@ -98,7 +98,9 @@ struct GcodeReader::Impl {
     if (!options.conventions.powerOnCodes.empty()) {  // the control's state before the program's first line
       Block ignored;
       line.parse(options.conventions.powerOnCodes, 0);
-      interpreter.interpret(line, 0, ignored);
+      if (interpreter.interpret(line, 0, ignored) || interpreter.takeQueued(ignored))
+        throw InputError("power-on codes '" + printable(options.conventions.powerOnCodes) +
+                         "' move the machine: give only modal G words (\"G0 G17 G90 G94 G21 G98\")");
     }
   }
 

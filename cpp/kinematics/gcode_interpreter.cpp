@@ -193,6 +193,8 @@ void Interpreter::applyOtherModes(const LineWords& w) {
   if (w.lookAhead != 0) {
     // On (G05.1 Q1, G05 P10000, G08 P1, G187 with or without P1…P3): corners rounded within E or the machine's
     // tolerance; off (Q0, P0): the control's plain continuous mode.
+    if (w.hasE && !(w.eWord > 0.0))
+      throw ParseError(lineNumber_, "E" + number(w.eWord) + ": a smoothing tolerance is positive (mm)");
     const bool on = w.lookAhead == 1870 || (w.lookAhead == 51 ? w.hasQ && w.qWord != 0.0 : w.hasP && w.pWord != 0.0);
     pathMode_ = on ? PathMode::Rounding : PathMode::Continuous;
     tolerance_ = on ? (w.hasE && w.eWord > 0.0 ? w.eWord * unit_ : options_.conventions.smoothingTolerance) : 0.0;

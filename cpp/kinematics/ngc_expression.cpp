@@ -191,8 +191,9 @@ int NgcExpressionReader::reference(const char*& p, const char* end, std::string&
   if (std::abs(number - rounded) > kIntegerTolerance)
     fail("#" + hsm::number(number) + " is not a parameter: a parameter number is an integer");
   if (rounded < 0 || rounded > kMaxNumberedParameter)
-    fail("#" + std::to_string(static_cast<long long>(rounded)) +
-         " is not a parameter: LinuxCNC's numbered parameters are #1 to #" + std::to_string(kMaxNumberedParameter));
+    fail("#" + std::to_string(static_cast<long long>(rounded)) + " is not a parameter: " +
+         (parameters_.macroB() ? std::string("Fanuc's variables are #0 to #") : "LinuxCNC's numbered parameters are #1 to #") +
+         std::to_string(kMaxNumberedParameter));
   return static_cast<int>(rounded);
 }
 

@@ -30,10 +30,12 @@ std::string identifier(const char*& p, const char* end) {
   return name;
 }
 
-bool isRParameter(const std::string& name) {
-  return name.size() >= 2 && name.size() <= 4 && name[0] == 'R' &&
-         std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
+// R and digits: an R parameter's name (R0 … R999 exist; a longer one is refused where it is set)
+bool isRName(const std::string& name) {
+  return name.size() >= 2 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
 }
+
+bool isRParameter(const std::string& name) { return isRName(name) && name.size() <= 4; }
 
 void appendValue(std::string& out, double v) {
   char buffer[400];
@@ -117,6 +119,9 @@ private:
       const auto parsed = fast_float::from_chars(p, end, v, fast_float::chars_format::fixed);
       if (parsed.ec != std::errc()) fail("'" + std::string(p, std::min<size_t>(end - p, 16)) + "' is not a number");
       p = parsed.ptr;
+      if (p < end && (*p == 'E' || *p == 'e') && p + 1 < end && (isDigit(p[1]) || p[1] == '-' || p[1] == '+' || p[1] == 'X'))
+        fail("a number with an exponent ('" + std::string(parsed.ptr - 1, std::min<size_t>(end - parsed.ptr + 1, 8)) +
+             "'): not read; write the number in full");
       return v;
     }
     if (!isLetter(*p) && *p != '_')
@@ -232,7 +237,7 @@ bool SiemensVariables::plainAssignments(std::string_view raw) const {
     while (from > 0 && identifierChar(raw[from - 1])) --from;
     std::string name;
     for (size_t i = from; i < at; ++i) name += upper(raw[i]);
-    if (name.size() < 2 || isVariable(name)) return false;  // X=5 is rewritten as the word X5
+    if (name.size() < 2 || isVariable(name) || isRName(name)) return false;  // X=5 is rewritten as the word X5
     size_t p = at + 1;
     if (p < raw.size() && (raw[p] == '-' || raw[p] == '+')) ++p;
     const size_t digits = p;
@@ -292,6 +297,8 @@ std::string_view SiemensVariables::substitute(std::string_view raw, long line, s
       if (p >= end || *p == ';' || (word && (r >= end || *r != '(')))
         throw ParseError(line, name + "= needs a number, or an expression of R parameters and DEF variables");
     }
+    if (isRName(name) && !isRParameter(name))
+      throw ParseError(line, name + " is not an R parameter: they are R0 to R" + std::to_string(kSiemensRParameters - 1));
     const double value = Reader(*this, line).sum(p, end);
     if (isVariable(name)) {
       set(name, value, line);  // an assignment to a variable: nothing for the lexer

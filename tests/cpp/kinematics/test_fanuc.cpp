@@ -207,6 +207,11 @@ TEST(FanucMacro, WhatCannotRunIsNamedAndLoopsAreBounded) {
   EXPECT_EQ(errorOf("#5221=10.\n", kFanuc).rfind("line 1: #5221 cannot be set here", 0), 0u);
   EXPECT_EQ(errorOf("#1=1/0\n", kFanuc).rfind("line 1: division by zero", 0), 0u);
   EXPECT_EQ(errorOf("G1 X[1e3] F100\n", kFanuc).rfind("line 1: a number with an exponent", 0), 0u);
+  EXPECT_EQ(errorOf("#[-5]=1\n", kFanuc).rfind("line 1: #-5 is not a parameter: Fanuc's variables", 0), 0u);
+  EXPECT_EQ(errorOf("G187 P1 E-5\n", kHaas).rfind("line 1: E-5: a smoothing tolerance is positive", 0), 0u);
+  ReaderOptions moving = kFanuc;
+  moving.conventions.powerOnCodes = "G1 X5 F100";
+  EXPECT_THROW(readProgram("G1 X1.\n", moving), hsm::InputError);  // power-on codes that move are refused
   EXPECT_EQ(errorOf("G68.2 X0 Y0 Z0 I0 J45. K0\n", kFanuc).rfind("line 1: 'G68.2' (a rotated or tilted working plane", 0), 0u);
 }
 

@@ -373,6 +373,8 @@ TEST(SiemensVariables, ParametersVariablesAndAssignments) {
   EXPECT_EQ(errorOf("R1=1/0\n", siemens).rfind("line 1: division by zero", 0), 0u);
   EXPECT_EQ(errorOf("R1=SQRT(-1)\n", siemens).rfind("line 1: SQRT(-1)", 0), 0u);
   EXPECT_EQ(errorOf("DEF LONG X1\n", siemens).rfind("line 1: DEF LONG: the types read are REAL", 0), 0u);
+  EXPECT_EQ(errorOf("R1=1E9\n", siemens).rfind("line 1: a number with an exponent", 0), 0u);
+  EXPECT_EQ(errorOf("R9999=1\n", siemens).rfind("line 1: R9999 is not an R parameter: they are R0 to R999", 0), 0u);
   EXPECT_EQ(errorOf("G1 X=IC(5) F100\n", siemens).rfind("line 1: IC(): an incremental value", 0), 0u);
 }
 
