@@ -339,15 +339,9 @@ bool Interpreter::repeatedCycle(const LineWords& w, Block& block) {
                                       ": a cycle's repeat count is a whole number from 0 to 10000");
   // LinuxCNC runs a cycle's moves in exact stop (rs274 shows SET_MOTION_CONTROL_MODE(CANON_EXACT_PATH) around
   // them), as a Fanuc positions at each of its points; the path mode in force comes back after.
-  const PathMode mode = pathMode_;
+  const CycleModes borrowed(*this);
   pathMode_ = PathMode::ExactStop;
-  try {
-    for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
-  } catch (...) {
-    pathMode_ = mode;
-    throw;
-  }
-  pathMode_ = mode;
+  for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
   return takeQueued(block);
 }
 
@@ -470,7 +464,7 @@ void Interpreter::siemensDrilling(int number, const std::string& arguments) {
                                                                                                        : -1;
   if (dwellArgument > 0 && given(dwellArgument)) cycleP_ = std::abs(a[static_cast<size_t>(dwellArgument)]);
   int as = number;
-  const double feed = feed_;
+  const CycleModes borrowed(*this);
   if (number == 83) {
     const double first = given(6) ? std::abs(a[6]) * unit_ : given(5) ? rfp + frameZ - (a[5] * unit_ + frameZ) : 0.0;
     cycleQ_ = first > 0.0 ? first : (cycleR_ - cycleZ_);
@@ -485,23 +479,9 @@ void Interpreter::siemensDrilling(int number, const std::string& arguments) {
   } else if (number == 87 || number == 88) {
     as = 86;
   }
-  const int savedCycle = cycle_;
-  const PathMode mode = pathMode_;
   cycle_ = as;
   pathMode_ = PathMode::ExactStop;
-  try {
-    cycleBlocks(LineWords{}, false);
-  } catch (...) {
-    cycle_ = savedCycle;
-    pathMode_ = mode;
-    feed_ = feed;
-    cycleClear_ = std::numeric_limits<double>::quiet_NaN();
-    throw;
-  }
-  cycle_ = savedCycle;
-  pathMode_ = mode;
-  feed_ = feed;
-  cycleClear_ = std::numeric_limits<double>::quiet_NaN();
+  cycleBlocks(LineWords{}, false);
 }
 
 bool Interpreter::homeBlocks(const LineWords& w, Block& block) {

@@ -97,6 +97,23 @@ private:
   void cycle832(std::string_view arguments);
   void arc(Block& block, const LineWords& words);
   // A canned cycle's moves at the line's X Y (LinuxCNC's semantics, G17, G90): queued, the first in `block`.
+  // The modes a canned cycle's moves borrow (exact stop, the cycle, its feed, the 840D's retract plane), given
+  // back when the cycle's moves are queued or the cycle is refused.
+  struct CycleModes {
+    explicit CycleModes(Interpreter& i) : self(i), mode(i.pathMode_), cycle(i.cycle_), feed(i.feed_) {}
+    ~CycleModes() {
+      self.pathMode_ = mode;
+      self.cycle_ = cycle;
+      self.feed_ = feed;
+      self.cycleClear_ = std::numeric_limits<double>::quiet_NaN();
+    }
+    CycleModes(const CycleModes&) = delete;
+    CycleModes& operator=(const CycleModes&) = delete;
+    Interpreter& self;
+    PathMode mode;
+    int cycle;
+    double feed;
+  };
   // One hole: its moves queued (`first`: the line's R, Z and Q are taken, for the holes after it they stand).
   bool cycleBlocks(const LineWords& words, bool first);
   // G33.1 rigid tapping: in to the line's end point at the spindle's speed times the pitch K, and back out to

@@ -6,6 +6,7 @@
 
 #include "support/gcode_errors.hpp"
 #include "support/mutation.hpp"
+#include "support/reader_fuzz.hpp"
 
 #include <gtest/gtest.h>
 
@@ -258,17 +259,7 @@ TEST(FanucMacro, FuzzedProgramsAreReadOrRefusedNeverCrash) {
   bounded.conventions.powerOnCodes = "G0 G17 G90 G21 G98";
   bounded.maxLoopIterations = 1000;
   ASSERT_GT(readProgram(seed, bounded).size(), 10u);
-  std::mt19937 random(11);
-  int read = 0, refused = 0;
-  for (int round = 0; round < 5000; ++round) {
-    const std::string program = hsm::test::mutated(seed, alphabet, random);
-    try {
-      for (const Block& b : readProgram(program, bounded)) ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
-      ++read;
-    } catch (const hsm::InputError&) {
-      ++refused;
-    }
-  }
-  EXPECT_GT(read, 100);
-  EXPECT_GT(refused, 100);
+  const auto mutants = hsm::test::readMutants(seed, alphabet, bounded, 11);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
 }

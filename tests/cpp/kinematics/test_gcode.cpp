@@ -3,6 +3,7 @@
 
 #include "support/gcode_errors.hpp"
 #include "support/mutation.hpp"
+#include "support/reader_fuzz.hpp"
 
 #include <gtest/gtest.h>
 
@@ -388,17 +389,7 @@ TEST(SiemensVariables, FuzzedProgramsAreReadOrRefusedNeverCrash) {
   ReaderOptions siemens;
   siemens.conventions.dialect = Dialect::Siemens840D;
   ASSERT_GT(readProgram(seed, siemens).size(), 10u);
-  std::mt19937 random(13);
-  int read = 0, refused = 0;
-  for (int round = 0; round < 5000; ++round) {
-    const std::string program = hsm::test::mutated(seed, alphabet, random);
-    try {
-      for (const Block& b : readProgram(program, siemens)) ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
-      ++read;
-    } catch (const hsm::InputError&) {
-      ++refused;
-    }
-  }
-  EXPECT_GT(read, 100);
-  EXPECT_GT(refused, 100);
+  const auto mutants = hsm::test::readMutants(seed, alphabet, siemens, 13);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
 }

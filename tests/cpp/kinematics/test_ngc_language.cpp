@@ -4,6 +4,7 @@
 
 #include "support/gcode_errors.hpp"
 #include "support/mutation.hpp"
+#include "support/reader_fuzz.hpp"
 
 #include <gtest/gtest.h>
 
@@ -175,17 +176,7 @@ TEST(NgcLanguage, FuzzedProgramsAreReadOrRefusedNeverCrash) {
   ReaderOptions bounded;  // a mutated loop condition loops for ever: stopped after 1000 turns
   bounded.maxLoopIterations = 1000;
   ASSERT_EQ(readProgram(seed, bounded).size(), 5u);  // two calls, two repeats, the last line
-  std::mt19937 random(7);
-  int read = 0, refused = 0;
-  for (int round = 0; round < 5000; ++round) {
-    const std::string program = hsm::test::mutated(seed, alphabet, random);
-    try {
-      for (const Block& b : readProgram(program, bounded)) ASSERT_TRUE(b.start.allFinite() && b.end.allFinite());
-      ++read;
-    } catch (const hsm::InputError&) {
-      ++refused;
-    }
-  }
-  EXPECT_GT(read, 100);
-  EXPECT_GT(refused, 100);
+  const auto mutants = hsm::test::readMutants(seed, alphabet, bounded, 7);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
 }
