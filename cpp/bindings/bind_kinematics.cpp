@@ -247,24 +247,26 @@ void bindKinematics(py::module_& m) {
   m.def(
       "simulate_text",
       [](const std::string& text, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
-         bool perSecond, bool skip) {
+         bool perSecond, bool skip, const std::vector<std::string>& folders) {
         std::istringstream stream(text);
-        return released([&] {
-          return simulate(stream, machine, readerOptions(refuse, perSecond, skip), simulationOptions(keepBlocks, tracePeriod));
-        });
+        ReaderOptions reading = readerOptions(refuse, perSecond, skip);
+        reading.subroutineFolders = folders;
+        return released([&] { return simulate(stream, machine, reading, simulationOptions(keepBlocks, tracePeriod)); });
       },
       py::arg("text"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
-      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false);
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false,
+      py::arg("subroutine_folders") = std::vector<std::string>());
   m.def(
       "simulate_file",
       [](const std::string& path, const MachineModel& machine, bool keepBlocks, double tracePeriod, bool refuse,
-         bool perSecond, bool skip) {
-        return released([&] {
-          return simulateFile(path, machine, readerOptions(refuse, perSecond, skip), simulationOptions(keepBlocks, tracePeriod));
-        });
+         bool perSecond, bool skip, const std::vector<std::string>& folders) {
+        ReaderOptions reading = readerOptions(refuse, perSecond, skip);
+        reading.subroutineFolders = folders;
+        return released([&] { return simulateFile(path, machine, reading, simulationOptions(keepBlocks, tracePeriod)); });
       },
       py::arg("path"), py::arg("machine"), py::arg("keep_blocks") = false, py::arg("trace_period") = 0.0,
-      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false);
+      py::arg("refuse_unknown_words") = false, py::arg("feed_in_mm_per_second") = false, py::arg("skip_unknown") = false,
+      py::arg("subroutine_folders") = std::vector<std::string>());
   m.def(
       "simulate_moves",
       [](const MoveArray& moves, double feed, const MachineModel& machine, bool keepBlocks, double tracePeriod) {

@@ -4,7 +4,7 @@
 #include "kinematics/gcode_interpreter.hpp"
 #include "kinematics/macro_program.hpp"
 #include "kinematics/ngc_program.hpp"
-#include "kinematics/siemens_variables.hpp"
+#include "kinematics/siemens_program.hpp"
 
 #include <Eigen/Geometry>
 
@@ -81,8 +81,7 @@ struct GcodeReader::Impl {
   std::unique_ptr<detail::NgcProgram> ngc;      // LinuxCNC's O-words (and grbl's programs)
   std::unique_ptr<detail::MacroProgram> macro;  // Fanuc's and Haas's subprograms and Macro B
   double positions[3][3] = {};                  // for Macro B's position variables
-  detail::SiemensVariables siemens;             // the 840D's R parameters and DEF variables
-  std::string rewritten;
+  std::unique_ptr<detail::SiemensProgram> siemens;  // the 840D's variables, jumps, loops and subprograms
   long lineNumber = 0;
 
   Impl(std::istream& input, const ReaderOptions& options)
@@ -95,6 +94,9 @@ struct GcodeReader::Impl {
           source, detail::MacroOptions{options.subroutineFolders, options.maxLoopIterations, dialect == Dialect::Haas});
       macro->setPositions(positions);
     }
+    if (dialect == Dialect::Siemens840D)
+      siemens = std::make_unique<detail::SiemensProgram>(
+          source, detail::SiemensOptions{options.subroutineFolders, options.maxLoopIterations, options.skipUnknownMotion});
     if (!options.conventions.powerOnCodes.empty()) {  // the control's state before the program's first line
       Block ignored;
       line.parse(options.conventions.powerOnCodes, 0);
@@ -108,9 +110,9 @@ struct GcodeReader::Impl {
   bool nextLine(std::string_view& raw, long& number) {
     if (ngc) return ngc->next(raw, number);
     if (macro) return macro->next(raw, number);
+    if (siemens) return siemens->next(raw, number);
     if (!source.next(raw)) return false;
     number = ++lineNumber;
-    if (dialect == Dialect::Siemens840D) raw = siemens.substitute(raw, number, rewritten);
     return true;
   }
 

@@ -5,8 +5,10 @@
 #include <Eigen/Geometry>
 #include <fast_float/fast_float.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace hsm::kinematics::detail {
 
@@ -16,7 +18,71 @@ bool isFrameKeyword(std::string_view name) {
   return name == "TRANS" || name == "ATRANS" || name == "ROT" || name == "AROT" || name == "SCALE" ||
          name == "ASCALE" || name == "MIRROR" || name == "AMIRROR";
 }
+
+// The 840D instructions the reader knows: read (keyword()), accepted without effect on the motion model, or named
+// as motion it cannot see (transformations and frames it does not model).
+constexpr std::string_view kSiemensKeywords[] = {
+    "SOFT", "BRISK", "CR", "ADIS", "ADISPOS", "T", "MSG", "CYCLE832", "CYCLE800", "CYCLE81", "CYCLE82", "CYCLE83",
+    "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "MCALL", "SUPA", "FNORM", "SETMS", "SBLOF",
+    "SBLON", "A3", "B3", "C3", "TRAORI", "TRAFOOF", "ORIMKS", "ORIAXES", "ORIWKS", "ORIVECT", "COMPCAD", "COMPCURV",
+    "COMPSURF", "COMPOF", "COMPON", "FFWON", "FFWOF", "UPATH", "SPATH", "DYNNORM", "DYNFINISH", "DYNSEMIFIN",
+    "DYNROUGH", "DYNPOS", "TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "RPL",
+    // accepted, no effect on the timed motion: preprocessing stops, waits, messages, compensation and feed modes
+    "STOPRE", "WAITM", "WAITE", "WAITS", "WAITP", "SETAL", "DISPLOF", "DISPLON", "SAVE", "CFC", "CFTCP", "CFIN",
+    "DISC", "OFFN", "CUT2D", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "G_",
+    "SPOS", "SPOSA", "SPOF", "SPCON", "SPCOF", "FGROUP", "FGREF", "ORIEULER", "ORIRPY", "ORIPATH", "ORICONCW",
+    "ORICONCCW", "ORICURVE", "ORIPLANE", "ACC", "FIFOCTRL", "SOFTA", "BRISKA", "DRIVE", "FINEA", "COARSEA",
+    "IPOENDA", "WORKPIECE", "HEAD", "LIMS", "DIAMOF", "DIAMON", "G_FRAME", "TRAILOF", "DRFOF", "PTP",
+    "CP", "ORISON", "ORISOF", "TOFFON", "TOFFOF", "D", "M_",
+    // named as motion the simulator cannot see
+    "TRANSMIT", "TRACYL", "TRAANG", "PAROT", "PAROTOF", "TOROT", "TOROTOF", "TOFRAME", "TOFRAMEX", "TOFRAMEY",
+    "TOFRAMEZ", "CIP", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"};
+
+// What an instruction (or standard cycle) that moves the machine in ways the simulator does not model is; null
+// for the others.
+const char* movesUnseen(std::string_view name) {
+  for (std::string_view prefix : {"CYCLE", "POCKET", "SLOT", "LONGHOLE", "HOLES"})
+    if (name.substr(0, prefix.size()) == prefix)
+      return "an 840D standard cycle the simulator does not model (measuring, milling, patterns)";
+  for (std::string_view word : {"TRANSMIT", "TRACYL", "TRAANG", "PAROT", "TOROT", "TOFRAME", "TOFRAMEX", "TOFRAMEY",
+                                "TOFRAMEZ", "CIP", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"})
+    if (name == word) return "a transformation, frame, spline or arc form the simulator does not model";
+  return nullptr;
+}
+
+size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
 }  // namespace
+
+bool isSiemensKeyword(std::string_view name) {
+  return std::find(std::begin(kSiemensKeywords), std::end(kSiemensKeywords), name) != std::end(kSiemensKeywords);
+}
+
+std::string nearestSiemensKeyword(std::string_view name) {
+  if (name.size() < 4) return {};
+  std::string_view best;
+  size_t bestDistance = 3;
+  for (std::string_view keyword : kSiemensKeywords) {
+    const size_t d = editDistance(name, keyword);
+    if (keyword.size() >= 4 && d < bestDistance) {
+      best = keyword;
+      bestDistance = d;
+    }
+  }
+  return std::string(best);
+}
 
 Interpreter::Interpreter(const ReaderOptions& options)
     : options_(options), position_(options.startPosition),
@@ -680,6 +746,8 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
              name == "FFWOF" || name == "UPATH" || name == "SPATH" ||
              name == "DYNNORM" || name == "DYNFINISH" || name == "DYNSEMIFIN" || name == "DYNROUGH") {
     // compressor, feed-forward, dynamic-response groups: no effect on this model
+  } else if (options_.conventions.dialect == Dialect::Siemens840D && movesUnseen(name) != nullptr) {
+    unknownMotion(name, movesUnseen(name));
   } else {
     unknown(name);
   }

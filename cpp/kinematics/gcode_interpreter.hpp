@@ -14,6 +14,12 @@
 
 namespace hsm::kinematics::detail {
 
+// Whether `name` is an 840D instruction the reader takes (reads, accepts without effect, or names as motion it
+// cannot see): a name that is not, alone on its block, calls a subprogram (siemens_program.hpp).
+bool isSiemensKeyword(std::string_view name);
+// The instruction `name` is most likely a misspelling of (one or two letters off), or empty.
+std::string nearestSiemensKeyword(std::string_view name);
+
 // What one line says, before it is applied to the modal state.
 struct LineWords {
   int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 
 namespace hsm::kinematics::detail {
@@ -53,48 +52,14 @@ long programNumber(std::string_view b) {
 bool isPercent(std::string_view b) { return !b.empty() && b[0] == '%'; }
 }  // namespace
 
-void MacroProgram::File::keep(std::string_view raw, long number) {
-  if (chunks.empty() || chunkUsed + raw.size() > kChunkBytes) {
-    chunks.push_back(std::make_unique<char[]>(std::max(kChunkBytes, raw.size())));
-    chunkUsed = 0;
-  }
-  char* at = chunks.back().get() + chunkUsed;
-  std::memcpy(at, raw.data(), raw.size());
-  chunkUsed += raw.size();
-  lines.push_back(Stored{std::string_view(at, raw.size()), number, chunksDropped + chunks.size() - 1});
-}
-
-void MacroProgram::File::dropFront(size_t count) {
-  lines.erase(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(count));
-  dropped += count;
-  while (!lines.empty() && chunksDropped < lines.front().chunk) {
-    chunks.pop_front();
-    ++chunksDropped;
-  }
-}
-
-MacroProgram::MacroProgram(LineSource& source, MacroOptions options) : source_(source), options_(std::move(options)) {
-  files_.emplace_back();
-  files_.back().name = "the program";
-  files_.back().streaming = true;
+MacroProgram::MacroProgram(LineSource& source, MacroOptions options)
+    : options_(std::move(options)), files_(source) {
   frames_.emplace_back();
 }
 
 void MacroProgram::fail(long line, const std::string& message) const {
   const File& file = files_[cursor_.file];
   throw ParseError(line, file.streaming ? message : message + " (in " + file.name + ")");
-}
-
-MacroProgram::Stored* MacroProgram::fetch(const Cursor& at) {
-  File& file = files_[at.file];
-  if (at.index < file.dropped) return nullptr;
-  while (at.index - file.dropped >= file.lines.size()) {
-    if (!file.streaming) return nullptr;
-    std::string_view raw;
-    if (!source_.next(raw)) return nullptr;
-    file.keep(raw, ++streamed_);
-  }
-  return &file.lines[at.index - file.dropped];
 }
 
 double MacroProgram::condition(const char*& p, const char* end, long n) const {
@@ -153,19 +118,9 @@ MacroProgram::Cursor MacroProgram::programStart(long number, long line) {
       for (const char* extension : {".nc", ".NC", ".tap", ".txt", ""}) {
         const std::string path = (folder.empty() ? std::string(".") : folder) + "/" + name + extension;
         if (tried.size() < 6) tried.push_back(path);
-        std::ifstream stream(path, std::ios::binary);
-        if (!stream) continue;
-        files_.emplace_back();
-        File& file = files_.back();
-        file.name = name + extension;
-        file.streaming = false;
-        LineSource lines(stream);
-        std::string_view raw;
-        for (long n = 1; lines.next(raw); ++n) {
-          if (file.lines.size() >= kMaxKeptLines) fail(line, path + " is over " + std::to_string(kMaxKeptLines) + " lines");
-          file.keep(raw, n);
-        }
-        const size_t index = files_.size() - 1;
+        const long loaded = files_.load(path, name + extension, line);
+        if (loaded < 0) continue;
+        const size_t index = static_cast<size_t>(loaded);
         size_t startAt = 0;  // its O line, or its first line after a '%'
         for (size_t i = 0; i < files_[index].lines.size(); ++i) {
           const std::string_view b = body(files_[index].lines[i].text, seq);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "kinematics/gcode_lexer.hpp"
+#include "kinematics/kept_lines.hpp"
 #include "kinematics/ngc_expression.hpp"
 
 #include <deque>
@@ -19,8 +20,6 @@
 
 namespace hsm::kinematics::detail {
 
-inline constexpr size_t kMaxKeptLines = 2'000'000;
-inline constexpr size_t kChunkBytes = 1 << 20;
 inline constexpr int kMaxMacroCallDepth = 20;  // Fanuc: 10 M98 levels and 5 G65 levels; generously above both
 
 struct MacroOptions {
@@ -39,27 +38,9 @@ public:
   void setPositions(const double (*positions)[3]) { parameters_.setPositions(positions); }
 
 private:
-  struct Stored {
-    std::string_view text;  // into its file's arena
-    long number;
-    size_t chunk;           // the arena chunk holding it, counted from the file's first
-  };
-  struct File {
-    std::string name;
-    std::deque<Stored> lines;
-    size_t dropped = 0;  // lines let go from the front (the program only)
-    bool streaming;      // the program itself: read from the source as needed
-    // The lines' text, in chunks of kChunkBytes: no allocation per line, and whole chunks are let go with the
-    // lines in them.
-    std::deque<std::unique_ptr<char[]>> chunks;
-    size_t chunkUsed = 0, chunksDropped = 0;
-
-    void keep(std::string_view raw, long number);
-    void dropFront(size_t count);
-  };
-  struct Cursor {
-    size_t file = 0, index = 0;  // index counts from the file's first line, dropped ones included
-  };
+  using Stored = KeptLine;
+  using File = KeptFile;
+  using Cursor = LineCursor;
   struct Loop {
     int id;
     Cursor start;  // the WHILE (or DO) line
@@ -75,7 +56,7 @@ private:
   };
   enum class Call { None, M98, M97, M99, G65 };
 
-  Stored* fetch(const Cursor& at);
+  Stored* fetch(const Cursor& at) { return files_.fetch(at); }
   Cursor forward(Cursor at) const { return Cursor{at.file, at.index + 1}; }
   // Runs a flow statement (IF, WHILE, DO, END, GOTO) at cursor_; false when the line is not one.
   bool flowStatement(std::string_view text, long n);
@@ -89,16 +70,15 @@ private:
   double condition(const char*& p, const char* end, long n) const;
   [[noreturn]] void fail(long line, const std::string& message) const;
 
-  LineSource& source_;
   MacroOptions options_;
   NgcParameters parameters_{ParameterLanguage::MacroB};
-  std::deque<File> files_;  // a deque: a file (its arena) never moves
+  KeptFiles files_;
   std::vector<Frame> frames_;
   std::map<long, Cursor> programs_;          // O-numbers seen, where their first line is
   std::map<std::pair<size_t, size_t>, long> jumpsBack_;  // jumps back to a line, for the loop bound
   Cursor cursor_;
   Cursor mainStart_;
-  long streamed_ = 0, flowLines_ = 0;
+  long flowLines_ = 0;
   bool started_ = false, ended_ = false;
   Call pending_ = Call::None;
   Line pendingWords_;

@@ -44,11 +44,23 @@ void appendValue(std::string& out, double v) {
 }
 }  // namespace
 
-// Recursive descent over the 840D's arithmetic: sum := product {(+|-) product}; product := unary {(*|/|DIV|MOD)
-// unary}; unary := [+|-] primary; primary := number | variable | (sum) | FUNCTION(sum[, sum]).
+// Recursive descent over the 840D's arithmetic and conditions: either := both {(OR|XOR) both}; both := negation
+// {AND negation}; negation := NOT negation | comparison; comparison := sum [(==|<>|<|>|<=|>=) sum]; sum := product
+// {(+|-) product}; product := unary {(*|/|DIV|MOD) unary}; unary := [+|-] primary; primary := number | variable |
+// (either) | FUNCTION(sum[, sum]).
 class SiemensVariables::Reader {
 public:
   Reader(const SiemensVariables& variables, long line) : variables_(variables), line_(line) {}
+
+  double either(const char*& p, const char* end) const {
+    double value = both(p, end);
+    for (std::string op = operatorWord(p, end); op == "OR" || op == "XOR"; op = operatorWord(p, end)) {
+      skipWord(p, end);
+      const bool right = both(p, end) != 0.0;
+      value = op == "OR" ? (value != 0.0 || right) : ((value != 0.0) != right);
+    }
+    return value;
+  }
 
   double sum(const char*& p, const char* end) const {
     double value = product(p, end);
@@ -68,6 +80,58 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& message) const { throw ParseError(line_, message); }
+
+  // The word of letters at `p` (after blanks), in capitals, without moving `p`.
+  static std::string operatorWord(const char* p, const char* end) {
+    blanks(p, end);
+    std::string word;
+    while (p < end && isLetter(*p) && word.size() < 4) word += upper(*p++);
+    return (p < end && identifierChar(*p)) ? std::string() : word;
+  }
+  static void skipWord(const char*& p, const char* end) {
+    blanks(p, end);
+    while (p < end && isLetter(*p)) ++p;
+  }
+
+  double both(const char*& p, const char* end) const {
+    double value = negation(p, end);
+    while (operatorWord(p, end) == "AND") {
+      skipWord(p, end);
+      const bool right = negation(p, end) != 0.0;
+      value = value != 0.0 && right;
+    }
+    return value;
+  }
+
+  double negation(const char*& p, const char* end) const {
+    if (operatorWord(p, end) == "NOT") {
+      skipWord(p, end);
+      return negation(p, end) == 0.0;
+    }
+    return comparison(p, end);
+  }
+
+  double comparison(const char*& p, const char* end) const {
+    const double left = sum(p, end);
+    const char* q = p;
+    blanks(q, end);
+    if (q >= end) return left;
+    std::string op;
+    if (q + 1 < end && (std::string_view(q, 2) == "==" || std::string_view(q, 2) == "<>" ||
+                        std::string_view(q, 2) == "<=" || std::string_view(q, 2) == ">="))
+      op.assign(q, 2);
+    else if (*q == '<' || *q == '>')
+      op.assign(q, 1);
+    else
+      return left;
+    p = q + op.size();
+    const double right = sum(p, end);
+    if (op == "==") return left == right;
+    if (op == "<>") return left != right;
+    if (op == "<=") return left <= right;
+    if (op == ">=") return left >= right;
+    return op == "<" ? left < right : left > right;
+  }
 
   double product(const char*& p, const char* end) const {
     double value = unary(p, end);
@@ -110,7 +174,7 @@ private:
     if (p >= end) fail("a value is missing at the end of the line");
     if (*p == '(') {
       ++p;
-      const double v = sum(p, end);
+      const double v = either(p, end);
       close(p, end);
       return v;
     }
@@ -178,14 +242,18 @@ private:
   long line_;
 };
 
+double SiemensVariables::evaluate(const char*& p, const char* end, long line) const {
+  return Reader(*this, line).either(p, end);
+}
+
 bool SiemensVariables::isVariable(const std::string& name) const {
-  return isRParameter(name) || named_.count(name) > 0;
+  return isRParameter(name) || scopes_.back().count(name) > 0;
 }
 
 double SiemensVariables::get(const std::string& name, long line) const {
   if (isRParameter(name)) return r_[static_cast<size_t>(std::stoi(name.substr(1)))];
-  const auto found = named_.find(name);
-  if (found == named_.end())
+  const auto found = scopes_.back().find(name);
+  if (found == scopes_.back().end())
     throw ParseError(line, "'" + name + "' is neither an R parameter nor a variable declared by DEF: declare it "
                                         "(DEF REAL " + name + ") or check its spelling");
   return found->second;
@@ -196,7 +264,7 @@ void SiemensVariables::set(const std::string& name, double value, long line) {
   if (isRParameter(name))
     r_[static_cast<size_t>(std::stoi(name.substr(1)))] = value;
   else
-    named_[name] = value;
+    scopes_.back()[name] = value;
 }
 
 void SiemensVariables::declare(const char*& p, const char* end, long line) {
@@ -222,7 +290,7 @@ void SiemensVariables::declare(const char*& p, const char* end, long line) {
         value = Reader(*this, line).sum(p, end);
       }
     }
-    named_[name] = value;
+    scopes_.back()[name] = value;
     blanks(p, end);
     if (p >= end || *p == ';') return;
     if (*p != ',') throw ParseError(line, "DEF: names are separated by commas");

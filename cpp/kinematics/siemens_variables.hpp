@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <vector>
 #include <string>
 #include <string_view>
 
@@ -21,18 +22,26 @@ public:
 
   // A line in the 840D's language as plain words; `out` holds the rewritten text when the line needed it.
   std::string_view substitute(std::string_view raw, long line, std::string& out);
+  // An expression (or a condition: 1 true, 0 false) from `p`, which is left after it.
+  double evaluate(const char*& p, const char* end, long line) const;
+  bool isVariable(const std::string& name) const;
+  double get(const std::string& name, long line) const;
+  void set(const std::string& name, double value, long line);
+  // A subprogram call's own variables: its parameters are declared in it; they are gone when it returns.
+  void enterCall() { scopes_.emplace_back(); }
+  void leaveCall() {
+    if (scopes_.size() > 1) scopes_.pop_back();
+  }
+  void declareLocal(const std::string& name, double value) { scopes_.back()[name] = value; }
 
 private:
   class Reader;  // the expression reader (in the .cpp)
 
   void declare(const char*& p, const char* end, long line);
-  bool isVariable(const std::string& name) const;
   bool plainAssignments(std::string_view raw) const;
-  double get(const std::string& name, long line) const;
-  void set(const std::string& name, double value, long line);
 
   std::array<double, kSiemensRParameters> r_{};
-  std::map<std::string, double> named_;  // DEF variables, in capitals
+  std::vector<std::map<std::string, double>> scopes_{1};  // DEF variables (in capitals) of each program level
 };
 
 }  // namespace hsm::kinematics::detail

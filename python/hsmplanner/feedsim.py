@@ -71,8 +71,20 @@ def _trace_period(trace_period):
     return period
 
 
+def _subroutine_folders(folders):
+    if isinstance(folders, (str, os.PathLike)):
+        folders = [folders]
+    checked = []
+    for folder in folders:
+        if not os.path.isdir(folder):
+            raise ValueError("subroutine folder %r is not a folder: give folders that hold the subprogram files"
+                             % os.fspath(folder))
+        checked.append(os.fspath(folder))
+    return checked
+
+
 def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, refuse_unknown_words=False,
-             skip_unknown=False):
+             skip_unknown=False, subroutine_folders=()):
     """Simulate `program` on `machine`; returns a SimulationResult (summary, blocks, trace).
 
     The program is read in the machine's dialect (LinuxCNC, grbl, Fanuc, Haas, Siemens 840D: its file's
@@ -80,8 +92,11 @@ def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, 
     z, speed along the run into result.trace. Without them memory does not grow with the program. A word that
     would move the machine and that the reader does not understand stops the reading with a ValueError naming
     its line; skip_unknown=True skips and counts it instead (refuse_unknown_words=True refuses any unknown word).
+    Subprogram files (LinuxCNC NAME.ngc, Fanuc O1234.nc, 840D NAME.SPF) are looked for beside a program file, then
+    in subroutine_folders, in order.
     """
     model, period = load_machine(machine), _trace_period(trace_period)
+    folders = _subroutine_folders(subroutine_folders)
     commands = _path_commands(program)
     if commands is not None:
         return _core.simulate_text(path_to_gcode(commands), model, bool(blocks), period, refuse_unknown_words, True,
@@ -89,12 +104,12 @@ def simulate(program, machine=DEFAULT_MACHINE, blocks=False, trace_period=None, 
     if isinstance(program, os.PathLike) or (isinstance(program, str) and "\n" not in program
                                             and os.path.isfile(program)):
         return _core.simulate_file(os.fspath(program), model, bool(blocks), period, refuse_unknown_words, False,
-                                   bool(skip_unknown))
+                                   bool(skip_unknown), folders)
     if isinstance(program, str):
         if "\n" not in program and program.strip() and not any(c in program for c in " ;("):
             raise ValueError("program %r is neither an existing file nor G-code text: check the path" % program)
         return _core.simulate_text(program, model, bool(blocks), period, refuse_unknown_words, False,
-                                   bool(skip_unknown))
+                                   bool(skip_unknown), folders)
     raise TypeError("program must be a G-code file, G-code text or FreeCAD Path commands, got %s"
                     % type(program).__name__)
 

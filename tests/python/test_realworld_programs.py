@@ -3,6 +3,8 @@ each read in its own dialect on the machine it was written for: simulated with n
 refused for a limit of the program itself, in one line that says what it is."""
 import math
 import os
+import shutil
+import tempfile
 import unittest
 
 import hsmplanner
@@ -42,10 +44,12 @@ PROGRAMS = [
     ("other/okuma_7000m.nc", "fanuc-31i-b5-vmc", "line 19: this is an Okuma OSP program"),
     ("other/dmc160u_millplus_5axis.nc", "fanuc-31i-b5-vmc", "line 11: this is a Heidenhain MillPlus program"),
     ("840d/cam_test_fusion_ac_3plus2.mpf", "mikron-ucp710-ac-840d", None),
-    ("840d/cincinnati_ftv5_varcontour.mpf", "mikron-ucp710-ac-840d", None),
-    ("840d/cincinnati_ftv5_nx_traori.mpf", "mikron-ucp710-ac-840d", "line 363: 'CYCLE800' (a swivel of the tool axis"),
-    ("840d/brys_oporniy_hand.mpf", "mikron-ucp710-840d", "line 17: 'ROT' (a frame that turns"),
-    ("840d/cycle_konus_sub.spf", "mikron-ucp710-840d", "line 35: 'SHAG' is neither an R parameter nor a variable"),
+    # TRAOOF (NX's post for this Cincinnati, maybe the maker's own cycle) is no 840D instruction: the control
+    # would look for a subprogram of that name, so does the reader (see Siemens840dPrograms below)
+    ("840d/cincinnati_ftv5_varcontour.mpf", "mikron-ucp710-ac-840d", "line 13: subprogram TRAOOF is not found"),
+    ("840d/cincinnati_ftv5_nx_traori.mpf", "mikron-ucp710-ac-840d", "line 362: subprogram TRAOOF is not found"),
+    ("840d/brys_oporniy_hand.mpf", "mikron-ucp710-840d", "line 13: subprogram L140 is not found"),
+    ("840d/cycle_konus_sub.spf", "mikron-ucp710-840d", "line 21: this is subprogram CYCLE_KONUS, whose parameters"),
     ("heidenhain/dmc100_tnc_m128_5axis.h", "mikron-ucp710-840d", "line 1: this is a Heidenhain conversational"),
     ("heidenhain/dangarpt_test.h", "mikron-ucp710-840d", "line 1: this is a Heidenhain conversational"),
 ]
@@ -99,6 +103,56 @@ class RealWorldPrograms(unittest.TestCase):
         metric = hsmplanner.simulate(path, "linuxcnc-2.9").summary.total_time
         self.assertAlmostEqual(inch, 29.3, delta=29.3 * 0.02)
         self.assertAlmostEqual(metric, 563.0, delta=563.0 * 0.02)
+
+
+class Siemens840dPrograms(unittest.TestCase):
+    """The corpus's 840D programs run with what they call: the shop's subprograms L140 / L143 (a head or table
+    positioning the corpus does not hold: stand-ins that move nothing), CYCLE_KONUS called with a cone's
+    parameters, TRAOOF skipped and counted."""
+
+    def setUp(self):
+        self.folder = tempfile.mkdtemp(prefix="hsm_840d_")
+
+    def tearDown(self):
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+    def write(self, name, text):
+        with open(os.path.join(self.folder, name), "w") as stream:
+            stream.write(text)
+
+    def test_hand_written_program_with_its_subprograms_loops_over_its_depths(self):
+        self.write("L140.SPF", "PROC L140(INT MODE)\nRET\n")
+        self.write("L143.SPF", "PROC L143(REAL ANGLE)\nRET\n")
+        path = os.path.join(CORPUS, "840d", "brys_oporniy_hand.mpf")
+        result = hsmplanner.simulate(path, "mikron-ucp710-840d", blocks=True, subroutine_folders=[self.folder])
+        z = result.blocks["end"][:, 2]
+        # each `IF R6>=R3 GOTOB METKA_START` pass goes 3 mm deeper: 1586, 1583 ... 1544, then the last at 1543
+        for depth in (1586.0, 1583.0, 1544.0, 1543.0):
+            self.assertTrue(any(abs(v - depth) < 1e-6 for v in z), depth)
+        self.assertEqual(result.summary.unknown_word_counts.get("L140", 0), 0)
+
+    def test_a_parametrised_subprogram_runs_from_the_program_that_calls_it(self):
+        shutil.copy(os.path.join(CORPUS, "840d", "cycle_konus_sub.spf"), os.path.join(self.folder, "CYCLE_KONUS.SPF"))
+        self.write("KONUS.MPF", "G54 G17 G90 G71\nT1 D1 M6\nS1000 M3 F500\n"
+                                "CYCLE_KONUS(50, 40, 5, 2, 10, 20, 8, 0.8, -5, 0, 0)\nM30\n")
+        result = hsmplanner.simulate(os.path.join(self.folder, "KONUS.MPF"), "mikron-ucp710-840d", blocks=True)
+        radius = [math.hypot(p[0], p[1]) for p in result.blocks["end"]]
+        # the spiral from radius 40 - 8 inwards ... to the end radius 20 - 8, one point each 5 degrees
+        self.assertGreater(result.summary.block_count, 1000)
+        self.assertAlmostEqual(max(radius[3:]), 32.0, delta=0.2)
+        self.assertLess(min(radius[3:-2]), 12.5)
+
+    def test_the_nx_programs_run_with_their_unknown_call_skipped_and_named(self):
+        for name in ("cincinnati_ftv5_varcontour.mpf", "cincinnati_ftv5_nx_traori.mpf"):
+            summary = hsmplanner.simulate(os.path.join(CORPUS, "840d", name), "mikron-ucp710-ac-840d",
+                                          skip_unknown=True).summary
+            self.assertIn("TRAOOF", summary.unknown_word_counts, name)
+            self.assertGreater(summary.total_time, summary.naive_time * 0.9, name)
+
+    def test_a_subroutine_folder_that_is_not_one_is_refused(self):
+        with self.assertRaises(ValueError) as raised:
+            hsmplanner.simulate("G1 X1 F100\n", "mikron-ucp710-840d", subroutine_folders=["/no/such/folder"])
+        self.assertIn("/no/such/folder", str(raised.exception))
 
 
 if __name__ == "__main__":

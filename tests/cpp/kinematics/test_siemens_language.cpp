@@ -1,0 +1,215 @@
+// The 840D's program flow, each construct's expected moves worked out from SINUMERIK 840D sl Programming Manual
+// Job Planning (6FC5398-2BP40), chapter 1 "Flexible NC programming": 1.10 "Program jumps and branches" (labels,
+// GOTOF / GOTOB / GOTO / GOTOC, IF ... GOTO), 1.11 "Program section repetition" (REPEAT, REPEATB), 1.12 "Control
+// structures" (IF-ELSE-ENDIF, LOOP, FOR, WHILE, REPEAT-UNTIL), and chapter 2 "Subprogram technique" (L123, calls
+// by name with PROC parameters, P passes, CALL, RET / M17, local variables).
+#include "kinematics/gcode.hpp"
+
+#include "support/gcode_errors.hpp"
+#include "support/reader_fuzz.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace hsm::kinematics;
+using hsm::test::errorOf;
+
+namespace {
+ReaderOptions siemens() {
+  ReaderOptions options;
+  options.conventions.dialect = Dialect::Siemens840D;
+  return options;
+}
+
+std::vector<Eigen::Vector3d> ends(const std::vector<Block>& blocks) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Block& b : blocks) out.push_back(b.end);
+  return out;
+}
+
+using Points = std::vector<Eigen::Vector3d>;
+
+// A folder of subprogram files, removed with the test.
+struct SubprogramFolder {
+  explicit SubprogramFolder(const std::string& name) : path(std::filesystem::temp_directory_path() / name) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~SubprogramFolder() { std::filesystem::remove_all(path); }
+  void write(const std::string& file, const std::string& text) const { std::ofstream(path / file) << text; }
+  std::filesystem::path path;
+};
+}  // namespace
+
+// 1.10: a jump label ends with ':' at the block's start (after its N number); GOTOF searches forward, GOTOB
+// backward, GOTO forward then backward, GOTOC the same without an alarm when the label is missing; a block number
+// is a destination too. The same label may stand several times: each search takes the nearest in its direction.
+TEST(SiemensLanguage, LabelsAndJumps) {
+  const auto blocks = readProgram(
+      "R1=0\n"
+      "LOOP1: R1=R1+1\n"
+      "G1 F1000 X=R1*10\n"
+      "IF R1<3 GOTOB LOOP1\n"
+      "GOTOF SKIP\n"
+      "G1 X999\n"
+      "N40 SKIP: G1 Y5\n"
+      "GOTOF N50\n"
+      "G1 X888\n"
+      "N50 G1 Y6\n"
+      "GOTOC NOWHERE\n"
+      "G1 Y7\n"
+      "R6=9\n"
+      "START: G1 Z=R6\n"
+      "R6=R6-3\n"
+      "IF R6>=0 GOTOB START\n"
+      "R6=2\n"
+      "START: G1 X=R6\n"
+      "R6=R6-1\n"
+      "IF R6>0 GOTOB START\n",
+      siemens());
+  EXPECT_EQ(ends(blocks), (Points{{10, 0, 0}, {20, 0, 0}, {30, 0, 0}, {30, 5, 0}, {30, 6, 0}, {30, 7, 0},
+                                  {30, 7, 9}, {30, 7, 6}, {30, 7, 3}, {30, 7, 0}, {2, 7, 0}, {1, 7, 0}}));
+  EXPECT_EQ(errorOf("G1 F100 X1\nGOTOF NOPE\nNOPE_NOT: X2\n", siemens()).rfind("line 2: label NOPE is not after this line", 0), 0u);
+  EXPECT_EQ(errorOf("BACK: G1 F100 X1\nGOTOB ELSEWHERE\n", siemens()).rfind("line 2: label ELSEWHERE is not before", 0), 0u);
+  EXPECT_EQ(errorOf("GOTOF\n", siemens()).rfind("line 1: GOTOF needs the label", 0), 0u);
+  EXPECT_EQ(errorOf("IF R1== GOTOF X\n", siemens()).rfind("line 1: ", 0), 0u);
+}
+
+// 1.12: IF-ELSE-ENDIF (nested), conditions with comparisons and AND / OR / NOT, FOR counts up by 1 to its end
+// value (a start beyond it runs nothing), WHILE tests before each pass, REPEAT-UNTIL after, LOOP turns until a
+// jump leaves it.
+TEST(SiemensLanguage, ControlStructures) {
+  const auto blocks = readProgram(
+      "DEF INT I\n"
+      "R1=5\n"
+      "IF R1>3\n"
+      "  G1 F100 X1\n"
+      "ELSE\n"
+      "  G1 X2\n"
+      "ENDIF\n"
+      "IF R1==0 AND NOT (R1<>5)\n"
+      "  G1 X3\n"
+      "ELSE\n"
+      "  IF R1>=5 OR R1<0\n"
+      "    G1 X4\n"
+      "  ENDIF\n"
+      "ENDIF\n"
+      "FOR I=1 TO 3\n"
+      "  G1 Y=I\n"
+      "ENDFOR\n"
+      "FOR I=5 TO 1\n"
+      "  G1 X99\n"
+      "ENDFOR\n"
+      "R2=0\n"
+      "WHILE R2<2\n"
+      "  R2=R2+1\n"
+      "  G1 Z=R2\n"
+      "ENDWHILE\n"
+      "REPEAT\n"
+      "  R2=R2-1\n"
+      "  G1 Z=R2\n"
+      "UNTIL R2<=0\n"
+      "LOOP\n"
+      "  R2=R2+10\n"
+      "  IF R2>20 GOTOF OUT\n"
+      "  G1 X=R2\n"
+      "ENDLOOP\n"
+      "OUT: G1 X0\n",
+      siemens());
+  EXPECT_EQ(ends(blocks), (Points{{1, 0, 0}, {4, 0, 0}, {4, 1, 0}, {4, 2, 0}, {4, 3, 0}, {4, 3, 1}, {4, 3, 2},
+                                  {4, 3, 1}, {4, 3, 0}, {10, 3, 0}, {20, 3, 0}, {0, 3, 0}}));
+  EXPECT_EQ(errorOf("R1=1\nIF R1>3\nG1 F100 X1\n", siemens()).rfind("line 2: IF has no ENDIF", 0), 0u);
+  EXPECT_EQ(errorOf("ENDWHILE\n", siemens()).rfind("line 1: ENDWHILE without its opening statement", 0), 0u);
+  EXPECT_EQ(errorOf("FOR _K=1 TO 3\nENDFOR\n", siemens()).rfind("line 1: FOR _K: the counter is an R parameter", 0), 0u);
+  EXPECT_EQ(errorOf("IF R1>3 G1 X5\n", siemens()).rfind("line 1: IF <condition> is followed by GOTOF", 0), 0u);
+}
+
+// 1.11: REPEAT <label> P=n runs the section from the label to the REPEAT block n times more; REPEAT <label>
+// <label> the section between the two labels; REPEATB <label> the labelled block alone. Then the program goes
+// on after the REPEAT block.
+TEST(SiemensLanguage, SectionRepetition) {
+  const auto blocks = readProgram(
+      "G1 F100 X1\n"
+      "ROW: G91 Y1\n"
+      "G90\n"
+      "REPEAT ROW P=2\n"
+      "FIRST_Z: G91 Z1\n"
+      "LAST_Z: Z1\n"
+      "G90 X5\n"
+      "REPEAT FIRST_Z LAST_Z\n"
+      "G90 G1 X7\n"
+      "REPEATB ROW P=3\n"
+      "G90 X8\n",
+      siemens());
+  EXPECT_EQ(ends(blocks), (Points{{1, 0, 0}, {1, 1, 0}, {1, 2, 0}, {1, 3, 0}, {1, 3, 1}, {1, 3, 2}, {5, 3, 2},
+                                  {5, 3, 3}, {5, 3, 4}, {7, 3, 4}, {7, 4, 4}, {7, 5, 4}, {7, 6, 4}, {8, 6, 4}}));
+  EXPECT_EQ(errorOf("REPEAT NOWHERE P=2\n", siemens()).rfind("line 1: label NOWHERE is not before", 0), 0u);
+  EXPECT_EQ(errorOf("ROW: G1 F100 X1\nREPEAT ROW P=-1\n", siemens()).rfind("line 2: REPEAT P=-1: the passes", 0), 0u);
+}
+
+// Chapter 2: a subprogram is a file NAME.SPF (or L123.SPF) beside the program or in a folder given; called by
+// its name alone, with arguments for its PROC's parameters, with P passes, or by CALL "NAME"; RET or M17 return
+// (M30 ends the main program). Its DEF variables are its own (the caller's are not seen); R parameters are the
+// control's. A missing subprogram stops the program (alarm 14011): refused, named.
+TEST(SiemensLanguage, SubprogramsFromFiles) {
+  const SubprogramFolder folder("hsm_siemens_subs");
+  folder.write("L10.SPF", "%_N_L10_SPF\n;$PATH=/_N_SPF_DIR\nG91 G1 X1\nG90\nM17\n");
+  folder.write("POCKET_ROW.SPF", "PROC POCKET_ROW(REAL DEPTH, VAR INT COUNT) SAVE DISPLOF\nDEF INT K\n"
+                                 "FOR K=1 TO COUNT\n  G1 Z=DEPTH*K\nENDFOR\nR10=R10+1\nRET\n");
+  folder.write("SEES_CALLER.SPF", "G1 X=_MINE\nRET\n");
+  folder.write("DEEP.SPF", "DEEP\nRET\n");
+  ReaderOptions options = siemens();
+  options.subroutineFolders = {folder.path.string()};
+  const auto blocks = readProgram(
+      "DEF REAL _MINE=3\nR10=0\nG0 X0 Y0 Z5\nG1 F100 Y1\nL10 P3\nPOCKET_ROW(-1, 2)\nCALL \"L10\"\nG1 Y=R10+5\n"
+      "M30\nG1 X99\n",
+      options);
+  EXPECT_EQ(ends(blocks), (Points{{0, 0, 5}, {0, 1, 5}, {1, 1, 5}, {2, 1, 5}, {3, 1, 5}, {3, 1, -1}, {3, 1, -2},
+                                  {4, 1, -2}, {4, 6, -2}}));
+  EXPECT_EQ(errorOf("MISSING_ONE\n", options).rfind("line 1: subprogram MISSING_ONE is not found (looked for MISSING_ONE.SPF", 0), 0u);
+  EXPECT_NE(errorOf("TRAOOF\n", options).find("or is it a misspelt TRAFOOF?"), std::string::npos);
+  EXPECT_EQ(errorOf("POCKET_ROW(1, 2, 3)\n", options).rfind("line 1: POCKET_ROW takes 2 parameters", 0), 0u);
+  const std::string hidden = errorOf("DEF REAL _MINE=3\nG1 F100 X1\nSEES_CALLER\n", options);
+  EXPECT_EQ(hidden.rfind("line 1: '_MINE' is neither an R parameter nor a variable", 0), 0u) << hidden;
+  EXPECT_NE(hidden.find("(in SEES_CALLER.SPF)"), std::string::npos) << hidden;
+  EXPECT_NE(errorOf("DEEP\n", options).find("nested more than 16 levels deep"), std::string::npos);
+  EXPECT_EQ(errorOf("L10 X5\n", options).rfind("line 1: the call of L10 shares its block with 'X5'", 0), 0u);
+  EXPECT_EQ(errorOf("PROC MAIN_AS_SUB(REAL A)\nG1 F100 X=A\n", options).rfind("line 1: this is subprogram MAIN_AS_SUB", 0), 0u);
+
+  // Skipping unknown motion: the missing call is counted and named, the rest is read.
+  options.skipUnknownMotion = true;
+  std::istringstream text("MISSING_ONE\nG1 F100 X1\n");
+  GcodeReader reader(text, options);
+  Block block;
+  int count = 0;
+  while (reader.next(block)) ++count;
+  EXPECT_EQ(count, 1);
+  EXPECT_EQ(reader.stats().unknownWordCounts.count("MISSING_ONE"), 1u);
+}
+
+// Loops, jumps back and repeats are bounded: an endless one is refused, naming it, instead of running on.
+TEST(SiemensLanguage, EndlessLoopsAreRefused) {
+  ReaderOptions options = siemens();
+  options.maxLoopIterations = 1000;
+  EXPECT_EQ(errorOf("G1 F100 X0\nLOOP\nG91 X1\nENDLOOP\n", options).rfind("line 4: LOOP ... ENDLOOP (left only by a jump) has turned 1000 times", 0), 0u);
+  EXPECT_EQ(errorOf("AGAIN: G1 F100 X1\nGOTOB AGAIN\n", options).rfind("line 2: the program has jumped back to the same line 1000 times", 0), 0u);
+  EXPECT_EQ(errorOf("R1=0\nWHILE R1<1\nG91 G1 F100 X1\nENDWHILE\n", options).rfind("line 4: WHILE ... ENDWHILE has turned 1000 times", 0), 0u);
+  EXPECT_EQ(errorOf("ROW: G1 F100 X1\nREPEAT ROW P=5000\n", options).rfind("line 2: REPEAT P=5000: the passes are a whole number from 0 to 1000", 0), 0u);
+}
+
+// Mutations of a program in the 840D's flow statements are read or refused with an InputError, never a crash or
+// an endless run.
+TEST(SiemensLanguage, FuzzedFlowIsReadOrRefused) {
+  const std::string seed =
+      "DEF INT I\nR1=0\nMARK: R1=R1+1\nG1 F100 X=R1\nIF R1<3 GOTOB MARK\nIF R1==3\nG1 Y1\nELSE\nG1 Y2\nENDIF\n"
+      "FOR I=1 TO 2\nG1 Z=I\nENDFOR\nWHILE R1>0\nR1=R1-1\nENDWHILE\nREPEAT\nR1=R1+1\nUNTIL R1>2\n"
+      "ROW: G91 X1\nG90\nREPEAT ROW P=2\nLOOP\nGOTOF OUT\nENDLOOP\nOUT: G1 X0\n";
+  ReaderOptions options = siemens();
+  options.maxLoopIterations = 1000;
+  ASSERT_GT(readProgram(seed, options).size(), 8u);
+  const auto mutants = hsm::test::readMutants(seed, "RIFGOTBMAKLSEWHNDUPX=<>+-:0123456789 \n", options, 47);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
+}
