@@ -91,35 +91,122 @@ Interpreter::Interpreter(const ReaderOptions& options)
 }
 
 Eigen::Vector3d Interpreter::frame() const {
-  return workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_ + programmable_;
+  const Eigen::Vector3d origin =
+      workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_ + programmable_;
+  return rotated_ ? Eigen::Vector3d(inverseLinear_ * origin) : origin;
 }
 
-// SINUMERIK 840D sl Programming Manual Fundamentals, "Coordinate transformations (frames)": TRANS X Y Z replaces
-// the programmable frame by that translation, ATRANS adds to it; TRANS, ROT, SCALE or MIRROR alone clears the
-// whole programmable frame. A rotation, scaling or mirroring with values is not read: it stops the reading.
+void Interpreter::setLinear(const Eigen::Matrix3d& linear) {
+  if (!linear.allFinite() || std::abs(linear.determinant()) < 1e-12)
+    throw ParseError(lineNumber_, "the frame would flatten the coordinates (a scale of 0): give every factor a size");
+  const Eigen::Vector3d here = rotated_ ? Eigen::Vector3d(linear_ * position_) : position_;
+  linear_ = linear;
+  rotated_ = !linear.isIdentity(0.0);
+  inverseLinear_ = linear.inverse();
+  position_ = rotated_ ? Eigen::Vector3d(inverseLinear_ * here) : here;  // the tool stays where it is
+}
+
+void Interpreter::toPositions(Block& block) const {
+  if (!rotated_) return;
+  block.start = linear_ * block.start;
+  block.end = linear_ * block.end;
+  if (block.orientationEnd.squaredNorm() > 0.0) block.orientationEnd = (linear_ * block.orientationEnd).normalized();
+  if (block.isArc()) {
+    // A circle stays one when the frame scales its plane alike in every direction (and keeps it square)
+    const Eigen::Vector3d u = block.normal.unitOrthogonal(), v = block.normal.cross(u);
+    const Eigen::Vector3d lu = linear_ * u, lv = linear_ * v;
+    const double su = lu.norm(), sv = lv.norm();
+    if (std::abs(su - sv) > 1e-9 * su || std::abs(lu.dot(lv)) > 1e-9 * su * sv)
+      throw ParseError(block.line, "an arc under a SCALE that differs between the axes of its plane is an ellipse, "
+                                   "which the 840D does not cut either: scale both axes alike");
+    block.center = linear_ * block.center;
+    block.normal = lu.cross(lv).normalized();  // a mirror turns the arc the other way about the normal
+    block.radius *= su;
+  }
+}
+
+Eigen::Vector3d Interpreter::machineTarget(const LineWords& w) const {
+  Eigen::Vector3d machine = rotated_ ? Eigen::Vector3d(linear_ * position_) : position_;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasAxis[a]) machine[a] = w.axis[a] * unit_ - options_.conventions.workOffset[a];
+  return rotated_ ? Eigen::Vector3d(inverseLinear_ * machine) : machine;
+}
+
+namespace {
+Eigen::Matrix3d rotation(const double (&degrees)[3]) {  // RPY: about Z, then the new Y, then the newest X
+  return (Eigen::AngleAxisd(degrees[2] * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(degrees[1] * M_PI / 180.0, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(degrees[0] * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+}  // namespace
+
+// SINUMERIK 840D sl Programming Manual Fundamentals, "Coordinate transformations (frames)": TRANS, ROT, SCALE
+// and MIRROR replace the whole programmable frame (alone, they clear it), ATRANS, AROT, ASCALE and AMIRROR add to
+// it in the coordinates it has made. ROT X Y Z turns about Z, then the new Y, then the newest X (the RPY order
+// of FRAME_ANGLE_INPUT_MODE 1); ROT RPL= in the working plane. SCALE multiplies (a non-uniform one is refused
+// for arcs), MIRROR X0 reverses X. A program point p is then at origin + L p, L the frame's turn, scale and
+// mirror.
 void Interpreter::programmableFrame(std::string_view name, const Line& line) {
-  Eigen::Vector3d values = Eigen::Vector3d::Zero();
-  bool any = false;
+  double values[3] = {0, 0, 0};
+  bool has[3] = {false, false, false};
+  double plane = 0.0;
+  bool hasPlane = false;
   for (int i = 0; i < line.wordCount; ++i) {
     const Word& w = line.words[static_cast<size_t>(i)];
     if (w.letter >= 'X' && w.letter <= 'Z') {
-      values[w.letter - 'X'] = w.value * unit_;
-      any = true;
+      values[w.letter - 'X'] = w.value;
+      has[w.letter - 'X'] = true;
     } else if (w.letter != 'N') {
-      any = true;  // ROT RPL=…, an A B C angle…: more than a translation
-      if (name == "TRANS" || name == "ATRANS") return unknownMotion(w.text, "a frame of more than X Y Z");
+      throw ParseError(lineNumber_, std::string(name) + " with '" + std::string(w.text) + "': a frame instruction "
+                                    "stands in a block of its own with its axes (X Y Z, RPL=): move the rest to its own block");
     }
   }
-  if (!any && line.keywords.size() == 1 && (name == "TRANS" || name == "ROT" || name == "SCALE" || name == "MIRROR")) {
+  for (const Keyword& k : line.keywords) {
+    if (k.name == "RPL" && k.hasValue) {
+      plane = k.value;
+      hasPlane = true;
+    } else if (!isFrameKeyword(k.name)) {
+      throw ParseError(lineNumber_, std::string(name) + " with '" + std::string(k.name) + "': a frame instruction "
+                                    "stands in a block of its own with its axes (X Y Z, RPL=): move the rest to its own block");
+    }
+  }
+  const bool additive = name[0] == 'A';
+  const std::string_view kind = additive ? name.substr(1) : name;
+  if (!additive && !has[0] && !has[1] && !has[2] && !hasPlane) {  // TRANS, ROT, SCALE, MIRROR alone
     programmable_.setZero();
+    setLinear(Eigen::Matrix3d::Identity());
     return;
   }
-  if (name == "TRANS") {
-    programmable_ = values;
-  } else if (name == "ATRANS") {
-    programmable_ += values;
+  Eigen::Matrix3d change = Eigen::Matrix3d::Identity();
+  if (kind == "TRANS") {
+    const Eigen::Vector3d shift = Eigen::Vector3d(values[0], values[1], values[2]) * unit_;
+    if (!additive) {
+      programmable_ = shift;
+      setLinear(Eigen::Matrix3d::Identity());
+    } else {
+      programmable_ += linear_ * shift;
+    }
+    return;
+  }
+  if (kind == "ROT") {
+    if (hasPlane && (has[0] || has[1] || has[2]))
+      throw ParseError(lineNumber_, std::string(name) + ": RPL= turns in the plane, X Y Z in space: give one or the other");
+    if (hasPlane) {
+      const int normal = plane_ == 17 ? 2 : plane_ == 18 ? 1 : 0;
+      values[normal] = plane;
+    }
+    change = rotation(values);
+  } else if (kind == "SCALE") {
+    for (int a = 0; a < 3; ++a) change(a, a) = has[a] ? values[a] : 1.0;
+  } else if (kind == "MIRROR") {
+    for (int a = 0; a < 3; ++a) change(a, a) = has[a] ? -1.0 : 1.0;
+  }
+  if (!additive) {
+    programmable_.setZero();
+    setLinear(change);
   } else {
-    unknownMotion(name, "a frame that turns, scales or mirrors the coordinates");
+    setLinear(linear_ * change);
   }
 }
 
@@ -149,10 +236,16 @@ double Interpreter::dwellSeconds(const LineWords& w) const {
   return w.pWord / 1000.0;  // Fanuc: P in ms (no point); Haas: P1000 ms, P1.0 s
 }
 
-bool Interpreter::takeQueued(Block& block) {
+bool Interpreter::popQueued(Block& block) {
   if (queued_.empty()) return false;
   block = queued_.front();
   queued_.pop_front();
+  return true;
+}
+
+bool Interpreter::takeQueued(Block& block) {
+  if (!popQueued(block)) return false;
+  toPositions(block);
   return true;
 }
 
@@ -161,13 +254,16 @@ bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
   LineWords words;
   if (!collect(line, words)) return false;
   applyModes(words);
-  return makeBlock(words, block);
+  if (!makeBlock(words, block)) return false;
+  toPositions(block);
+  return true;
 }
 
 bool Interpreter::collect(const Line& line, LineWords& words) {
   for (const Keyword& k : line.keywords) {
     if (isFrameKeyword(k.name)) {
-      programmableFrame(k.name, line);
+      if (options_.conventions.dialect == Dialect::Siemens840D) programmableFrame(k.name, line);
+      else unknownMotion(k.name, "a frame that turns, scales or mirrors the coordinates, in the 840D's language");
       return false;  // the line's coordinates were the frame's, not a move
     }
     keyword(k, words);
@@ -283,7 +379,7 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   }
   if (w.siemensCycle != 0) {
     siemensDrilling(w.siemensCycle, std::string(w.siemensArguments));
-    return takeQueued(block);
+    return popQueued(block);
   }
   if (w.rigidTap) return rigidTapBlocks(w, block);
   if (w.home != 0) return homeBlocks(w, block);
@@ -297,12 +393,11 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   if (motion_ < 0) throw ParseError(lineNumber_, "coordinates before any motion mode: start with G0 or G1");
 
   Eigen::Vector3d target = position_;
-  for (int a = 0; a < 3; ++a) {
-    if (!w.hasAxis[a]) continue;
-    if (w.machineCoordinates)  // G53: absolute machine coordinates, this line only
-      target[a] = w.axis[a] * unit_ - options_.conventions.workOffset[a];
-    else
-      target[a] = absolute_ ? fromProgram(a, w.axis[a])[a] : position_[a] + w.axis[a] * unit_;
+  if (w.machineCoordinates) {  // G53, SUPA: absolute machine coordinates, this line only
+    target = machineTarget(w);
+  } else {
+    for (int a = 0; a < 3; ++a)
+      if (w.hasAxis[a]) target[a] = absolute_ ? fromProgram(a, w.axis[a])[a] : position_[a] + w.axis[a] * unit_;
   }
   Eigen::Vector3d rotaryTarget = rotary_;
   for (int a = 0; a < 3; ++a)
@@ -408,7 +503,7 @@ bool Interpreter::repeatedCycle(const LineWords& w, Block& block) {
   const CycleModes borrowed(*this);
   pathMode_ = PathMode::ExactStop;
   for (long i = 0; i < std::lround(repeats); ++i) cycleBlocks(w, i == 0);
-  return takeQueued(block);
+  return popQueued(block);
 }
 
 // Canned cycles as LinuxCNC's G-code reference ("G81 Drilling Cycle" and the following sections) and Fanuc's
@@ -560,7 +655,7 @@ bool Interpreter::homeBlocks(const LineWords& w, Block& block) {
     if (w.hasAxis[a]) home[a] = -options_.conventions.workOffset[a];  // machine zero, the reference point
   queueMove(through, true);
   queueMove(home, true);
-  return takeQueued(block);
+  return popQueued(block);
 }
 
 void Interpreter::setOffset(const LineWords& w) {
@@ -599,7 +694,7 @@ bool Interpreter::rigidTapBlocks(const LineWords& w, Block& block) {
   feed_ = spindle_ * w.offset[2] * unit_ / 60.0;  // the axis follows the spindle: pitch per turn
   for (const Eigen::Vector3d& target : {bottom, start}) queueMove(target, false);
   feed_ = feed;
-  return takeQueued(block);
+  return popQueued(block);
 }
 
 void Interpreter::unknownMotion(std::string_view word, std::string_view what) {

@@ -87,8 +87,15 @@ private:
   // G28 / G30: rapid to the line's point (the intermediate point), then to the reference point on the axes
   // named; queued, the first in `block`.
   bool homeBlocks(const LineWords& words, Block& block);
-  // The 840D's TRANS / ATRANS (and the frame cleared by TRANS, ROT, SCALE or MIRROR alone).
+  // The 840D's programmable frame: TRANS ATRANS ROT AROT SCALE ASCALE MIRROR AMIRROR.
   void programmableFrame(std::string_view name, const Line& line);
+  // Sets the frame's turn, scale and mirror (L), the tool staying where it is.
+  void setLinear(const Eigen::Matrix3d& linear);
+  // A block made in the frame's coordinates, in the positions' (L applied); nothing without a turn.
+  void toPositions(Block& block) const;
+  // The target of a G53 / SUPA line: its axes in machine coordinates, the others where the tool is.
+  Eigen::Vector3d machineTarget(const LineWords& words) const;
+  bool popQueued(Block& block);  // the next queued block, as made
   // G10 L2 / L20 (a work offset's table entry) and G92 (a shift of the coordinates).
   void setOffset(const LineWords& words);
   // Where the program's coordinates put the tool: a programmed point in the active frame, as a position.
@@ -171,8 +178,13 @@ private:
   std::array<Eigen::Vector3d, 10> workOffsets_{};
   int workOffset_ = 1;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();  // G92
-  Eigen::Vector3d programmable_ = Eigen::Vector3d::Zero();  // the 840D's programmable frame (TRANS, ATRANS)
-  Eigen::Vector3d frame() const;  // the active frame's origin in the positions' frame
+  // The 840D's programmable frame: a program point p is at (work offset + programmable_) + linear_ p. While
+  // linear_ turns, scales or mirrors (rotated_), position_ and the blocks being made are in its coordinates,
+  // inverseLinear_ times the positions', and toPositions() turns the blocks out.
+  Eigen::Vector3d programmable_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d linear_ = Eigen::Matrix3d::Identity(), inverseLinear_ = Eigen::Matrix3d::Identity();
+  bool rotated_ = false;
+  Eigen::Vector3d frame() const;  // the active frame's origin, in the coordinates position_ is in
   std::deque<Block> queued_;
 };
 

@@ -125,10 +125,12 @@ class Siemens840dPrograms(unittest.TestCase):
         self.write("L143.SPF", "PROC L143(REAL ANGLE)\nRET\n")
         path = os.path.join(CORPUS, "840d", "brys_oporniy_hand.mpf")
         result = hsmplanner.simulate(path, "mikron-ucp710-840d", blocks=True, subroutine_folders=[self.folder])
-        z = result.blocks["end"][:, 2]
-        # each `IF R6>=R3 GOTOB METKA_START` pass goes 3 mm deeper: 1586, 1583 ... 1544, then the last at 1543
+        # ROT Y-90 puts the program's Z along the machine's -X: each `IF R6>=R3 GOTOB METKA_START` pass goes
+        # 3 mm deeper (Z=R6: 1586, 1583 ... 1544), then `LAST:` the last at 1543
+        x = result.blocks["end"][:, 0]
         for depth in (1586.0, 1583.0, 1544.0, 1543.0):
-            self.assertTrue(any(abs(v - depth) < 1e-6 for v in z), depth)
+            self.assertTrue(any(abs(v + depth) < 1e-6 for v in x), depth)
+        self.assertFalse(any(abs(v + 1541.0) < 1e-6 for v in x))
         self.assertEqual(result.summary.unknown_word_counts.get("L140", 0), 0)
 
     def test_a_parametrised_subprogram_runs_from_the_program_that_calls_it(self):

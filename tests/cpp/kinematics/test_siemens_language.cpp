@@ -213,3 +213,52 @@ TEST(SiemensLanguage, FuzzedFlowIsReadOrRefused) {
   EXPECT_GT(mutants.read, 100);
   EXPECT_GT(mutants.refused, 100);
 }
+
+// Programming Manual Fundamentals, "Coordinate transformations (frames)": TRANS / ROT / SCALE / MIRROR replace the
+// programmable frame, ATRANS / AROT / ASCALE / AMIRROR add to it in the coordinates it has made; ROT RPL= turns in
+// the working plane; increments (G91) and arcs are in the frame's coordinates; ROT alone clears it.
+TEST(SiemensFrames, TurnsScalesAndMirrors) {
+  const auto blocks = readProgram(
+      "G17 G0 X0 Y0 Z10\n"
+      "TRANS X10 Y5\n"
+      "ROT Z90\n"              // replaces the translation
+      "G1 F100 X10 Y0\n"       // (10, 0) turned 90 degrees: (0, 10)
+      "TRANS X10 Y5\n"
+      "AROT RPL=90\n"
+      "G1 X10 Y0\n"            // (10, 5) + (0, 10)
+      "ATRANS X1\n"            // along the turned X: the world's Y
+      "G1 X0 Y0\n"             // (10, 6)
+      "G91 G1 X1\n"            // one more along the turned X: (10, 7)
+      "G90\n"
+      "SCALE X2 Y2\n"
+      "G1 X5 Y5\n"             // (10, 10)
+      "G2 X10 Y0 I0 J-5\n"     // centre (5, 0) scaled: (10, 0), radius 10, to (20, 0)
+      "MIRROR X0\n"
+      "G1 X5 Y5\n"             // (-5, 5)
+      "ROT Y-90\n"             // about Y: the program's X goes down the world's Z, its Z along -X
+      "G1 X100 Y0 Z20\n"       // (-20, 0, 100)
+      "ROT\n"
+      "G1 X0 Y0 Z0\n",
+      siemens());
+  const Points expected{{0, 0, 10},  {0, 10, 10}, {10, 15, 10}, {10, 6, 10},   {10, 7, 10},
+                        {10, 10, 10}, {20, 0, 10}, {-5, 5, 10},  {-20, 0, 100}, {0, 0, 0}};
+  ASSERT_EQ(blocks.size(), expected.size());
+  for (size_t i = 0; i < blocks.size(); ++i)
+    EXPECT_LT((blocks[i].end - expected[i]).norm(), 1e-9) << i << ": " << blocks[i].end.transpose();
+  const Block& arc = blocks[6];
+  EXPECT_TRUE(arc.center.isApprox(Eigen::Vector3d(10, 0, 10), 1e-9)) << arc.center.transpose();
+  EXPECT_NEAR(arc.radius, 10.0, 1e-9);
+  EXPECT_NEAR(arc.length(), 0.5 * M_PI * 10.0, 1e-9);
+  EXPECT_TRUE(arc.pointAt(arc.length() / 2).isApprox(Eigen::Vector3d(10 + 10 * M_SQRT1_2, 10 * M_SQRT1_2, 10), 1e-9));
+  // Under MIRROR X a G3 turns clockwise: from (5, 5) about (5, 0) to (10, 0) counter-clockwise is three quarters
+  // through (0, 0) and (5, -5); mirrored, from (-5, 5) through (0, 0) and (-5, -5) to (-10, 0)
+  const auto mirrored = readProgram("G0 X5 Y5\nMIRROR X0\nG1 F100 X5 Y5\nG3 X10 Y0 I0 J-5\n", siemens());
+  ASSERT_EQ(mirrored.size(), 3u);
+  EXPECT_TRUE(mirrored[2].end.isApprox(Eigen::Vector3d(-10, 0, 0), 1e-9));
+  EXPECT_NEAR(mirrored[2].length(), 1.5 * M_PI * 5.0, 1e-9);
+  EXPECT_TRUE(mirrored[2].pointAt(mirrored[2].length() / 3).isZero(1e-9)) << mirrored[2].pointAt(mirrored[2].length() / 3).transpose();
+  EXPECT_TRUE(mirrored[2].pointAt(mirrored[2].length() * 2 / 3).isApprox(Eigen::Vector3d(-5, -5, 0), 1e-9));
+  EXPECT_EQ(errorOf("SCALE X2\nG0 X5 Y5\nG2 X10 Y0 I0 J-5 F100\n", siemens()).rfind("line 3: an arc under a SCALE that differs", 0), 0u);
+  EXPECT_EQ(errorOf("SCALE X0\n", siemens()).rfind("line 1: the frame would flatten the coordinates", 0), 0u);
+  EXPECT_EQ(errorOf("ROT RPL=10 Z5\n", siemens()).rfind("line 1: ROT: RPL= turns in the plane", 0), 0u);
+}
