@@ -13,12 +13,6 @@
 namespace hsm::kinematics::detail {
 
 namespace {
-// Siemens frame instructions: the coordinates on their line shift the frame, they do not move the tool.
-bool isFrameKeyword(std::string_view name) {
-  return name == "TRANS" || name == "ATRANS" || name == "ROT" || name == "AROT" || name == "SCALE" ||
-         name == "ASCALE" || name == "MIRROR" || name == "AMIRROR";
-}
-
 // The 840D instructions the reader knows: read (keyword()), accepted without effect on the motion model, or named
 // as motion it cannot see (transformations and frames it does not model).
 constexpr std::string_view kSiemensKeywords[] = {
@@ -90,126 +84,6 @@ Interpreter::Interpreter(const ReaderOptions& options)
   workOffsets_.fill(options.conventions.workOffset);
 }
 
-Eigen::Vector3d Interpreter::frame() const {
-  const Eigen::Vector3d origin =
-      workOffsets_[static_cast<size_t>(workOffset_)] - options_.conventions.workOffset + shift_ + programmable_;
-  return rotated_ ? Eigen::Vector3d(inverseLinear_ * origin) : origin;
-}
-
-void Interpreter::setLinear(const Eigen::Matrix3d& linear) {
-  if (!linear.allFinite() || std::abs(linear.determinant()) < 1e-12)
-    throw ParseError(lineNumber_, "the frame would flatten the coordinates (a scale of 0): give every factor a size");
-  const Eigen::Vector3d here = rotated_ ? Eigen::Vector3d(linear_ * position_) : position_;
-  linear_ = linear;
-  rotated_ = !linear.isIdentity(0.0);
-  inverseLinear_ = linear.inverse();
-  position_ = rotated_ ? Eigen::Vector3d(inverseLinear_ * here) : here;  // the tool stays where it is
-}
-
-void Interpreter::toPositions(Block& block) const {
-  if (!rotated_) return;
-  block.start = linear_ * block.start;
-  block.end = linear_ * block.end;
-  if (block.orientationEnd.squaredNorm() > 0.0) block.orientationEnd = (linear_ * block.orientationEnd).normalized();
-  if (block.isArc()) {
-    // A circle stays one when the frame scales its plane alike in every direction (and keeps it square)
-    const Eigen::Vector3d u = block.normal.unitOrthogonal(), v = block.normal.cross(u);
-    const Eigen::Vector3d lu = linear_ * u, lv = linear_ * v;
-    const double su = lu.norm(), sv = lv.norm();
-    if (std::abs(su - sv) > 1e-9 * su || std::abs(lu.dot(lv)) > 1e-9 * su * sv)
-      throw ParseError(block.line, "an arc under a SCALE that differs between the axes of its plane is an ellipse, "
-                                   "which the 840D does not cut either: scale both axes alike");
-    block.center = linear_ * block.center;
-    block.normal = lu.cross(lv).normalized();  // a mirror turns the arc the other way about the normal
-    block.radius *= su;
-  }
-}
-
-Eigen::Vector3d Interpreter::machineTarget(const LineWords& w) const {
-  Eigen::Vector3d machine = rotated_ ? Eigen::Vector3d(linear_ * position_) : position_;
-  for (int a = 0; a < 3; ++a)
-    if (w.hasAxis[a]) machine[a] = w.axis[a] * unit_ - options_.conventions.workOffset[a];
-  return rotated_ ? Eigen::Vector3d(inverseLinear_ * machine) : machine;
-}
-
-namespace {
-Eigen::Matrix3d rotation(const double (&degrees)[3]) {  // RPY: about Z, then the new Y, then the newest X
-  return (Eigen::AngleAxisd(degrees[2] * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(degrees[1] * M_PI / 180.0, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(degrees[0] * M_PI / 180.0, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-}  // namespace
-
-// SINUMERIK 840D sl Programming Manual Fundamentals, "Coordinate transformations (frames)": TRANS, ROT, SCALE
-// and MIRROR replace the whole programmable frame (alone, they clear it), ATRANS, AROT, ASCALE and AMIRROR add to
-// it in the coordinates it has made. ROT X Y Z turns about Z, then the new Y, then the newest X (the RPY order
-// of FRAME_ANGLE_INPUT_MODE 1); ROT RPL= in the working plane. SCALE multiplies (a non-uniform one is refused
-// for arcs), MIRROR X0 reverses X. A program point p is then at origin + L p, L the frame's turn, scale and
-// mirror.
-void Interpreter::programmableFrame(std::string_view name, const Line& line) {
-  double values[3] = {0, 0, 0};
-  bool has[3] = {false, false, false};
-  double plane = 0.0;
-  bool hasPlane = false;
-  for (int i = 0; i < line.wordCount; ++i) {
-    const Word& w = line.words[static_cast<size_t>(i)];
-    if (w.letter >= 'X' && w.letter <= 'Z') {
-      values[w.letter - 'X'] = w.value;
-      has[w.letter - 'X'] = true;
-    } else if (w.letter != 'N') {
-      throw ParseError(lineNumber_, std::string(name) + " with '" + std::string(w.text) + "': a frame instruction "
-                                    "stands in a block of its own with its axes (X Y Z, RPL=): move the rest to its own block");
-    }
-  }
-  for (const Keyword& k : line.keywords) {
-    if (k.name == "RPL" && k.hasValue) {
-      plane = k.value;
-      hasPlane = true;
-    } else if (!isFrameKeyword(k.name)) {
-      throw ParseError(lineNumber_, std::string(name) + " with '" + std::string(k.name) + "': a frame instruction "
-                                    "stands in a block of its own with its axes (X Y Z, RPL=): move the rest to its own block");
-    }
-  }
-  const bool additive = name[0] == 'A';
-  const std::string_view kind = additive ? name.substr(1) : name;
-  if (!additive && !has[0] && !has[1] && !has[2] && !hasPlane) {  // TRANS, ROT, SCALE, MIRROR alone
-    programmable_.setZero();
-    setLinear(Eigen::Matrix3d::Identity());
-    return;
-  }
-  Eigen::Matrix3d change = Eigen::Matrix3d::Identity();
-  if (kind == "TRANS") {
-    const Eigen::Vector3d shift = Eigen::Vector3d(values[0], values[1], values[2]) * unit_;
-    if (!additive) {
-      programmable_ = shift;
-      setLinear(Eigen::Matrix3d::Identity());
-    } else {
-      programmable_ += linear_ * shift;
-    }
-    return;
-  }
-  if (kind == "ROT") {
-    if (hasPlane && (has[0] || has[1] || has[2]))
-      throw ParseError(lineNumber_, std::string(name) + ": RPL= turns in the plane, X Y Z in space: give one or the other");
-    if (hasPlane) {
-      const int normal = plane_ == 17 ? 2 : plane_ == 18 ? 1 : 0;
-      values[normal] = plane;
-    }
-    change = rotation(values);
-  } else if (kind == "SCALE") {
-    for (int a = 0; a < 3; ++a) change(a, a) = has[a] ? values[a] : 1.0;
-  } else if (kind == "MIRROR") {
-    for (int a = 0; a < 3; ++a) change(a, a) = has[a] ? -1.0 : 1.0;
-  }
-  if (!additive) {
-    programmable_.setZero();
-    setLinear(change);
-  } else {
-    setLinear(linear_ * change);
-  }
-}
-
 Eigen::Vector3d Interpreter::fromProgram(int axis, double value) const {
   Eigen::Vector3d p = position_;
   p[axis] = value * unit_ + frame()[axis];
@@ -254,6 +128,12 @@ bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
   LineWords words;
   if (!collect(line, words)) return false;
   applyModes(words);
+  if (swivelMovePending_) {  // CYCLE800's turn of the rotary axes, as made (machine axes)
+    swivelMovePending_ = false;
+    block = swivelMove_;
+    ++stats_.motionBlocks;
+    return true;
+  }
   if (!makeBlock(words, block)) return false;
   toPositions(block);
   return true;
@@ -261,7 +141,7 @@ bool Interpreter::interpret(const Line& line, long lineNumber, Block& block) {
 
 bool Interpreter::collect(const Line& line, LineWords& words) {
   for (const Keyword& k : line.keywords) {
-    if (isFrameKeyword(k.name)) {
+    if (isSiemensFrameKeyword(k.name)) {
       if (options_.conventions.dialect == Dialect::Siemens840D) programmableFrame(k.name, line);
       else unknownMotion(k.name, "a frame that turns, scales or mirrors the coordinates, in the 840D's language");
       return false;  // the line's coordinates were the frame's, not a move
@@ -573,9 +453,8 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   return true;
 }
 
-namespace {
 // The comma-separated arguments of an 840D cycle call; an empty one is NaN (not given).
-std::vector<double> cycleArguments(const std::string& text, const std::string& name, long line) {
+std::vector<double> siemensCycleArguments(const std::string& text, const std::string& name, long line) {
   std::vector<double> values;
   size_t from = 0;
   for (;;) {
@@ -597,7 +476,6 @@ std::vector<double> cycleArguments(const std::string& text, const std::string& n
     from = comma + 1;
   }
 }
-}  // namespace
 
 // Siemens SINUMERIK 840D sl Cycles Programming Manual, "Drilling cycles": CYCLE81(RTP, RFP, SDIS, DP, DPR) and
 // the others with these first five: rapid to the reference plane RFP plus the safety distance SDIS, in to the
@@ -608,7 +486,7 @@ std::vector<double> cycleArguments(const std::string& text, const std::string& n
 // CYCLE89 feed out to RFP + SDIS; CYCLE86, 87, 88 come out at rapid (87's and 88's operator stop not timed).
 void Interpreter::siemensDrilling(int number, const std::string& arguments) {
   const std::string name = "CYCLE" + std::to_string(number);
-  std::vector<double> a = cycleArguments(arguments, name, lineNumber_);
+  std::vector<double> a = siemensCycleArguments(arguments, name, lineNumber_);
   a.resize(16, std::numeric_limits<double>::quiet_NaN());
   auto given = [&](int i) { return std::isfinite(a[static_cast<size_t>(i)]); };
   if (!given(0) || !given(1) || (!given(3) && !given(4)))
@@ -773,6 +651,7 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
       // The 840D's settable zero offsets G505…G599 (and G500 off), taken as the program's work offset
       if (options_.conventions.dialect == Dialect::Siemens840D && code >= 5000 && code <= 5990 && code % 10 == 0) break;
       unknownMotion(w.text, "a G code the simulator does not know");
+      break;
     case 680: case 682: case 531: case 681: unknownMotion(w.text, "a rotated or tilted working plane (read: G43.4, G234)"); break;
   }
 }
@@ -807,9 +686,7 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     words.siemensCycle = 80 + (name[6] - '0');
     words.siemensArguments = k.arguments;
   } else if (name == "CYCLE800" && k.call) {
-    // CYCLE800() alone deselects a swivel; with its data it swivels the tool axis (3+2), not read yet
-    if (k.arguments.find_first_not_of(" \t,") != std::string_view::npos)
-      unknownMotion(name, "a swivel of the tool axis and its rotated frame");
+    cycle800(std::string(k.arguments));
   } else if (name == "MCALL") {
     words.mcall = true;
   } else if (name == "SUPA") {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <deque>
+#include <vector>
 #include <string>
 #include <limits>
 #include <string_view>
@@ -17,6 +18,11 @@ namespace hsm::kinematics::detail {
 // Whether `name` is an 840D instruction the reader takes (reads, accepts without effect, or names as motion it
 // cannot see): a name that is not, alone on its block, calls a subprogram (siemens_program.hpp).
 bool isSiemensKeyword(std::string_view name);
+// TRANS, ROT, SCALE, MIRROR and their additive forms: the coordinates on their line set the frame, they do not
+// move the tool.
+bool isSiemensFrameKeyword(std::string_view name);
+// The comma-separated arguments of an 840D cycle call; an empty one (or a string) is NaN (not given).
+std::vector<double> siemensCycleArguments(const std::string& text, const std::string& name, long line);
 // The instruction `name` is most likely a misspelling of (one or two letters off), or empty.
 std::string nearestSiemensKeyword(std::string_view name);
 
@@ -89,8 +95,11 @@ private:
   bool homeBlocks(const LineWords& words, Block& block);
   // The 840D's programmable frame: TRANS ATRANS ROT AROT SCALE ASCALE MIRROR AMIRROR.
   void programmableFrame(std::string_view name, const Line& line);
-  // Sets the frame's turn, scale and mirror (L), the tool staying where it is.
-  void setLinear(const Eigen::Matrix3d& linear);
+  // CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR …): the swivel of the tool
+  // axis (its turn of the rotary axes made the next block) and the swivelled frame; CYCLE800() takes it back.
+  void cycle800(const std::string& arguments);
+  // The frame's turn, scale and mirror (L = swivel × programmable) made anew, the tool staying where it is.
+  void applyFrame();
   // A block made in the frame's coordinates, in the positions' (L applied); nothing without a turn.
   void toPositions(Block& block) const;
   // The target of a G53 / SUPA line: its axes in machine coordinates, the others where the tool is.
@@ -178,12 +187,17 @@ private:
   std::array<Eigen::Vector3d, 10> workOffsets_{};
   int workOffset_ = 1;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();  // G92
-  // The 840D's programmable frame: a program point p is at (work offset + programmable_) + linear_ p. While
-  // linear_ turns, scales or mirrors (rotated_), position_ and the blocks being made are in its coordinates,
-  // inverseLinear_ times the positions', and toPositions() turns the blocks out.
-  Eigen::Vector3d programmable_ = Eigen::Vector3d::Zero();
+  // The 840D's frames: a program point p is at work offset + swivelShift_ + swivelTurn_ (programmable_ +
+  // programmableLinear_ p), the swivel's (CYCLE800) and the programmable frame's. While their product linear_
+  // turns, scales or mirrors (rotated_), position_ and the blocks being made are in its coordinates,
+  // inverseLinear_ times the positions', and toPositions() turns the blocks out. Swivelled, the blocks give the
+  // tool tip in the workpiece (the 840D's TCP for the swivelled plane) and the tool axis swivelAxis_.
+  Eigen::Vector3d programmable_ = Eigen::Vector3d::Zero(), swivelShift_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d programmableLinear_ = Eigen::Matrix3d::Identity(), swivelTurn_ = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d linear_ = Eigen::Matrix3d::Identity(), inverseLinear_ = Eigen::Matrix3d::Identity();
-  bool rotated_ = false;
+  Eigen::Vector3d swivelAxis_ = Eigen::Vector3d::UnitZ();
+  bool rotated_ = false, swivelled_ = false, swivelMovePending_ = false;
+  Block swivelMove_;  // CYCLE800's turn of the rotary axes, the machine's linear axes standing
   Eigen::Vector3d frame() const;  // the active frame's origin, in the coordinates position_ is in
   std::deque<Block> queued_;
 };

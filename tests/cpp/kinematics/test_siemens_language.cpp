@@ -262,3 +262,40 @@ TEST(SiemensFrames, TurnsScalesAndMirrors) {
   EXPECT_EQ(errorOf("SCALE X0\n", siemens()).rfind("line 1: the frame would flatten the coordinates", 0), 0u);
   EXPECT_EQ(errorOf("ROT RPL=10 Z5\n", siemens()).rfind("line 1: ROT: RPL= turns in the plane", 0), 0u);
 }
+
+// Cycles Programming Manual, "Swiveling - CYCLE800": axis by axis (_MODE 57: X, then Y, then Z), the rotary axes
+// turn the tool along the new plane's Z first (a block of its own, the linear axes standing), then the program's
+// points are the tool tip in the swivelled plane; X0 Y0 Z0 shift before the turn, X1 Y1 Z1 after; _ST 1 adds to
+// the plane in force; CYCLE800() takes the plane back.
+TEST(SiemensFrames, Cycle800SwivelsTheToolAndThePlane) {
+  const auto blocks = readProgram(
+      "G17 G90 G0 X10 Y0 Z50\n"
+      "CYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,1)\n"
+      "G0 X0 Y0 Z20\n"
+      "G1 F1000 X10\n"
+      "CYCLE800()\n"
+      "G0 X0\n"
+      "CYCLE800(0,\"TC1\",0,57,100,0,0,0,0,90,5,0,0,1)\n"  // about Z alone: a frame, no swivel
+      "G0 X0 Y0 Z10\n"
+      "CYCLE800(0,\"TC1\",1,57,0,0,0,-30,0,0,0,0,0,1)\n"   // added: then about X by -30
+      "G0 X0 Y0 Z10\n",
+      siemens());
+  ASSERT_EQ(blocks.size(), 8u);
+  const double c = std::cos(M_PI / 6), s = 0.5;
+  const Block& swivel = blocks[1];
+  EXPECT_TRUE(swivel.start.isApprox(Eigen::Vector3d(10, 0, 50)) && swivel.end.isApprox(swivel.start));
+  EXPECT_TRUE(swivel.orientationVectors && !swivel.toolTip && swivel.motion == Motion::Rapid);
+  EXPECT_TRUE(swivel.orientationEnd.isApprox(Eigen::Vector3d(s, 0, c), 1e-12));
+  EXPECT_TRUE(blocks[2].end.isApprox(Eigen::Vector3d(20 * s, 0, 20 * c), 1e-12));
+  EXPECT_TRUE(blocks[3].end.isApprox(Eigen::Vector3d(10 * c + 20 * s, 0, -10 * s + 20 * c), 1e-12));
+  for (int i : {2, 3}) EXPECT_TRUE(blocks[i].toolTip && blocks[i].orientationEnd.isApprox(Eigen::Vector3d(s, 0, c)));
+  EXPECT_TRUE(blocks[4].end.isApprox(Eigen::Vector3d(0, 0, -10 * s + 20 * c), 1e-12));
+  EXPECT_FALSE(blocks[4].toolTip || blocks[4].orientationVectors);
+  EXPECT_TRUE(blocks[5].end.isApprox(Eigen::Vector3d(100, 5, 10), 1e-12)) << blocks[5].end.transpose();
+  EXPECT_FALSE(blocks[5].orientationVectors);
+  // Rz(90), then Rx(-30) about the turned X (the world's Y): the tool axis tips towards the world's -X
+  EXPECT_TRUE(blocks[6].orientationEnd.isApprox(Eigen::Vector3d(-s, 0, c), 1e-12)) << blocks[6].orientationEnd.transpose();
+  EXPECT_TRUE(blocks[7].end.isApprox(Eigen::Vector3d(100 - 10 * s, 5, 10 * c), 1e-12)) << blocks[7].end.transpose();
+  EXPECT_EQ(errorOf("CYCLE800(1,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,1)\n", siemens())
+                .rfind("line 1: 'CYCLE800' (a swivel in solid angles", 0), 0u);
+}
