@@ -16,7 +16,7 @@ namespace {
 // The 840D instructions the reader knows: read (keyword()), accepted without effect on the motion model, or named
 // as motion it cannot see (transformations and frames it does not model).
 constexpr std::string_view kSiemensKeywords[] = {
-    "SOFT", "BRISK", "CR", "ADIS", "ADISPOS", "T", "MSG", "CYCLE832", "CYCLE800", "CYCLE81", "CYCLE82", "CYCLE83",
+    "SOFT", "BRISK", "CR", "CIP", "I1", "J1", "K1", "ADIS", "ADISPOS", "T", "MSG", "CYCLE832", "CYCLE800", "CYCLE81", "CYCLE82", "CYCLE83",
     "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "MCALL", "SUPA", "FNORM", "SETMS", "SBLOF",
     "SBLON", "A3", "B3", "C3", "TRAORI", "TRAFOOF", "ORIMKS", "ORIAXES", "ORIWKS", "ORIVECT", "COMPCAD", "COMPCURV",
     "COMPSURF", "COMPOF", "COMPON", "FFWON", "FFWOF", "UPATH", "SPATH", "DYNNORM", "DYNFINISH", "DYNSEMIFIN",
@@ -30,16 +30,18 @@ constexpr std::string_view kSiemensKeywords[] = {
     "CP", "ORISON", "ORISOF", "TOFFON", "TOFFOF", "D", "M_",
     // named as motion the simulator cannot see
     "TRANSMIT", "TRACYL", "TRAANG", "PAROT", "PAROTOF", "TOROT", "TOROTOF", "TOFRAME", "TOFRAMEX", "TOFRAMEY",
-    "TOFRAMEZ", "CIP", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"};
+    "TOFRAMEZ", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"};
 
 // What an instruction (or standard cycle) that moves the machine in ways the simulator does not model is; null
 // for the others.
 const char* movesUnseen(std::string_view name) {
+  // Measuring cycles (CYCLE9xx) probe where the tool is: a few seconds the summary names, no path to time
+  if (name.size() == 8 && name.substr(0, 6) == "CYCLE9") return nullptr;
   for (std::string_view prefix : {"CYCLE", "POCKET", "SLOT", "LONGHOLE", "HOLES"})
     if (name.substr(0, prefix.size()) == prefix)
       return "an 840D standard cycle the simulator does not model (measuring, milling, patterns)";
   for (std::string_view word : {"TRANSMIT", "TRACYL", "TRAANG", "PAROT", "TOROT", "TOFRAME", "TOFRAMEX", "TOFRAMEY",
-                                "TOFRAMEZ", "CIP", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"})
+                                "TOFRAMEZ", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"})
     if (name == word) return "a transformation, frame, spline or arc form the simulator does not model";
   return nullptr;
 }
@@ -323,7 +325,8 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   }
   const bool turned = (rotaryTarget - rotary_).squaredNorm() > 0.0 || (orientationTarget - orientation_).squaredNorm() > 0.0;
   if (block.isArc()) {
-    arc(block, w);
+    if (motion_ == 4) arcThrough(block, w);
+    else arc(block, w);
   } else if ((target - position_).squaredNorm() == 0.0 && !turned) {
     return false;  // a move to where the tool already is
   }
@@ -687,6 +690,11 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     words.siemensArguments = k.arguments;
   } else if (name == "CYCLE800" && k.call) {
     cycle800(std::string(k.arguments));
+  } else if (name == "CIP") {
+    words.newMotion = 4;
+  } else if ((name == "I1" || name == "J1" || name == "K1") && k.hasValue) {
+    words.hasThrough[name[0] - 'I'] = true;
+    words.through[name[0] - 'I'] = k.value;
   } else if (name == "MCALL") {
     words.mcall = true;
   } else if (name == "SUPA") {
@@ -823,6 +831,32 @@ void Interpreter::arc(Block& block, const LineWords& words) {
   block.center = centre;
   block.radius = r0;
   block.sweep = angle;
+}
+
+// SINUMERIK 840D sl Programming Manual Fundamentals, "Circular interpolation with intermediate and end points
+// (CIP)": the circle through the start, the intermediate point (I1= J1= K1=: in G90 where it is, in G91 from the
+// start; a coordinate not given is the start's) and the end, run from the start through the intermediate point.
+void Interpreter::arcThrough(Block& block, const LineWords& w) const {
+  if (!(w.hasThrough[0] || w.hasThrough[1] || w.hasThrough[2]))
+    throw ParseError(lineNumber_, "CIP needs its intermediate point: I1= J1= K1= (the point the arc passes through)");
+  Eigen::Vector3d middle = block.start;
+  for (int a = 0; a < 3; ++a)
+    if (w.hasThrough[a]) middle[a] = absolute_ ? w.through[a] * unit_ + frame()[a] : block.start[a] + w.through[a] * unit_;
+  const Eigen::Vector3d u = middle - block.start, v = block.end - block.start;
+  const Eigen::Vector3d n = u.cross(v);
+  if (n.norm() <= 1e-9 * std::max(1e-9, u.norm() * v.norm()))
+    throw ParseError(lineNumber_, "CIP: the start, the intermediate point and the end are on one line (or two of "
+                                  "them are one point): no circle passes through them");
+  const Eigen::Vector3d centre = block.start + (u.squaredNorm() * v - v.squaredNorm() * u).cross(n) / (2.0 * n.squaredNorm());
+  const Eigen::Vector3d normal = n.normalized();
+  const Eigen::Vector3d rs = block.start - centre, re = block.end - centre;
+  double sweep = std::atan2(normal.dot(rs.cross(re)), rs.dot(re));
+  if (sweep <= 0.0) sweep += 2.0 * M_PI;  // from the start through the intermediate point: counter-clockwise about n
+  block.motion = Motion::ArcCounterClockwise;
+  block.center = centre;
+  block.normal = normal;
+  block.radius = rs.norm();
+  block.sweep = sweep;
 }
 
 }  // namespace hsm::kinematics::detail

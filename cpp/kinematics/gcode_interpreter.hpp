@@ -28,7 +28,7 @@ std::string nearestSiemensKeyword(std::string_view name);
 
 // What one line says, before it is applied to the modal state.
 struct LineWords {
-  int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3
+  int newMotion = -1;  // 0, 1, 2, 3 when the line has G0-G3; 4 the 840D's CIP (an arc through a point)
   int cycle = 0;       // 73, 74, 76, 81…89 when the line has that canned cycle's G word
   int home = 0;        // 28 or 30: back to the reference point through the line's point
   bool machineCoordinates = false;  // G53: the line's coordinates are the machine's
@@ -48,6 +48,8 @@ struct LineWords {
   bool pHasPoint = false;  // P written with a decimal point (a Fanuc-family dwell in s, else in ms)
   bool hasRotary[3] = {false, false, false}, hasVector[3] = {false, false, false};
   double rotary[3] = {0, 0, 0}, vector[3] = {0, 0, 0};  // A B C (deg), A3 B3 C3
+  bool hasThrough[3] = {false, false, false};  // CIP's intermediate point I1= J1= K1=
+  double through[3] = {0, 0, 0};
 
   bool anyAxis() const { return hasAxis[0] || hasAxis[1] || hasAxis[2]; }
   bool anyRotary() const { return hasRotary[0] || hasRotary[1] || hasRotary[2]; }
@@ -118,6 +120,9 @@ private:
   // within it, SOFT and the compressor; no argument (or 0) deselects it (G64, BRISK).
   void cycle832(std::string_view arguments);
   void arc(Block& block, const LineWords& words);
+  // CIP: the circle through the start, the intermediate point I1= J1= K1= and the end, in whatever plane they
+  // span.
+  void arcThrough(Block& block, const LineWords& words) const;
   // A canned cycle's moves at the line's X Y (LinuxCNC's semantics, G17, G90): queued, the first in `block`.
   // The modes a canned cycle's moves borrow (exact stop, the cycle, its feed, the 840D's retract plane), given
   // back when the cycle's moves are queued or the cycle is refused.

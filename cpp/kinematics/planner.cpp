@@ -200,13 +200,16 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
     }
     jointLimits(s, *joint, velocity, rapidVelocity, curvatureLimit);
   } else if (tipTangents(); block.isArc()) {
-    // The tangent turns in the plane: the weakest in-plane axis bounds the whole arc.
-    const Eigen::Vector3d inPlane = Eigen::Vector3d::Ones() - block.normal.cwiseAbs();
+    // The tangent turns in the plane: it points, somewhere on the arc, as far along each axis as the plane lets
+    // it (sqrt(1 - n_i²) of the speed: all of it for the two axes of G17/G18/G19, part of it in a turned
+    // frame's plane), so the weakest axis for its share bounds the whole arc.
     const double along = std::abs(block.normal.dot(block.end - block.start)) / std::max(s.length, 1e-12);
     auto weakest = [&](const Eigen::Vector3d& limits) {
       double w = kInfinity;
-      for (int i = 0; i < 3; ++i)
-        if (inPlane[i] > 0.5) w = std::min(w, limits[i]);
+      for (int i = 0; i < 3; ++i) {
+        const double share = std::sqrt(std::max(0.0, 1.0 - block.normal[i] * block.normal[i]));
+        if (share > 1e-9) w = std::min(w, limits[i] / share);
+      }
       return along > 1e-12 ? std::min(w, projectedLimit(limits, block.normal.cwiseAbs() * along)) : w;
     };
     s.dynamics.acceleration = weakest(m.maxAcceleration);

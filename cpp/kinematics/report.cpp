@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace hsm::kinematics {
 
@@ -147,7 +150,13 @@ std::string summaryText(const SimulationSummary& s) {
       }
     text << "\n";
   }
-  if (s.reader.unknownWords > 0) text << s.reader.unknownWords << " unknown words skipped\n";
+  if (s.reader.unknownWords > 0) {  // named, the most frequent first: what the time leaves out
+    std::vector<std::pair<std::string, long>> words(s.reader.unknownWordCounts.begin(), s.reader.unknownWordCounts.end());
+    std::stable_sort(words.begin(), words.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    text << s.reader.unknownWords << " unknown words skipped:";
+    for (size_t i = 0; i < words.size() && i < 8; ++i) text << (i ? ", " : " ") << words[i].first << " x" << words[i].second;
+    text << (words.size() > 8 ? ", ...\n" : "\n");
+  }
   return text.str();
 }
 

@@ -299,3 +299,32 @@ TEST(SiemensFrames, Cycle800SwivelsTheToolAndThePlane) {
   EXPECT_EQ(errorOf("CYCLE800(1,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,1)\n", siemens())
                 .rfind("line 1: 'CYCLE800' (a swivel in solid angles", 0), 0u);
 }
+
+// Fundamentals, "Circular interpolation with intermediate and end points (CIP)": the arc through three points in
+// whatever plane they span; in a turned frame the arc turns with it. A measuring cycle (CYCLE9xx) moves nothing
+// the simulator can time: counted and named, the rest read.
+TEST(SiemensLanguage, ArcsThroughAPointAndMeasuringCycles) {
+  const auto blocks = readProgram("G0 X10 Y0 Z0\nG1 F100 X10\nCIP X-10 Y0 Z0 I1=0 J1=7.0710678118654755 K1=7.0710678118654755\n"
+                                  "CIP X10 Y0 I1=0 J1=-10 K1=0\nCYCLE977(101, 0, , 1, 20)\nG1 X20\n",
+                                  siemens());
+  ASSERT_EQ(blocks.size(), 4u);
+  const Block& tilted = blocks[1];  // a half circle of radius 10 about the origin, in the plane y = z
+  EXPECT_TRUE(tilted.isArc());
+  EXPECT_TRUE(tilted.center.isZero(1e-9)) << tilted.center.transpose();
+  EXPECT_NEAR(tilted.radius, 10.0, 1e-9);
+  EXPECT_NEAR(tilted.length(), M_PI * 10.0, 1e-9);
+  EXPECT_TRUE(tilted.pointAt(tilted.length() / 2).isApprox(Eigen::Vector3d(0, 7.0710678118654755, 7.0710678118654755), 1e-9));
+  EXPECT_NEAR(std::abs(tilted.normal.dot(Eigen::Vector3d(0, 1, -1).normalized())), 1.0, 1e-12);
+  const Block& back = blocks[2];  // CIP stays in force: back under the X axis through (0, -10, 0)
+  EXPECT_TRUE(back.pointAt(back.length() / 2).isApprox(Eigen::Vector3d(0, -10, 0), 1e-9));
+  EXPECT_EQ(errorOf("G0 X10\nCIP X-10 I1=0 F100\n", siemens()).rfind("line 2: CIP: the start, the intermediate point and the end are on one line", 0), 0u);
+  EXPECT_EQ(errorOf("G0 X10\nCIP X-10 Y3 F100\n", siemens()).rfind("line 2: CIP needs its intermediate point", 0), 0u);
+  std::istringstream text("G1 F100 X1\nCYCLE977(101, 0, , 1, 20)\nCYCLE978(0)\nG1 X2\n");
+  GcodeReader reader(text, siemens());
+  Block block;
+  int count = 0;
+  while (reader.next(block)) ++count;
+  EXPECT_EQ(count, 2);
+  EXPECT_EQ(reader.stats().unknownWordCounts.at("CYCLE977"), 1);
+  EXPECT_EQ(errorOf("G1 F100 X1\nPOCKET3(10, 0, 1, -5)\n", siemens()).rfind("line 2: 'POCKET3' (an 840D standard cycle", 0), 0u);
+}
