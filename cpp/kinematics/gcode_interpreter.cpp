@@ -420,7 +420,7 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   const bool pecks = (cycle_ == 83 || cycle_ == 73) && !fanucQ0;
   if (pecks && !(cycleQ_ > 0.0))
     throw ParseError(lineNumber_, name + " needs Q > 0: the depth of each peck (mm)");
-  if (pecks && (cycleR_ - cycleZ_) / cycleQ_ > 1e5)
+  if (pecks && (cycleR_ - cycleZ_) / (cycleDegression_ > 0.0 ? std::min(cycleQ_, cycleDegression_) : cycleQ_) > 1e5)
     throw ParseError(lineNumber_, name + ": " + number(cycleR_ - cycleZ_) + " mm in pecks of Q" + number(cycleQ_) +
                                       " is over 100,000 pecks: give a larger Q");
   if (feed_ <= 0.0)
@@ -437,8 +437,10 @@ bool Interpreter::cycleBlocks(const LineWords& w, bool first) {
   go(x, y, position_.z(), true);
   go(x, y, cycleR_, true);
   if (pecks) {
+    double peck = cycleQ_;
     for (double depth = cycleR_; depth > cycleZ_;) {
-      const double next = std::max(cycleZ_, depth - cycleQ_);
+      const double next = std::max(cycleZ_, depth - peck);
+      if (cycleDegression_ > 0.0) peck = std::max(peck - cycleDegression_, cycleDegression_);  // the 840D's DAM
       if (cycle_ == 83 && depth < cycleR_) go(x, y, depth + kPeckClearance, true);
       go(x, y, next, false);
       depth = next;
@@ -471,8 +473,8 @@ std::vector<double> siemensCycleArguments(const std::string& text, const std::st
       const auto parsed = fast_float::from_chars(begin, item.data() + item.size(), value, fast_float::chars_format::fixed);
       if (parsed.ec != std::errc() || parsed.ptr != item.data() + item.size() || !std::isfinite(value))
         throw ParseError(line, name + " argument " + std::to_string(values.size() + 1) + " '" + std::string(item) +
-                                   "' is not a number: the 840D's R parameters and expressions are not read yet; "
-                                   "write the value");
+                                   "' is neither a number nor an R parameter or variable the program has set: give its value or "
+                                   "set it before the call");
     }
     values.push_back(value);
     if (comma >= text.size()) return values;
@@ -483,8 +485,8 @@ std::vector<double> siemensCycleArguments(const std::string& text, const std::st
 // Siemens SINUMERIK 840D sl Cycles Programming Manual, "Drilling cycles": CYCLE81(RTP, RFP, SDIS, DP, DPR) and
 // the others with these first five: rapid to the reference plane RFP plus the safety distance SDIS, in to the
 // final depth DP (or DPR below RFP), back to the retraction plane RTP. CYCLE82 dwells DTB s; CYCLE83 pecks
-// (FDEP or FDPR the first depth, each peck that deep: the degression DAM is not applied; VARI 1 back to
-// RFP + SDIS after each, 0 breaking the chip); CYCLE84 taps at SST times the pitch PIT (at F without PIT) and
+// (FDEP or FDPR the first depth, each next one DAM less, down to DAM; VARI 1 back to RFP + SDIS after each, 0
+// breaking the chip); CYCLE84 taps at SST times the pitch PIT (at F without PIT) and
 // back; CYCLE85 and
 // CYCLE89 feed out to RFP + SDIS; CYCLE86, 87, 88 come out at rapid (87's and 88's operator stop not timed).
 void Interpreter::siemensDrilling(int number, const std::string& arguments) {
@@ -523,7 +525,9 @@ void Interpreter::siemensDrilling(int number, const std::string& arguments) {
   }
   cycle_ = as;
   pathMode_ = PathMode::ExactStop;
+  cycleDegression_ = number == 83 && given(7) ? std::abs(a[7]) * unit_ : 0.0;
   cycleBlocks(LineWords{}, false);
+  cycleDegression_ = 0.0;
 }
 
 bool Interpreter::homeBlocks(const LineWords& w, Block& block) {

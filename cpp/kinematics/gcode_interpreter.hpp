@@ -184,6 +184,7 @@ private:
   double cycleR_ = std::numeric_limits<double>::quiet_NaN(), cycleZ_ = std::numeric_limits<double>::quiet_NaN();
   double cycleQ_ = 0.0, cycleP_ = 0.0, cycleStartZ_ = 0.0;
   double cycleClear_ = std::numeric_limits<double>::quiet_NaN();  // the 840D's RTP: where every hole retracts to
+  double cycleDegression_ = 0.0;    // the 840D's CYCLE83 DAM: each peck this much less deep than the last (mm)
   int mcallCycle_ = 0;              // the 840D's modal cycle (MCALL CYCLE8x), 0: none
   std::string mcallArguments_;
   // Work offsets (G54…G59.3: entries 1…9, in machine coordinates), the one in use, and G92's shift. Positions

@@ -656,6 +656,46 @@ void SiemensProgram::leave() {
   frames_.pop_back();
 }
 
+std::string_view SiemensProgram::computedCycleArguments(std::string_view statement, long n) {
+  const size_t at = statement.find("CYCLE");
+  if (at == std::string_view::npos) return statement;
+  size_t open = at + 5;
+  while (open < statement.size() && isDigit(statement[open])) ++open;
+  if (open == at + 5 || open >= statement.size() || statement[open] != '(') return statement;
+  const char* p = statement.data() + open;
+  const char* end = statement.data() + statement.size();
+  const std::string_view list = parenthesised(p, end, n);
+  const std::vector<std::string_view> parts = commaParts(list);
+  const bool named = std::any_of(parts.begin(), parts.end(), [](std::string_view part) {
+    part = trimmed(part);
+    return !part.empty() && part.front() != '"' && std::any_of(part.begin(), part.end(), [](char c) { return isAsciiLetter(c); });
+  });
+  if (!named) return statement;
+  // R parameters and variables in a cycle's arguments (CYCLE81(R1, 0, R2+1, …)): their values, as the control
+  // passes them; a name that is neither stays, for the cycle to name
+  cycleCall_.assign(statement.substr(0, open + 1));
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const std::string_view part = trimmed(parts[i]);
+    if (i > 0) cycleCall_ += ',';
+    if (part.empty() || part.front() == '"' || std::none_of(part.begin(), part.end(), [](char c) { return isAsciiLetter(c); })) {
+      cycleCall_.append(part);
+      continue;
+    }
+    try {
+      const char* a = part.data();
+      const char* e = a + part.size();
+      const double value = variables_.evaluate(a, e, n);
+      if (!endOfStatement(a, e)) throw ParseError(n, "not an expression");
+      cycleCall_ += number(value);
+    } catch (const ParseError&) {
+      cycleCall_.append(part);
+    }
+  }
+  cycleCall_ += ')';
+  cycleCall_.append(p, static_cast<size_t>(end - p));
+  return cycleCall_;
+}
+
 bool SiemensProgram::next(std::string_view& line, long& number) {
   for (;;) {
     if (ended_) return false;
@@ -690,7 +730,7 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
       const std::string_view statement = body(stored->text).statement;
       const std::string keyword = keywordOf(statement);
       if (!keyword.empty() && (flowStatement(keyword, statement, n) || callStatement(keyword, statement, n))) continue;
-      text = variables_.substitute(statement, n, rewritten_);
+      text = variables_.substitute(computedCycleArguments(statement, n), n, rewritten_);
     } catch (const ParseError& error) {
       if (files_[file].streaming) throw;
       // the message names the subprogram file the line is in

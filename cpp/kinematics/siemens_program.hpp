@@ -85,6 +85,8 @@ private:
   void call(const Subprogram& target, const std::string& name, std::string_view arguments, long passes, long n);
   void leave();
   bool endOfSection();
+  // The statement with the values of the variables in its cycle call's arguments (CYCLE81(R1, …)).
+  std::string_view computedCycleArguments(std::string_view statement, long n);
   [[noreturn]] void fail(long line, const std::string& message) const;
 
   SiemensOptions options_;
@@ -99,7 +101,7 @@ private:
   LineCursor cursor_;
   long flowLines_ = 0;
   bool ended_ = false, leaveAfter_ = false;  // leaveAfter_: the line given out returns (M17) after it runs
-  std::string rewritten_;
+  std::string rewritten_, cycleCall_;
 };
 
 }  // namespace hsm::kinematics::detail

@@ -330,8 +330,18 @@ TEST(SiemensCycles, DrillingCyclesAndTheirModalCall) {
   int pecks = 0;
   for (const Block& b : deep) pecks += b.motion == Motion::Linear;
   EXPECT_EQ(pecks, 3);  // 1 -> -3 -> -7 -> -10
-  EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(R1, 0, 1, -5)\n", siemens)
-                .rfind("line 3: CYCLE81 argument 1 'R1' is not a number: the 840D's R parameters", 0), 0u);
+  // CYCLE83 with the degression DAM 1: pecks of 4, 3, 2, then 1 (DAM the least)
+  const auto degressive = readProgram("G0 X0 Y0 Z20\nG1 F100\nCYCLE83(10, 0, 1, -10, , , 4, 1, 0, 0, 1, 1)\n", siemens);
+  std::vector<double> bottoms83;
+  for (const Block& b : degressive)
+    if (b.motion == Motion::Linear) bottoms83.push_back(b.end.z());
+  EXPECT_EQ(bottoms83, (std::vector<double>{-3, -6, -8, -9, -10}));
+  // R parameters and variables as arguments: their values (Job Planning 1.3: arguments are expressions)
+  const auto computed = readProgram("R1=10 R2=-5\nG0 X0 Y0 Z20\nG1 F100\nCYCLE81(R1, 0, 1, R2*2)\n", siemens);
+  EXPECT_DOUBLE_EQ(computed[computed.size() - 2].end.z(), -10.0);
+  EXPECT_DOUBLE_EQ(computed.back().end.z(), 10.0);
+  EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(_NOPE, 0, 1, -5)\n", siemens)
+                .rfind("line 3: CYCLE81 argument 1 '_NOPE' is neither a number nor an R parameter", 0), 0u);
   EXPECT_EQ(errorOf("G0 Z20\nG1 F100\nCYCLE81(10, 0)\n", siemens).rfind("line 3: CYCLE81 needs RTP, RFP and DP", 0), 0u);
   EXPECT_EQ(readProgram("G505 G0 X1\nG503 X2\nG500 X3\n", siemens).size(), 3u);  // settable zero offsets
 }
