@@ -10,7 +10,12 @@ namespace hsm::kinematics::detail {
 
 void KeptFile::keep(std::string_view raw, long number) {
   if (chunks.empty() || chunkUsed + raw.size() > kChunkBytes) {
-    chunks.push_back(std::make_unique<char[]>(std::max(kChunkBytes, raw.size())));
+    if (!spare.empty() && raw.size() <= kChunkBytes) {
+      chunks.push_back(std::move(spare.back()));
+      spare.pop_back();
+    } else {
+      chunks.push_back(std::make_unique<char[]>(std::max(kChunkBytes, raw.size())));
+    }
     chunkUsed = 0;
   }
   char* at = chunks.back().get() + chunkUsed;
@@ -23,6 +28,7 @@ void KeptFile::dropFront(size_t count) {
   lines.erase(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(count));
   dropped += count;
   while (!lines.empty() && chunksDropped < lines.front().chunk) {
+    if (spare.size() < 4) spare.push_back(std::move(chunks.front()));  // (a longer line's chunk is as good)
     chunks.pop_front();
     ++chunksDropped;
   }
@@ -44,6 +50,12 @@ KeptLine* KeptFiles::fetch(const LineCursor& at) {
     file.keep(raw, ++streamed_);
   }
   return &file.lines[at.index - file.dropped];
+}
+
+void KeptFiles::letGoBehind(const LineCursor& running) {
+  KeptFile& program = files_[0];
+  if (running.file != 0 || running.index < program.dropped + 2 * kKeptBehind) return;
+  program.dropFront(std::min(running.index - program.dropped - kKeptBehind, program.lines.size()));
 }
 
 long KeptFiles::load(const std::string& path, const std::string& name, long line) {

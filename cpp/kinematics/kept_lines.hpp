@@ -1,8 +1,9 @@
 // The lines of a program and of its subprogram files, kept so that jumps, loops and calls can go back to them
 // (internal, shared by the Fanuc/Haas and the 840D program flows). The program itself is read from its source as
 // its lines are needed; a subprogram file is read whole when it is first called. Text is kept in chunks of
-// kChunkBytes (no allocation per line); past kMaxKeptLines the program's oldest lines can be let go, whole chunks
-// with them (a program that long is drip-fed, and a control cannot jump back in it either).
+// kChunkBytes (no allocation per line, chunks let go are used again); the program keeps kKeptBehind lines behind
+// the one running when nothing (a loop, a call) holds them: a jump back further is refused, naming the limit (a
+// program that long is drip-fed, and a control cannot jump back in it either).
 #pragma once
 
 #include "kinematics/gcode_lexer.hpp"
@@ -11,10 +12,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hsm::kinematics::detail {
 
-inline constexpr size_t kMaxKeptLines = 2'000'000;
+inline constexpr size_t kMaxKeptLines = 2'000'000;  // lines of a subprogram file, lines searched for a label
+inline constexpr size_t kKeptBehind = 1 << 18;       // the program's lines kept behind the one running
 inline constexpr size_t kChunkBytes = 1 << 20;
 
 struct KeptLine {
@@ -29,6 +32,7 @@ struct KeptFile {
   size_t dropped = 0;      // lines let go from the front (the program only)
   bool streaming = false;  // the program itself: read from the source as needed
   std::deque<std::unique_ptr<char[]>> chunks;
+  std::vector<std::unique_ptr<char[]>> spare;  // chunks let go, to be used again
   size_t chunkUsed = 0, chunksDropped = 0;
 
   void keep(std::string_view raw, long number);
@@ -47,6 +51,8 @@ public:
   explicit KeptFiles(LineSource& source);
   // The line at `at`; null past the file's end or for a line let go.
   KeptLine* fetch(const LineCursor& at);
+  // Lets the program's lines go that are more than kKeptBehind behind `running` (a line of the program).
+  void letGoBehind(const LineCursor& running);
   // Reads the file at `path` whole as a new file named `name`; its index, or −1 when it cannot be opened.
   // Throws ParseError (at `line`) for a file of over kMaxKeptLines lines.
   long load(const std::string& path, const std::string& name, long line);

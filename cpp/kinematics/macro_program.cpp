@@ -70,7 +70,7 @@ double MacroProgram::condition(const char*& p, const char* end, long n) const {
 
 void MacroProgram::jump(const Cursor& to, long line) {
   if (to.index < files_[to.file].dropped)
-    fail(line, "the jump goes back more than " + std::to_string(kMaxKeptLines) +
+    fail(line, "the jump goes back more than " + std::to_string(kKeptBehind) +
                    " lines, which are no longer kept (a program this long is drip-fed: the control cannot either)");
   if (to.file == cursor_.file && to.index < cursor_.index &&
       ++jumpsBack_[{to.file, to.index}] > options_.maxLoopIterations)
@@ -300,11 +300,7 @@ bool MacroProgram::next(std::string_view& line, long& number) {
   }
   for (;;) {
     if (ended_) return false;
-    File& main = files_[0];
-    if (frames_.size() == 1 && frames_[0].loops.empty() && cursor_.file == 0 && main.lines.size() > kMaxKeptLines &&
-        cursor_.index > main.dropped + kMaxKeptLines / 2) {
-      main.dropFront(kMaxKeptLines / 2);
-    }
+    if (frames_.size() == 1 && frames_[0].loops.empty()) files_.letGoBehind(cursor_);
     Stored* stored = fetch(cursor_);
     if (stored == nullptr) {
       if (frames_.size() > 1) {  // a subprogram file that ends without M99: back to the caller

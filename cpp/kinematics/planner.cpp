@@ -205,11 +205,7 @@ Segment Planner::prepare(const Block& block, long source, const JointMotion* joi
     // frame's plane), so the weakest axis for its share bounds the whole arc.
     const double along = std::abs(block.normal.dot(block.end - block.start)) / std::max(s.length, 1e-12);
     auto weakest = [&](const Eigen::Vector3d& limits) {
-      double w = kInfinity;
-      for (int i = 0; i < 3; ++i) {
-        const double share = std::sqrt(std::max(0.0, 1.0 - block.normal[i] * block.normal[i]));
-        if (share > 1e-9) w = std::min(w, limits[i] / share);
-      }
+      const double w = inPlaneLimit(limits, block.normal);
       return along > 1e-12 ? std::min(w, projectedLimit(limits, block.normal.cwiseAbs() * along)) : w;
     };
     s.dynamics.acceleration = weakest(m.maxAcceleration);

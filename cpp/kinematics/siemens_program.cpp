@@ -285,7 +285,7 @@ LineCursor SiemensProgram::closing(LineCursor opening, const char* closer, bool 
 
 void SiemensProgram::jump(LineCursor to, long n) {
   if (to.index < files_[to.file].dropped)
-    fail(n, "the jump goes back more than " + std::to_string(kMaxKeptLines) +
+    fail(n, "the jump goes back more than " + std::to_string(kKeptBehind) +
                 " lines, which are no longer kept (a program this long is drip-fed: the control cannot either)");
   if (to.file == cursor_.file && to.index < cursor_.index && ++jumpsBack_[{to.file, to.index}] > options_.maxLoopIterations)
     fail(n, "the program has jumped back to the same line " + std::to_string(options_.maxLoopIterations) +
@@ -704,12 +704,13 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
       leave();
     }
     if (endOfSection()) continue;
-    KeptFile& main = files_[0];
-    if (frames_.size() == 1 && frames_[0].structures.empty() && cursor_.file == 0 && main.lines.size() > kMaxKeptLines &&
-        cursor_.index > main.dropped + kMaxKeptLines / 2) {
-      main.dropFront(kMaxKeptLines / 2);
-      jumps_.clear();
-      closings_.clear();
+    if (frames_.size() == 1 && frames_[0].structures.empty()) {
+      const size_t dropped = files_[0].dropped;
+      files_.letGoBehind(cursor_);
+      if (files_[0].dropped != dropped) {  // what the caches say of the lines let go is no longer true
+        jumps_.clear();
+        closings_.clear();
+      }
     }
     const KeptLine* stored = files_.fetch(cursor_);
     if (stored == nullptr) {
@@ -729,6 +730,12 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
     try {
       const std::string_view statement = body(stored->text).statement;
       const std::string keyword = keywordOf(statement);
+      if (keyword.empty() && statement.find_first_of("=CDMcdm") == std::string_view::npos) {
+        // address words only (X1.5 Y2 F100): no variable, cycle, declaration or program end in it
+        line = statement;
+        number = n;
+        return true;
+      }
       if (!keyword.empty() && (flowStatement(keyword, statement, n) || callStatement(keyword, statement, n))) continue;
       text = variables_.substitute(computedCycleArguments(statement, n), n, rewritten_);
     } catch (const ParseError& error) {

@@ -3,7 +3,8 @@
 // moves as a 5-axis TRAORI program (A and C turning under a degree per block) on the A/C trunnion model.
 // Then LinuxCNC's language: the plain program on the LinuxCNC model, and a program whose moves come from an
 // O-word loop with parameters and expressions.
-// Then Fanuc's: the plain program on the Fanuc preset (its lines kept for jumps back), and a Macro B WHILE loop.
+// Then Fanuc's: the plain program on the Fanuc preset (its lines kept for jumps back), and a Macro B WHILE loop;
+// and the 840D's WHILE loop.
 // Targets: at least 2,500,000 blocks/s end to end on one core (3 axes), 1,500,000 (5 axes), 1,000,000 from
 // loops. Times are the process's CPU time.
 // Run: build/bin/bench_feedsim [five-axis [blocks]]   (five-axis: only the 5-axis program, e.g. under perf)
@@ -59,6 +60,12 @@ std::string loopProgram(long blocks) {
 std::string macroLoopProgram(long blocks) {
   return "%\nO0001\nG90 G17 G21\nG0 X0 Y0 Z5\nG1 Z0 F6000\n#1=0\nWHILE [#1 LT " + std::to_string(blocks) +
          "] DO 1\nG1 X[[#1 MOD 700]*0.2] Y[FIX[#1/700]*0.4] Z[-0.5*SIN[#1*0.5]]\n#1=#1+1\nEND 1\nM30\n%\n";
+}
+
+// The loop of loopProgram in the 840D's language (SIN in degrees: 0.5 rad is 28.6479 deg).
+std::string siemensLoopProgram(long blocks) {
+  return "G90 G17 G71\nG0 X0 Y0 Z5\nG1 Z0 F6000\nDEF INT I=0\nWHILE I<" + std::to_string(blocks) +
+         "\nG1 X=(I MOD 700)*0.2 Y=TRUNC(I/700)*0.4 Z=-0.5*SIN(I*28.6479)\nI=I+1\nENDWHILE\nM30\n";
 }
 
 // CPU seconds of this process (best of three): on a machine other work shares, the wall clock counts the time
@@ -194,6 +201,14 @@ int main(int argc, char** argv) {
               fanucSummary.blockCount / fanucTime);
   std::printf("Fanuc Macro B WHILE loop (%ld blocks): read + simulate %5.2f s %10.0f blocks/s\n", macroSummary.blockCount,
               macroTime, macroSummary.blockCount / macroTime);
+  SimulationSummary siemensLoopSummary;
+  const std::string siemensLoop = siemensLoopProgram(blocks);
+  const double siemensLoopTime = seconds([&] {
+    std::istringstream stream(siemensLoop);
+    siemensLoopSummary = simulate(stream, machine).summary;
+  });
+  std::printf("840D WHILE loop (%ld blocks): read + simulate %5.2f s %10.0f blocks/s\n", siemensLoopSummary.blockCount,
+              siemensLoopTime, siemensLoopSummary.blockCount / siemensLoopTime);
   {
     std::istringstream stream(finishingProgram(2000000));
     std::printf("heap in use while simulating 2000000 blocks on the Fanuc model (lines kept for jumps back): %.2f MB "

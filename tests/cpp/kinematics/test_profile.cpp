@@ -48,6 +48,27 @@ TEST(Profile, ShortBlockPeaksBelowCruise) {
   }
 }
 
+// Over many short jerk-limited blocks (the case whose peak is searched), the peak found is the one a bisection to
+// the last bit finds, within the search's tolerance of 1e-9 (1 + cruise) mm/s, and the times add up.
+TEST(Profile, SearchedPeaksAreTheBisectionsPeak) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 20000; ++i) {
+    const Dynamics d{500.0 + 9500.0 * unit(random), 1000.0 + 2e5 * unit(random), true};
+    const double cruise = 50.0 + 950.0 * unit(random), v0 = cruise * unit(random), v1 = cruise * unit(random);
+    const double length = std::abs(changeDistance(v0, v1, d)) + 0.001 + 5.0 * unit(random);
+    const BlockProfile p = blockProfile(length, v0, v1, cruise, d);
+    double lo = std::max(v0, v1), hi = cruise;
+    if (changeDistance(v0, hi, d) + changeDistance(hi, v1, d) <= length) lo = hi;
+    for (int k = 0; k < 200 && hi > lo; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (changeDistance(v0, mid, d) + changeDistance(mid, v1, d) > length ? hi : lo) = mid;
+    }
+    ASSERT_NEAR(p.peak, lo, 2e-9 * (1.0 + cruise)) << i;
+    ASSERT_NEAR(p.accelTime + p.cruiseTime + p.decelTime, p.time, 1e-12);
+  }
+}
+
 TEST(Profile, StateAtWalksTheWholeBlock) {
   for (const Dynamics& d : {kJerk, kBrisk}) {
     const BlockProfile p = blockProfile(30.0, 5.0, 12.0, 80.0, d);
