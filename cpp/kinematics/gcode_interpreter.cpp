@@ -277,9 +277,13 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   Eigen::Vector3d target = position_;
   if (w.machineCoordinates) {  // G53, SUPA: absolute machine coordinates, this line only
     target = machineTarget(w);
+  } else if (absolute_) {
+    const Eigen::Vector3d origin = frame();
+    for (int a = 0; a < 3; ++a)
+      if (w.hasAxis[a]) target[a] = w.axis[a] * unit_ + origin[a];
   } else {
     for (int a = 0; a < 3; ++a)
-      if (w.hasAxis[a]) target[a] = absolute_ ? fromProgram(a, w.axis[a])[a] : position_[a] + w.axis[a] * unit_;
+      if (w.hasAxis[a]) target[a] = position_[a] + w.axis[a] * unit_;
   }
   Eigen::Vector3d rotaryTarget = rotary_;
   for (int a = 0; a < 3; ++a)

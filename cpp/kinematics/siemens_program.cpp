@@ -11,6 +11,8 @@
 
 namespace hsm::kinematics::detail {
 
+using namespace std::string_view_literals;
+
 namespace {
 constexpr auto isDigit = isAsciiDigit;
 constexpr auto isLetter = isAsciiLetter;
@@ -21,8 +23,10 @@ bool nameStart(char c) { return isLetter(c) || c == '_'; }
 bool nameChar(char c) { return isLetter(c) || isDigit(c) || c == '_'; }
 
 std::string name(const char*& p, const char* end) {
-  std::string word;
-  while (p < end && nameChar(*p)) word += upper(*p++);
+  const char* start = p;
+  while (p < end && nameChar(*p)) ++p;
+  std::string word(start, p);
+  for (char& c : word) c = upper(c);
   return word;
 }
 
@@ -106,7 +110,7 @@ std::vector<std::string> procParameters(const char* p, const char* end, long lin
     const char* q = part.data();
     const char* e = q + part.size();
     std::string word = name(q, e);
-    if (word == "VAR") {
+    if (word == "VAR"sv) {
       skipBlanks(q, e);
       word = name(q, e);
     }
@@ -142,6 +146,18 @@ bool endsProgram(std::string_view text) {
   return false;
 }
 
+// Whether the statement is address words only (X1.5 Y2 C30 D1 F100): no assignment, name (a variable, a cycle,
+// DEF) or M word (a program's end) to look at.
+bool addressWordsOnly(std::string_view statement) {
+  for (size_t i = 0; i < statement.size(); ++i) {
+    const char c = statement[i];
+    if (c == ';') return true;
+    if (c == '=' || c == '"' || c == 'M' || c == 'm') return false;
+    if (nameStart(c) && i + 1 < statement.size() && nameStart(statement[i + 1])) return false;
+  }
+  return true;
+}
+
 // The first letters of the 840D's standard cycles that the simulator does not model (measuring, milling and
 // pattern cycles): the interpreter names them as motion it cannot see.
 bool isStandardCycle(const std::string& word) {
@@ -151,7 +167,7 @@ bool isStandardCycle(const std::string& word) {
         std::all_of(word.begin() + static_cast<std::ptrdiff_t>(length), word.end(), [](char c) { return isAsciiDigit(c); }))
       return true;
   }
-  return word == "LONGHOLE";
+  return word == "LONGHOLE"sv;
 }
 }  // namespace
 
@@ -265,17 +281,17 @@ LineCursor SiemensProgram::closing(LineCursor opening, const char* closer, bool 
     const std::string_view statement = body(line->text).statement;
     const std::string keyword = keywordOf(statement);
     if (keyword.empty()) continue;
-    const bool closes = keyword == "ENDIF" || keyword == "ENDWHILE" || keyword == "ENDFOR" || keyword == "ENDLOOP" ||
-                        keyword == "UNTIL";
-    if (depth == 0 && (keyword == closer || (elseToo && keyword == "ELSE"))) {
+    const bool closes = keyword == "ENDIF"sv || keyword == "ENDWHILE"sv || keyword == "ENDFOR"sv || keyword == "ENDLOOP"sv ||
+                        keyword == "UNTIL"sv;
+    if (depth == 0 && (keyword == closer || (elseToo && keyword == "ELSE"sv))) {
       closings_[key] = at.index;
       return at;
     }
     const char* rest = statement.data() + keyword.size();
     const char* end = statement.data() + statement.size();
-    const bool opens = keyword == "WHILE" || keyword == "FOR" || keyword == "LOOP" ||
-                       (keyword == "IF" && capitals(statement).find("GOTO") == std::string::npos) ||
-                       (keyword == "REPEAT" && endOfStatement(rest, end));
+    const bool opens = keyword == "WHILE"sv || keyword == "FOR"sv || keyword == "LOOP"sv ||
+                       (keyword == "IF"sv && capitals(statement).find("GOTO") == std::string::npos) ||
+                       (keyword == "REPEAT"sv && endOfStatement(rest, end));
     if (opens) ++depth;
     if (closes) --depth;
   }
@@ -345,16 +361,16 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     return label;
   };
   auto goTo = [&](const std::string& how, const std::string& label) {
-    if (how == "GOTOF") jump(find(label, Direction::Forward, here, n), n);
-    else if (how == "GOTOB") jump(find(label, Direction::Backward, here, n), n);
-    else if (how == "GOTO") jump(find(label, Direction::Both, here, n), n);
-    else if (how == "GOTOC") {  // GOTO without the alarm when the label is missing
+    if (how == "GOTOF"sv) jump(find(label, Direction::Forward, here, n), n);
+    else if (how == "GOTOB"sv) jump(find(label, Direction::Backward, here, n), n);
+    else if (how == "GOTO"sv) jump(find(label, Direction::Both, here, n), n);
+    else if (how == "GOTOC"sv) {  // GOTO without the alarm when the label is missing
       const LineCursor to = find(label, Direction::Both, here, n, false);
       if (to != here) jump(to, n);
     }
     else fail(n, how + ": the jumps are GOTOF, GOTOB, GOTO and GOTOC");
   };
-  if (keyword == "PROC") {
+  if (keyword == "PROC"sv) {
     if (frames_.size() == 1) {
       const std::vector<std::string> parameters = procParameters(p, end, n);
       if (!parameters.empty()) {
@@ -369,16 +385,16 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     }
     return true;
   }
-  if (keyword == "EXTERN") return true;
-  if (keyword == "GOTOF" || keyword == "GOTOB" || keyword == "GOTO" || keyword == "GOTOC") {
+  if (keyword == "EXTERN"sv) return true;
+  if (keyword == "GOTOF"sv || keyword == "GOTOB"sv || keyword == "GOTO"sv || keyword == "GOTOC"sv) {
     goTo(keyword, target());
     return true;
   }
-  if (keyword == "GOTOS") {  // back to the program's start: a production loop; one pass is what is timed
+  if (keyword == "GOTOS"sv) {  // back to the program's start: a production loop; one pass is what is timed
     ended_ = true;
     return true;
   }
-  if (keyword == "IF") {
+  if (keyword == "IF"sv) {
     const bool holds = condition(p, end, n);
     skipBlanks(p, end);
     const std::string then = name(p, end);
@@ -399,18 +415,18 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     }
     return true;
   }
-  if (keyword == "ELSE") {
+  if (keyword == "ELSE"sv) {
     const LineCursor opening = top(Kind::If, "ELSE").opening;
     cursor_ = forward(closing(opening, "ENDIF", false, n));
     structures.pop_back();
     return true;
   }
-  if (keyword == "ENDIF") {
+  if (keyword == "ENDIF"sv) {
     top(Kind::If, "ENDIF");
     structures.pop_back();
     return true;
   }
-  if (keyword == "WHILE") {
+  if (keyword == "WHILE"sv) {
     const bool holds = condition(p, end, n);
     const bool again = !structures.empty() && structures.back().kind == Kind::While && structures.back().opening == here;
     if (holds && !again) structures.push_back(Structure{Kind::While, here, {}, {}, {}, 0.0, 0, 0});
@@ -420,12 +436,12 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     }
     return true;
   }
-  if (keyword == "ENDWHILE") {
+  if (keyword == "ENDWHILE"sv) {
     Structure& s = top(Kind::While, "ENDWHILE");
     loopBack(s, s.opening, "WHILE ... ENDWHILE", n);
     return true;
   }
-  if (keyword == "FOR") {
+  if (keyword == "FOR"sv) {
     skipBlanks(p, end);
     const std::string counter = name(p, end);
     skipBlanks(p, end);
@@ -442,7 +458,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     else structures.push_back(Structure{Kind::For, here, {}, {}, counter, last, 0, 0});
     return true;
   }
-  if (keyword == "ENDFOR") {
+  if (keyword == "ENDFOR"sv) {
     Structure& s = top(Kind::For, "ENDFOR");
     const double value = variables_.get(s.variable, n) + 1.0;
     variables_.set(s.variable, value, n);
@@ -450,23 +466,23 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     else structures.pop_back();
     return true;
   }
-  if (keyword == "LOOP") {
+  if (keyword == "LOOP"sv) {
     structures.push_back(Structure{Kind::Loop, here, {}, {}, {}, 0.0, 0, 0});
     return true;
   }
-  if (keyword == "ENDLOOP") {
+  if (keyword == "ENDLOOP"sv) {
     Structure& s = top(Kind::Loop, "ENDLOOP");
     loopBack(s, forward(s.opening), "LOOP ... ENDLOOP (left only by a jump)", n);
     return true;
   }
-  if (keyword == "UNTIL") {
+  if (keyword == "UNTIL"sv) {
     Structure& s = top(Kind::Repeat, "UNTIL");
     if (condition(p, end, n)) structures.pop_back();
     else loopBack(s, forward(s.opening), "REPEAT ... UNTIL", n);
     return true;
   }
-  if (keyword == "REPEAT" || keyword == "REPEATB") {
-    if (keyword == "REPEAT" && endOfStatement(p, end)) {
+  if (keyword == "REPEAT"sv || keyword == "REPEATB"sv) {
+    if (keyword == "REPEAT"sv && endOfStatement(p, end)) {
       structures.push_back(Structure{Kind::Repeat, here, {}, {}, {}, 0.0, 0, 0});
       return true;
     }
@@ -476,7 +492,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     const char* q = p;
     const std::string word = name(q, end);
     skipBlanks(q, end);
-    const bool passesWord = word == "P" && q < end && (*q == '=' || isDigit(*q));
+    const bool passesWord = word == "P"sv && q < end && (*q == '=' || isDigit(*q));
     if (!word.empty() && !passesWord) {
       second = word;
       p = q;
@@ -495,7 +511,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
                   std::to_string(options_.maxLoopIterations));
     if (passes == 0) return true;
     Structure s{Kind::Section, {}, {}, cursor_, {}, 0.0, 0, static_cast<long>(passes)};
-    if (keyword == "REPEATB") {  // the one block with the label
+    if (keyword == "REPEATB"sv) {  // the one block with the label
       s.opening = find(first, Direction::BackwardFirst, here, n);
       s.stop = forward(s.opening);
     } else if (second.empty()) {  // from the label back there to this line
@@ -509,12 +525,12 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     cursor_ = structures.back().opening;
     return true;
   }
-  if (keyword == "RET") {
+  if (keyword == "RET"sv) {
     if (frames_.size() > 1) leave();
     else ended_ = true;
     return true;
   }
-  if (keyword == "CALL" || keyword == "PCALL") {
+  if (keyword == "CALL"sv || keyword == "PCALL"sv) {
     skipBlanks(p, end);
     if (p >= end || *p != '"') fail(n, keyword + " is followed by the program's name in quotes: CALL \"NAME\"");
     const char* close = std::find(p + 1, end, '"');
@@ -529,7 +545,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     if (found != nullptr) call(*found, called, {}, 1, n);
     return true;
   }
-  if (keyword == "MCALL") {
+  if (keyword == "MCALL"sv) {
     skipBlanks(p, end);
     const std::string called = name(p, end);
     if (!called.empty() && !isStandardCycle(called))
@@ -582,7 +598,7 @@ bool SiemensProgram::callStatement(const std::string& called, std::string_view s
   const char* end = statement.data() + statement.size();
   const char* q = p;
   skipBlanks(q, end);
-  if ((q < end && *q == '=') || called == "DEF") return false;  // an assignment, a declaration
+  if ((q < end && *q == '=') || called == "DEF"sv) return false;  // an assignment, a declaration
   const bool lNumber = called[0] == 'L' && std::all_of(called.begin() + 1, called.end(), [](char c) { return isAsciiDigit(c); });
   if (!lNumber && (variables_.isVariable(called) || isSiemensKeyword(called))) return false;
   std::string_view arguments;
@@ -730,7 +746,7 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
     try {
       const std::string_view statement = body(stored->text).statement;
       const std::string keyword = keywordOf(statement);
-      if (keyword.empty() && statement.find_first_of("=CDMcdm") == std::string_view::npos) {
+      if (keyword.empty() && addressWordsOnly(statement)) {
         // address words only (X1.5 Y2 F100): no variable, cycle, declaration or program end in it
         line = statement;
         number = n;

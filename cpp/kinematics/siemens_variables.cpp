@@ -25,8 +25,10 @@ void blanks(const char*& p, const char* end) {
 bool identifierChar(char c) { return isLetter(c) || isDigit(c) || c == '_'; }
 
 std::string identifier(const char*& p, const char* end) {
-  std::string name;
-  while (p < end && identifierChar(*p)) name += upper(*p++);
+  const char* start = p;
+  while (p < end && identifierChar(*p)) ++p;
+  std::string name(start, p);
+  for (char& c : name) c = upper(c);
   return name;
 }
 
@@ -37,8 +39,32 @@ bool isRName(const std::string& name) {
 
 bool isRParameter(const std::string& name) { return isRName(name) && name.size() <= 4; }
 
+// A computed value as the lexer reads it back: to the nanometre (9 decimals, trailing zeros dropped) by integer
+// arithmetic, several times faster than the shortest exact form, which values beyond 10^8 still get.
 void appendValue(std::string& out, double v) {
   char buffer[400];
+  if (std::abs(v) < 1e8) {
+    const long long scaled = std::llround(std::abs(v) * 1e9);
+    long long whole = scaled / 1'000'000'000LL, fraction = scaled % 1'000'000'000LL;
+    char* p = buffer + 64;
+    char* end = p;
+    if (fraction != 0) {
+      int digits = 9;
+      while (fraction % 10 == 0) {
+        fraction /= 10;
+        --digits;
+      }
+      for (int i = 0; i < digits; ++i, fraction /= 10) *--p = static_cast<char>('0' + fraction % 10);
+      *--p = '.';
+    }
+    do {
+      *--p = static_cast<char>('0' + whole % 10);
+      whole /= 10;
+    } while (whole != 0);
+    if (v < 0 && scaled != 0) *--p = '-';
+    out.append(p, end);
+    return;
+  }
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::fixed);
   out.append(buffer, result.ptr);
 }
