@@ -21,7 +21,8 @@ void KeptFile::keep(std::string_view raw, long number) {
   char* at = chunks.back().get() + chunkUsed;
   std::memcpy(at, raw.data(), raw.size());
   chunkUsed += raw.size();
-  lines.push_back(KeptLine{std::string_view(at, raw.size()), number, chunksDropped + chunks.size() - 1});
+  lines.push_back(KeptLine{std::string_view(at, raw.size()), number,
+                           static_cast<std::uint32_t>(chunksDropped + chunks.size() - 1), -1});
 }
 
 void KeptFile::dropFront(size_t count) {

@@ -8,6 +8,7 @@
 
 #include "kinematics/gcode_lexer.hpp"
 
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <string>
@@ -23,7 +24,8 @@ inline constexpr size_t kChunkBytes = 1 << 20;
 struct KeptLine {
   std::string_view text;  // into its file's arena
   long number;            // its line number in its file
-  size_t chunk;           // the arena chunk holding it, counted from the file's first
+  std::uint32_t chunk;    // the arena chunk holding it, counted from the file's first
+  std::int32_t compiled;  // the line compiled by the program flow that runs it (its index there), −1 not yet
 };
 
 struct KeptFile {

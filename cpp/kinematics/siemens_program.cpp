@@ -210,9 +210,25 @@ SiemensProgram::Body SiemensProgram::body(std::string_view text) {
   return b;
 }
 
-bool SiemensProgram::condition(const char*& p, const char* end, long n) const {
-  if (endOfStatement(p, end)) fail(n, "IF / WHILE / UNTIL needs a condition (IF R1>5 GOTOF LABEL)");
-  return variables_.evaluate(p, end, n) != 0.0;
+SiemensProgram::CompiledLine& SiemensProgram::compiled(KeptLine& line) {
+  if (line.compiled < 0) {
+    line.compiled = static_cast<int>(compiled_.size());
+    compiled_.emplace_back();
+  }
+  return compiled_[static_cast<size_t>(line.compiled)];
+}
+
+bool SiemensProgram::condition(KeptLine& line, const char*& p, const char* end, long n) {
+  CompiledLine& c = compiled(line);
+  if (!c.hasCondition) {
+    if (endOfStatement(p, end)) fail(n, "IF / WHILE / UNTIL needs a condition (IF R1>5 GOTOF LABEL)");
+    const char* q = p;
+    compileSiemensExpression(q, end, n, c.condition);
+    c.conditionLength = static_cast<size_t>(q - p);
+    c.hasCondition = true;
+  }
+  p += c.conditionLength;
+  return variables_.evaluate(c.condition, n) != 0.0;
 }
 
 LineCursor SiemensProgram::find(const std::string& target, Direction direction, LineCursor from, long n,
@@ -345,7 +361,7 @@ bool SiemensProgram::endOfSection() {
   return true;
 }
 
-bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view statement, long n) {
+bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view statement, long n, KeptLine& line) {
   const char* p = statement.data() + keyword.size();
   const char* end = statement.data() + statement.size();
   const LineCursor here{cursor_.file, cursor_.index - 1};
@@ -395,7 +411,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     return true;
   }
   if (keyword == "IF"sv) {
-    const bool holds = condition(p, end, n);
+    const bool holds = condition(line, p, end, n);
     skipBlanks(p, end);
     const std::string then = name(p, end);
     if (then.rfind("GOTO", 0) == 0) {
@@ -427,7 +443,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
     return true;
   }
   if (keyword == "WHILE"sv) {
-    const bool holds = condition(p, end, n);
+    const bool holds = condition(line, p, end, n);
     const bool again = !structures.empty() && structures.back().kind == Kind::While && structures.back().opening == here;
     if (holds && !again) structures.push_back(Structure{Kind::While, here, {}, {}, {}, 0.0, 0, 0});
     if (!holds) {
@@ -477,7 +493,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
   }
   if (keyword == "UNTIL"sv) {
     Structure& s = top(Kind::Repeat, "UNTIL");
-    if (condition(p, end, n)) structures.pop_back();
+    if (condition(line, p, end, n)) structures.pop_back();
     else loopBack(s, forward(s.opening), "REPEAT ... UNTIL", n);
     return true;
   }
@@ -726,9 +742,12 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
       if (files_[0].dropped != dropped) {  // what the caches say of the lines let go is no longer true
         jumps_.clear();
         closings_.clear();
+        compiled_.clear();
+        for (size_t f = 0; f < files_.size(); ++f)
+          for (KeptLine& kept : files_[f].lines) kept.compiled = -1;
       }
     }
-    const KeptLine* stored = files_.fetch(cursor_);
+    KeptLine* stored = files_.fetch(cursor_);
     if (stored == nullptr) {
       if (frames_.size() > 1) {  // a subprogram file that ends without RET or M17: back to the caller
         leave();
@@ -752,8 +771,17 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
         number = n;
         return true;
       }
-      if (!keyword.empty() && (flowStatement(keyword, statement, n) || callStatement(keyword, statement, n))) continue;
-      text = variables_.substitute(computedCycleArguments(statement, n), n, rewritten_);
+      if (!keyword.empty() && (flowStatement(keyword, statement, n, *stored) || callStatement(keyword, statement, n)))
+        continue;
+      const std::string_view computed = computedCycleArguments(statement, n);
+      if (computed.data() != statement.data()) {  // its text changes from run to run
+        text = variables_.substitute(computed, n, rewritten_);
+      } else {
+        CompiledLine& c = compiled(*stored);
+        if (!c.hasText) variables_.compile(statement, n, c.text);
+        c.hasText = true;
+        text = variables_.run(c.text, statement, n, rewritten_);
+      }
     } catch (const ParseError& error) {
       if (files_[file].streaming) throw;
       // the message names the subprogram file the line is in

@@ -56,6 +56,13 @@ private:
     std::vector<std::pair<std::string, double>> arguments;  // bound again for each pass
     std::vector<Structure> structures;
   };
+  // What running a line again needs without reading its text: its condition, its words' computation.
+  struct CompiledLine {
+    SiemensExpression condition;
+    size_t conditionLength = 0;  // characters of the condition, from where it starts
+    bool hasCondition = false, hasText = false;
+    SiemensLine text;
+  };
   struct Subprogram {
     LineCursor start;                 // the line after its PROC
     std::vector<std::string> parameters;
@@ -69,7 +76,7 @@ private:
   static Body body(std::string_view text);
   LineCursor forward(LineCursor at) const { return LineCursor{at.file, at.index + 1}; }
   // Runs the line's flow statement (its keyword `keyword`); false when it is not one.
-  bool flowStatement(const std::string& keyword, std::string_view statement, long n);
+  bool flowStatement(const std::string& keyword, std::string_view statement, long n, KeptLine& line);
   bool callStatement(const std::string& name, std::string_view statement, long n);
   // The line of `target` (a label or N123) from `from`: forward, backward, or forward then backward.
   enum class Direction { Forward, Backward, Both, BackwardFirst };  // Both: forward first
@@ -78,7 +85,9 @@ private:
   LineCursor closing(LineCursor opening, const char* closer, bool elseToo, long n);
   void jump(LineCursor to, long n);
   void loopBack(Structure& s, LineCursor to, const char* what, long n);
-  bool condition(const char*& p, const char* end, long n) const;
+  // The condition from `p` (moved past it) of `line`, compiled the first time the line runs.
+  bool condition(KeptLine& line, const char*& p, const char* end, long n);
+  CompiledLine& compiled(KeptLine& line);
   // The subprogram `name`, loaded on its first call; null when it is missing and not `required` (or missing calls
   // pass), else a ParseError naming it.
   const Subprogram* subprogram(const std::string& name, long n, bool required = true);
@@ -94,6 +103,7 @@ private:
   SiemensVariables variables_;
   std::vector<Frame> frames_;
   std::map<std::string, Subprogram> subprograms_;
+  std::vector<CompiledLine> compiled_;  // of the kept lines that have run (KeptLine::compiled)
   std::map<std::string, std::string> missing_;  // names looked for in vain, with the places looked at
   std::map<std::tuple<size_t, size_t, std::string, int>, size_t> jumps_;  // (file, from, target, direction) → line
   std::map<std::pair<size_t, size_t>, size_t> closings_;                  // (file, opening) → closing line

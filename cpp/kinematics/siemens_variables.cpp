@@ -4,8 +4,6 @@
 #include "common/text.hpp"
 #include "kinematics/gcode.hpp"
 
-#include <fast_float/fast_float.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -13,7 +11,6 @@
 namespace hsm::kinematics::detail {
 
 namespace {
-constexpr double kDegree = M_PI / 180.0;
 constexpr auto isLetter = isAsciiLetter;
 constexpr auto isDigit = isAsciiDigit;
 constexpr auto upper = asciiUpper;
@@ -70,206 +67,16 @@ void appendValue(std::string& out, double v) {
 }
 }  // namespace
 
-// Recursive descent over the 840D's arithmetic and conditions: either := both {(OR|XOR) both}; both := negation
-// {AND negation}; negation := NOT negation | comparison; comparison := sum [(==|<>|<|>|<=|>=) sum]; sum := product
-// {(+|-) product}; product := unary {(*|/|DIV|MOD) unary}; unary := [+|-] primary; primary := number | variable |
-// (either) | FUNCTION(sum[, sum]).
-class SiemensVariables::Reader {
-public:
-  Reader(const SiemensVariables& variables, long line) : variables_(variables), line_(line) {}
-
-  double either(const char*& p, const char* end) const {
-    double value = both(p, end);
-    for (std::string op = operatorWord(p, end); op == "OR" || op == "XOR"; op = operatorWord(p, end)) {
-      skipWord(p, end);
-      const bool right = both(p, end) != 0.0;
-      value = op == "OR" ? (value != 0.0 || right) : ((value != 0.0) != right);
-    }
-    return value;
-  }
-
-  double sum(const char*& p, const char* end) const {
-    double value = product(p, end);
-    for (;;) {
-      const char* q = p;
-      blanks(q, end);
-      if (q < end && (*q == '+' || *q == '-')) {
-        const char op = *q++;
-        p = q;
-        const double right = product(p, end);
-        value = op == '+' ? value + right : value - right;
-      } else {
-        return value;
-      }
-    }
-  }
-
-private:
-  [[noreturn]] void fail(const std::string& message) const { throw ParseError(line_, message); }
-
-  // The word of letters at `p` (after blanks), in capitals, without moving `p`.
-  static std::string operatorWord(const char* p, const char* end) {
-    blanks(p, end);
-    std::string word;
-    while (p < end && isLetter(*p) && word.size() < 4) word += upper(*p++);
-    return (p < end && identifierChar(*p)) ? std::string() : word;
-  }
-  static void skipWord(const char*& p, const char* end) {
-    blanks(p, end);
-    while (p < end && isLetter(*p)) ++p;
-  }
-
-  double both(const char*& p, const char* end) const {
-    double value = negation(p, end);
-    while (operatorWord(p, end) == "AND") {
-      skipWord(p, end);
-      const bool right = negation(p, end) != 0.0;
-      value = value != 0.0 && right;
-    }
-    return value;
-  }
-
-  double negation(const char*& p, const char* end) const {
-    if (operatorWord(p, end) == "NOT") {
-      skipWord(p, end);
-      return negation(p, end) == 0.0;
-    }
-    return comparison(p, end);
-  }
-
-  double comparison(const char*& p, const char* end) const {
-    const double left = sum(p, end);
-    const char* q = p;
-    blanks(q, end);
-    if (q >= end) return left;
-    std::string op;
-    if (q + 1 < end && (std::string_view(q, 2) == "==" || std::string_view(q, 2) == "<>" ||
-                        std::string_view(q, 2) == "<=" || std::string_view(q, 2) == ">="))
-      op.assign(q, 2);
-    else if (*q == '<' || *q == '>')
-      op.assign(q, 1);
-    else
-      return left;
-    p = q + op.size();
-    const double right = sum(p, end);
-    if (op == "==") return left == right;
-    if (op == "<>") return left != right;
-    if (op == "<=") return left <= right;
-    if (op == ">=") return left >= right;
-    return op == "<" ? left < right : left > right;
-  }
-
-  double product(const char*& p, const char* end) const {
-    double value = unary(p, end);
-    for (;;) {
-      const char* q = p;
-      blanks(q, end);
-      std::string word;
-      char op = 0;
-      if (q < end && (*q == '*' || *q == '/')) {
-        op = *q++;
-      } else if (q + 3 <= end && isLetter(*q)) {
-        const char* r = q;
-        word = identifier(r, end);
-        if (word == "DIV" || word == "MOD") {
-          op = word[0];
-          q = r;
-        }
-      }
-      if (op == 0) return value;
-      p = q;
-      const double right = unary(p, end);
-      if ((op == '/' || op == 'D' || op == 'M') && right == 0.0) fail("division by zero in an expression");
-      value = op == '*' ? value * right : op == '/' ? value / right : op == 'D' ? std::trunc(value / right)
-                                                                               : std::fmod(value, right);
-    }
-  }
-
-  double unary(const char*& p, const char* end) const {
-    blanks(p, end);
-    if (p < end && (*p == '-' || *p == '+')) {
-      const char sign = *p++;
-      const double v = unary(p, end);
-      return sign == '-' ? -v : v;
-    }
-    return primary(p, end);
-  }
-
-  double primary(const char*& p, const char* end) const {
-    blanks(p, end);
-    if (p >= end) fail("a value is missing at the end of the line");
-    if (*p == '(') {
-      ++p;
-      const double v = either(p, end);
-      close(p, end);
-      return v;
-    }
-    if (isDigit(*p) || *p == '.') {
-      double v = 0.0;
-      const auto parsed = fast_float::from_chars(p, end, v, fast_float::chars_format::fixed);
-      if (parsed.ec != std::errc()) fail("'" + std::string(p, std::min<size_t>(end - p, 16)) + "' is not a number");
-      p = parsed.ptr;
-      if (p < end && (*p == 'E' || *p == 'e') && p + 1 < end && (isDigit(p[1]) || p[1] == '-' || p[1] == '+' || p[1] == 'X'))
-        fail("a number with an exponent ('" + std::string(parsed.ptr - 1, std::min<size_t>(end - parsed.ptr + 1, 8)) +
-             "'): not read; write the number in full");
-      return v;
-    }
-    if (!isLetter(*p) && *p != '_')
-      fail(std::string("unexpected character '") + *p + "' in an expression");
-    const std::string name = identifier(p, end);
-    const char* q = p;
-    blanks(q, end);
-    if (q < end && *q == '(') {
-      p = q + 1;
-      return function(name, p, end);
-    }
-    return variables_.get(name, line_);
-  }
-
-  void close(const char*& p, const char* end) const {
-    blanks(p, end);
-    if (p >= end || *p != ')') fail("'(' is not closed: add ')'");
-    ++p;
-  }
-
-  double function(const std::string& name, const char*& p, const char* end) const {
-    const double a = sum(p, end);
-    blanks(p, end);
-    if (name == "ATAN2" || name == "MINVAL" || name == "MAXVAL") {
-      if (p >= end || *p != ',') fail(name + " takes two arguments: " + name + "(a, b)");
-      ++p;
-      const double b = sum(p, end);
-      close(p, end);
-      return name == "ATAN2" ? std::atan2(a, b) / kDegree : name == "MINVAL" ? std::min(a, b) : std::max(a, b);
-    }
-    close(p, end);
-    if (name == "SIN") return std::sin(a * kDegree);
-    if (name == "COS") return std::cos(a * kDegree);
-    if (name == "TAN") return std::tan(a * kDegree);
-    if (name == "ASIN" || name == "ACOS") {
-      if (a < -1.0 || a > 1.0) fail(name + "(" + number(a) + "): the argument must be within -1 to 1");
-      return (name == "ASIN" ? std::asin(a) : std::acos(a)) / kDegree;
-    }
-    if (name == "SQRT") {
-      if (a < 0.0) fail("SQRT(" + number(a) + "): the argument must not be negative");
-      return std::sqrt(a);
-    }
-    if (name == "POT") return a * a;
-    if (name == "ABS") return std::abs(a);
-    if (name == "TRUNC") return std::trunc(a);
-    if (name == "ROUND") return std::round(a);
-    if (name == "AC") return a;
-    if (name == "IC") fail("IC(): an incremental value on one axis is not read yet; program it in G91 or absolute");
-    fail("'" + name + "(' is not an 840D function read here (SIN COS TAN ASIN ACOS ATAN2 SQRT POT ABS TRUNC ROUND "
-                      "MINVAL MAXVAL AC)");
-  }
-
-  const SiemensVariables& variables_;
-  long line_;
-};
-
 double SiemensVariables::evaluate(const char*& p, const char* end, long line) const {
-  return Reader(*this, line).either(p, end);
+  SiemensExpression e;
+  compileSiemensExpression(p, end, line, e);
+  return evaluate(e, line);
+}
+
+double SiemensVariables::evaluate(const SiemensExpression& e, long line) const {
+  return runSiemensExpression(
+      e, line, stack_, [this](int index) { return r_[static_cast<size_t>(index)]; },
+      [this](const std::string& name, long at) { return get(name, at); });
 }
 
 bool SiemensVariables::isVariable(const std::string& name) const {
@@ -293,7 +100,7 @@ void SiemensVariables::set(const std::string& name, double value, long line) {
     scopes_.back()[name] = value;
 }
 
-void SiemensVariables::declare(const char*& p, const char* end, long line) {
+void SiemensVariables::compileDeclaration(const char*& p, const char* end, long line, SiemensLine& out) const {
   blanks(p, end);
   const std::string type = identifier(p, end);
   static const char* kTypes[] = {"REAL", "INT", "BOOL", "CHAR", "STRING", "AXIS", "FRAME"};
@@ -301,10 +108,12 @@ void SiemensVariables::declare(const char*& p, const char* end, long line) {
     throw ParseError(line, "DEF " + type + ": the types read are REAL, INT, BOOL, CHAR, STRING, AXIS and FRAME");
   for (;;) {
     blanks(p, end);
-    const std::string name = identifier(p, end);
-    if (name.empty()) throw ParseError(line, "DEF " + type + " needs a variable's name");
-    if (p < end && *p == '[') throw ParseError(line, "DEF " + name + "[…]: arrays are not read yet");
-    double value = 0.0;
+    SiemensLine::Piece piece;
+    piece.kind = SiemensLine::Piece::Declare;
+    piece.text = identifier(p, end);
+    piece.hasValue = false;
+    if (piece.text.empty()) throw ParseError(line, "DEF " + type + " needs a variable's name");
+    if (p < end && *p == '[') throw ParseError(line, "DEF " + piece.text + "[...]: arrays are not read yet");
     blanks(p, end);
     if (p < end && *p == '=') {
       ++p;
@@ -313,10 +122,11 @@ void SiemensVariables::declare(const char*& p, const char* end, long line) {
         const char* close = std::find(p + 1, end, '"');
         p = close < end ? close + 1 : end;
       } else {
-        value = Reader(*this, line).sum(p, end);
+        compileSiemensExpression(p, end, line, piece.value);
+        piece.hasValue = true;
       }
     }
-    scopes_.back()[name] = value;
+    out.pieces.push_back(std::move(piece));
     blanks(p, end);
     if (p >= end || *p == ';') return;
     if (*p != ',') throw ParseError(line, "DEF: names are separated by commas");
@@ -342,43 +152,54 @@ bool SiemensVariables::plainAssignments(std::string_view raw) const {
 }
 
 std::string_view SiemensVariables::substitute(std::string_view raw, long line, std::string& out) {
+  SiemensLine compiled;
+  compile(raw, line, compiled);
+  return run(compiled, raw, line, out);
+}
+
+void SiemensVariables::compile(std::string_view raw, long line, SiemensLine& out) const {
+  out.pieces.clear();
   const bool declares = raw.find("DEF ") != std::string_view::npos || raw.find("def ") != std::string_view::npos;
-  if (!declares && plainAssignments(raw)) return raw;
-  out.clear();
+  out.asWritten = !declares && plainAssignments(raw);
+  if (out.asWritten) return;
+  auto text = [&](const char* from, const char* to) {
+    if (out.pieces.empty() || out.pieces.back().kind != SiemensLine::Piece::Text) out.pieces.emplace_back();
+    out.pieces.back().text.append(from, to);
+  };
   const char* p = raw.data();
   const char* end = p + raw.size();
   while (p < end) {
     const char c = *p;
     if (c == ';') break;
-    if (c == '"') {  // a string (MSG("…"), T="name"): as written
+    if (c == '"') {  // a string (MSG("..."), T="name"): as written
       const char* close = std::find(p + 1, end, '"');
-      out.append(p, close < end ? close + 1 : end);
+      text(p, close < end ? close + 1 : end);
       p = close < end ? close + 1 : end;
       continue;
     }
     if (!(isLetter(c) || c == '_')) {
-      out += c;
+      text(p, p + 1);
       ++p;
       continue;
     }
     const char* start = p;
     const std::string name = identifier(p, end);
     if (name == "DEF" && (p == end || *p == ' ' || *p == '\t')) {
-      declare(p, end, line);
+      compileDeclaration(p, end, line, out);
       break;
     }
     const char* q = p;
     blanks(q, end);
     const bool assigns = q < end && *q == '=' && !(q + 1 < end && q[1] == '=');
     if (!assigns) {
-      out.append(start, p);
+      text(start, p);
       continue;
     }
     p = q + 1;
     blanks(p, end);
     if (p < end && *p == '"') {  // T="DRILL 8.5": a name, as written
       const char* close = std::find(p + 1, end, '"');
-      out.append(start, close < end ? close + 1 : end);
+      text(start, close < end ? close + 1 : end);
       p = close < end ? close + 1 : end;
       continue;
     }
@@ -386,23 +207,37 @@ std::string_view SiemensVariables::substitute(std::string_view raw, long line, s
       const char* r = p;
       const std::string next = identifier(r, end);
       const bool word = next.size() >= 2 && isLetter(next[0]) && std::all_of(next.begin() + 1, next.end(), [](char ch) {
-        return isDigit(ch);
+        return isAsciiDigit(ch);
       }) && !isVariable(next);
       if (p >= end || *p == ';' || (word && (r >= end || *r != '(')))
         throw ParseError(line, name + "= needs a number, or an expression of R parameters and DEF variables");
     }
     if (isRName(name) && !isRParameter(name))
       throw ParseError(line, name + " is not an R parameter: they are R0 to R" + std::to_string(kSiemensRParameters - 1));
-    const double value = Reader(*this, line).sum(p, end);
-    if (isVariable(name)) {
-      set(name, value, line);  // an assignment to a variable: nothing for the lexer
-      continue;
+    SiemensLine::Piece piece;
+    piece.kind = isVariable(name) ? SiemensLine::Piece::Assign : SiemensLine::Piece::Address;
+    piece.text = name;
+    compileSiemensExpression(p, end, line, piece.value);
+    out.pieces.push_back(std::move(piece));
+  }
+}
+
+std::string_view SiemensVariables::run(const SiemensLine& compiled, std::string_view raw, long line, std::string& out) {
+  if (compiled.asWritten) return raw;
+  out.clear();
+  for (const SiemensLine::Piece& piece : compiled.pieces) {
+    switch (piece.kind) {
+      case SiemensLine::Piece::Text: out += piece.text; break;
+      case SiemensLine::Piece::Declare: scopes_.back()[piece.text] = piece.hasValue ? evaluate(piece.value, line) : 0.0; break;
+      case SiemensLine::Piece::Assign: set(piece.text, evaluate(piece.value, line), line); break;
+      case SiemensLine::Piece::Address:
+        out += ' ';
+        out += piece.text;
+        if (piece.text.size() > 1) out += '=';  // CR=, ADIS=, A3=: keywords with a value; X=...: the word X...
+        appendValue(out, evaluate(piece.value, line));
+        out += ' ';
+        break;
     }
-    out += ' ';
-    out += name;
-    if (name.size() > 1) out += '=';  // CR=, ADIS=, A3=: keywords with a value; X=…: the word X…
-    appendValue(out, value);
-    out += ' ';
   }
   return out;
 }

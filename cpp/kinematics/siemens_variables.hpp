@@ -6,6 +6,8 @@
 // applied in the order written. Not read here: labels, jumps and loops, IC() on an axis, string arithmetic.
 #pragma once
 
+#include "kinematics/siemens_expression.hpp"
+
 #include <array>
 #include <map>
 #include <vector>
@@ -16,14 +18,31 @@ namespace hsm::kinematics::detail {
 
 inline constexpr int kSiemensRParameters = 1000;
 
+// A line of the 840D's language compiled once (its assignments, declarations and computed address values), to be
+// run as often as a loop or a call runs it.
+struct SiemensLine {
+  struct Piece {
+    enum Kind : std::uint8_t { Text, Assign, Address, Declare } kind = Text;
+    std::string text;            // Text: as written; Assign, Declare: the variable; Address: the address (X, CR…)
+    SiemensExpression value;     // Assign, Address, Declare (with hasValue)
+    bool hasValue = true;
+  };
+  std::vector<Piece> pieces;
+  bool asWritten = false;  // nothing to compute: the lexer reads the line as it is
+};
+
 class SiemensVariables {
 public:
   SiemensVariables() { r_.fill(0.0); }
 
   // A line in the 840D's language as plain words; `out` holds the rewritten text when the line needed it.
   std::string_view substitute(std::string_view raw, long line, std::string& out);
+  // The same in two steps: compiled once, run each time the line runs.
+  void compile(std::string_view raw, long line, SiemensLine& out) const;
+  std::string_view run(const SiemensLine& compiled, std::string_view raw, long line, std::string& out);
   // An expression (or a condition: 1 true, 0 false) from `p`, which is left after it.
   double evaluate(const char*& p, const char* end, long line) const;
+  double evaluate(const SiemensExpression& e, long line) const;
   bool isVariable(const std::string& name) const;
   double get(const std::string& name, long line) const;
   void set(const std::string& name, double value, long line);
@@ -35,13 +54,12 @@ public:
   void declareLocal(const std::string& name, double value) { scopes_.back()[name] = value; }
 
 private:
-  class Reader;  // the expression reader (in the .cpp)
-
-  void declare(const char*& p, const char* end, long line);
+  void compileDeclaration(const char*& p, const char* end, long line, SiemensLine& out) const;
   bool plainAssignments(std::string_view raw) const;
 
   std::array<double, kSiemensRParameters> r_{};
   std::vector<std::map<std::string, double>> scopes_{1};  // DEF variables (in capitals) of each program level
+  mutable std::vector<double> stack_;                     // the expressions' scratch
 };
 
 }  // namespace hsm::kinematics::detail
