@@ -328,3 +328,18 @@ TEST(SiemensLanguage, ArcsThroughAPointAndMeasuringCycles) {
   EXPECT_EQ(reader.stats().unknownWordCounts.at("CYCLE977"), 1);
   EXPECT_EQ(errorOf("G1 F100 X1\nPOCKET3(10, 0, 1, -5)\n", siemens()).rfind("line 2: 'POCKET3' (an 840D standard cycle", 0), 0u);
 }
+
+// Mutations of a program in the 840D's frames, swivel and arcs through a point are read or refused with an
+// InputError, never a crash, a non-finite point or an endless run.
+TEST(SiemensFrames, FuzzedFramesAreReadOrRefused) {
+  const std::string seed =
+      "G17 G0 X0 Y0 Z10\nTRANS X10 Y5\nAROT RPL=30\nG1 F100 X10 Y0\nATRANS X1\nSCALE X2 Y2\nG1 X5 Y5\n"
+      "G2 X10 Y0 I0 J-5\nMIRROR X0\nG1 X5 Y0\nG3 X5 Y10 CR=5\nROT Y-90\nG1 X100 Z20\nROT\n"
+      "CYCLE800(1,\"TC\",0,57,0,0,5,10,30,45,0,0,1,1)\n"
+      "G0 X0 Y0 Z20\nCIP X10 Y10 Z0 I1=5 J1=8 K1=3\nCYCLE800()\nG0 X0\n";
+  ReaderOptions options = siemens();
+  ASSERT_GT(readProgram(seed, options).size(), 8u);
+  const auto mutants = hsm::test::readMutants(seed, "TRANSROTCYLEMIP()XYZIJK0123456789.-,=\n ", options, 48);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
+}
