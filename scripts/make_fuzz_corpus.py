@@ -42,6 +42,15 @@ def gcode_seeds():
                           "G91 G1 X1 Y1\nG90 G61 G1 X5\nG4 P0.5\nM30\n",
         "siemens": "CYCLE832(0.01,_ORI_FINISH,1)\nG642 SOFT\nG0 X0 Y0 Z10\nG1 Z0 F2000\nG2 X20 Y0 CR=10\n"
                    "TRANS X5\nG1 X30\nBRISK G60 G1 Y10\nM30\n",
+        "siemens_flow": "DEF INT I\nR1=0\nMARK: R1=R1+1\nG1 F100 X=R1\nIF R1<3 GOTOB MARK\nIF R1==3\nG1 Y1\nELSE\n"
+                        "G1 Y2\nENDIF\nFOR I=1 TO 2\nG1 Z=I\nENDFOR\nWHILE R1>0\nR1=R1-1\nENDWHILE\nREPEAT\n"
+                        "R1=R1+1\nUNTIL R1>2\nROW: G91 X1\nG90\nREPEAT ROW P=2\nLOOP\nGOTOF OUT\nENDLOOP\n"
+                        "OUT: G1 X0\nMISSING_SUB(1, 2)\nM30\n",
+        "siemens_frames": "G17 G0 X0 Y0 Z10\nTRANS X10 Y5\nAROT RPL=30\nG1 F100 X10 Y0\nATRANS X1\nSCALE X2 Y2\n"
+                          "G1 X5 Y5\nG2 X10 Y0 I0 J-5\nMIRROR X0\nG1 X5 Y0\nG3 X5 Y10 CR=5\nROT Y-90\n"
+                          "G1 X100 Z20\nROT\nCYCLE800(1,\"TC\",0,57,0,0,5,10,30,45,0,0,1,1)\nG0 X0 Y0 Z20\n"
+                          "CIP X10 Y10 Z0 I1=5 J1=8 K1=3\nCYCLE800()\nMCALL CYCLE83(10, 0, 1, -10, , , 4, 1, 0, 0, 1, 1)\n"
+                          "G0 X20\nMCALL\nM30\n",
         "exponent": "G1 X1e400 F100\n",
         "nan": "G1 X0 F100\nG1 Y nan\nG1 X5\n",
         "inf": "G1 X inf F100\n",
