@@ -18,7 +18,7 @@
 namespace hsm::kinematics::detail {
 
 inline constexpr size_t kMaxKeptLines = 2'000'000;  // lines of a subprogram file, lines searched for a label
-inline constexpr size_t kKeptBehind = 1 << 18;       // the program's lines kept behind the one running
+inline constexpr size_t kKeptBehind = 1 << 15;       // the program's lines kept behind the one running
 inline constexpr size_t kChunkBytes = 1 << 20;
 
 struct KeptLine {
