@@ -41,16 +41,14 @@ KeptFiles::KeptFiles(LineSource& source) : source_(source) {
   files_.back().streaming = true;
 }
 
-KeptLine* KeptFiles::fetch(const LineCursor& at) {
-  KeptFile& file = files_[at.file];
-  if (at.index < file.dropped) return nullptr;
-  while (at.index - file.dropped >= file.lines.size()) {
+KeptLine* KeptFiles::readOn(KeptFile& file, size_t offset) {
+  while (offset >= file.lines.size()) {
     if (!file.streaming) return nullptr;
     std::string_view raw;
     if (!source_.next(raw)) return nullptr;
     file.keep(raw, ++streamed_);
   }
-  return &file.lines[at.index - file.dropped];
+  return &file.lines[offset];
 }
 
 void KeptFiles::letGoBehind(const LineCursor& running) {

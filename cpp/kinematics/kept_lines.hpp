@@ -52,7 +52,21 @@ public:
   // File 0 is the program, read from `source` as needed.
   explicit KeptFiles(LineSource& source);
   // The line at `at`; null past the file's end or for a line let go.
-  KeptLine* fetch(const LineCursor& at);
+  KeptLine* fetch(const LineCursor& at) {
+    KeptFile& file = files_[at.file];
+    if (at.index < file.dropped) return nullptr;
+    const size_t offset = at.index - file.dropped;
+    return offset < file.lines.size() ? &file.lines[offset] : readOn(file, offset);
+  }
+  // The program's next line from the source, when every line read so far has been let go or passed: then the
+  // caller keeps it (keep) or passes it (pass: it is let go at once, nothing can come back to it).
+  bool readNext(std::string_view& raw, long& number) {
+    if (!source_.next(raw)) return false;
+    number = ++streamed_;
+    return true;
+  }
+  void keep(std::string_view raw, long number) { files_[0].keep(raw, number); }
+  void pass() { ++files_[0].dropped; }
   // Lets the program's lines go that are more than kKeptBehind behind `running` (a line of the program).
   void letGoBehind(const LineCursor& running);
   // Reads the file at `path` whole as a new file named `name`; its index, or −1 when it cannot be opened.
@@ -63,6 +77,8 @@ public:
   size_t size() const { return files_.size(); }
 
 private:
+  KeptLine* readOn(KeptFile& file, size_t offset);  // the program's lines read from the source up to `offset`
+
   LineSource& source_;
   std::deque<KeptFile> files_;  // a deque: a file (its arena) never moves
   long streamed_ = 0;

@@ -7,6 +7,7 @@
 #include "kinematics/ngc_program.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hsm::kinematics::detail {
@@ -149,11 +150,20 @@ bool endsProgram(std::string_view text) {
 // Whether the statement is address words only (X1.5 Y2 C30 D1 F100): no assignment, name (a variable, a cycle,
 // DEF) or M word (a program's end) to look at.
 bool addressWordsOnly(std::string_view statement) {
-  for (size_t i = 0; i < statement.size(); ++i) {
-    const char c = statement[i];
-    if (c == ';') return true;
-    if (c == '=' || c == '"' || c == 'M' || c == 'm') return false;
-    if (nameStart(c) && i + 1 < statement.size() && nameStart(statement[i + 1])) return false;
+  // Each character's class: 0 other, 1 a letter or '_' (two in a row make a name), 2 what needs a look
+  static const auto kClass = [] {
+    std::array<unsigned char, 256> table{};
+    for (int c = 0; c < 256; ++c) table[static_cast<size_t>(c)] = nameStart(static_cast<char>(c)) ? 1 : 0;
+    for (unsigned char c : {'=', '"', 'M', 'm'}) table[c] = 2;
+    table[static_cast<unsigned char>(';')] = 3;
+    return table;
+  }();
+  unsigned char previous = 0;
+  for (const char c : statement) {
+    const unsigned char k = kClass[static_cast<unsigned char>(c)];
+    if (k >= 2) return k == 3;
+    if (k & previous) return false;
+    previous = k;
   }
   return true;
 }
@@ -728,7 +738,46 @@ std::string_view SiemensProgram::computedCycleArguments(std::string_view stateme
   return cycleCall_;
 }
 
+bool SiemensProgram::streamed(std::string_view& line, long& number) {
+  for (;;) {
+    std::string_view raw;
+    long n = 0;
+    if (!files_.readNext(raw, n)) {
+      ended_ = true;
+      return false;
+    }
+    const Body b = body(raw);
+    if (b.sequence >= 0 || !b.label.empty() || flowOrCall(b.statement)) {
+      keeping_ = true;  // a line a jump, a loop or a repeat may come back to: from here on the lines are kept
+      files_.keep(raw, n);
+      return false;
+    }
+    files_.pass();
+    ++cursor_.index;
+    if (!addressWordsOnly(b.statement)) {
+      line = variables_.substitute(computedCycleArguments(b.statement, n), n, rewritten_);
+      if (endsProgram(line)) ended_ = true;  // after this line
+    } else {
+      line = b.statement;
+    }
+    number = n;
+    return true;
+  }
+}
+
+bool SiemensProgram::flowOrCall(std::string_view statement) const {
+  const std::string keyword = keywordOf(statement);
+  if (keyword.empty() || keyword == "DEF"sv || isSiemensKeyword(keyword) || variables_.isVariable(keyword)) return false;
+  const char* p = statement.data() + keyword.size();
+  const char* end = statement.data() + statement.size();
+  skipBlanks(p, end);
+  return p >= end || *p != '=';  // NAME=…: an assignment
+}
+
 bool SiemensProgram::next(std::string_view& line, long& number) {
+  // Until a line with a label, a block number or a statement, nothing can come back to a line: they stream
+  // through without being kept (a CAM program, most often).
+  if (!keeping_ && !ended_ && streamed(line, number)) return true;
   for (;;) {
     if (ended_) return false;
     if (leaveAfter_) {
@@ -742,9 +791,11 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
       if (files_[0].dropped != dropped) {  // what the caches say of the lines let go is no longer true
         jumps_.clear();
         closings_.clear();
-        compiled_.clear();
-        for (size_t f = 0; f < files_.size(); ++f)
-          for (KeptLine& kept : files_[f].lines) kept.compiled = -1;
+        if (!compiled_.empty()) {
+          compiled_.clear();
+          for (size_t f = 0; f < files_.size(); ++f)
+            for (KeptLine& kept : files_[f].lines) kept.compiled = -1;
+        }
       }
     }
     KeptLine* stored = files_.fetch(cursor_);

@@ -71,6 +71,12 @@ TEST(SiemensLanguage, LabelsAndJumps) {
       siemens());
   EXPECT_EQ(ends(blocks), (Points{{10, 0, 0}, {20, 0, 0}, {30, 0, 0}, {30, 5, 0}, {30, 6, 0}, {30, 7, 0},
                                   {30, 7, 9}, {30, 7, 6}, {30, 7, 3}, {30, 7, 0}, {2, 7, 0}, {1, 7, 0}}));
+  // Lines stream through until one a jump may come back to (a block number, a label, a statement): the jump
+  // back to the block number, or to the first label, finds its line
+  const auto numbered = readProgram("G1 F100 X1\nG1 X2\nN30 G1 X3\nG1 X4\nR2=R2+1\nIF R2<2 GOTOB N30\n", siemens());
+  EXPECT_EQ(ends(numbered), (Points{{1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {3, 0, 0}, {4, 0, 0}}));
+  const auto late = readProgram("R1=0\nG1 F100 X1\nAGAIN: R1=R1+1\nG1 Y=R1\nIF R1<2 GOTOB AGAIN\nM30\nG1 X9\n", siemens());
+  EXPECT_EQ(ends(late), (Points{{1, 0, 0}, {1, 1, 0}, {1, 2, 0}}));
   EXPECT_EQ(errorOf("G1 F100 X1\nGOTOF NOPE\nNOPE_NOT: X2\n", siemens()).rfind("line 2: label NOPE is not after this line", 0), 0u);
   EXPECT_EQ(errorOf("BACK: G1 F100 X1\nGOTOB ELSEWHERE\n", siemens()).rfind("line 2: label ELSEWHERE is not before", 0), 0u);
   EXPECT_EQ(errorOf("GOTOF\n", siemens()).rfind("line 1: GOTOF needs the label", 0), 0u);
