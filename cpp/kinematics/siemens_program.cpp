@@ -738,31 +738,48 @@ std::string_view SiemensProgram::computedCycleArguments(std::string_view stateme
   return cycleCall_;
 }
 
-bool SiemensProgram::streamed(std::string_view& line, long& number) {
-  for (;;) {
-    std::string_view raw;
-    long n = 0;
-    if (!files_.readNext(raw, n)) {
-      ended_ = true;
-      return false;
-    }
-    const Body b = body(raw);
-    if (b.sequence >= 0 || !b.label.empty() || flowOrCall(b.statement)) {
-      keeping_ = true;  // a line a jump, a loop or a repeat may come back to: from here on the lines are kept
-      files_.keep(raw, n);
-      return false;
-    }
-    files_.pass();
-    ++cursor_.index;
-    if (!addressWordsOnly(b.statement)) {
-      line = variables_.substitute(computedCycleArguments(b.statement, n), n, rewritten_);
-      if (endsProgram(line)) ended_ = true;  // after this line
-    } else {
-      line = b.statement;
-    }
-    number = n;
-    return true;
+bool SiemensProgram::straight(std::string_view& line, long& number) {
+  std::string_view raw;
+  long n = 0;
+  if (!files_.readNext(raw, n)) {
+    ended_ = true;
+    return false;
   }
+  const Body b = body(raw);
+  std::string_view statement = b.statement;  // the end of the line: the same end of its kept copy
+  const bool flow = flowOrCall(statement);
+  const bool kept = keeping_ || flow || b.sequence >= 0 || !b.label.empty();
+  if (kept) {
+    keeping_ = true;  // a line a jump, a loop or a repeat may come back to: from here on the lines are kept
+    files_.keep(raw, n);
+    const std::string_view copy = files_[0].lines.back().text;
+    statement = copy.substr(copy.size() - statement.size());
+  } else {
+    files_.pass();
+  }
+  if (flow) return false;  // the flow's, kept: the general path runs it
+  ++cursor_.index;
+  if (kept) letGo();
+  if (!addressWordsOnly(statement)) {
+    line = variables_.substitute(computedCycleArguments(statement, n), n, rewritten_);
+    if (endsProgram(line)) ended_ = true;  // after this line
+  } else {
+    line = statement;
+  }
+  number = n;
+  return true;
+}
+
+void SiemensProgram::letGo() {
+  const size_t dropped = files_[0].dropped;
+  files_.letGoBehind(cursor_);
+  if (files_[0].dropped == dropped) return;
+  jumps_.clear();  // what the caches say of the lines let go is no longer true
+  closings_.clear();
+  if (compiled_.empty()) return;
+  compiled_.clear();
+  for (size_t f = 0; f < files_.size(); ++f)
+    for (KeptLine& kept : files_[f].lines) kept.compiled = -1;
 }
 
 bool SiemensProgram::flowOrCall(std::string_view statement) const {
@@ -775,29 +792,21 @@ bool SiemensProgram::flowOrCall(std::string_view statement) const {
 }
 
 bool SiemensProgram::next(std::string_view& line, long& number) {
-  // Until a line with a label, a block number or a statement, nothing can come back to a line: they stream
-  // through without being kept (a CAM program, most often).
-  if (!keeping_ && !ended_ && streamed(line, number)) return true;
   for (;;) {
+    // The program read straight through (no loop, call or repeat running): the next line from the source,
+    // unless the flow has a statement in it. Until a line with a label, a block number or a statement,
+    // nothing can come back to a line: those lines are not even kept (a CAM program, most often).
+    if (!ended_ && !leaveAfter_ && frames_.size() == 1 && frames_[0].structures.empty() && cursor_.file == 0 &&
+        cursor_.index == files_[0].dropped + files_[0].lines.size()) {
+      if (straight(line, number)) return true;
+    }
     if (ended_) return false;
     if (leaveAfter_) {
       leaveAfter_ = false;
       leave();
     }
     if (endOfSection()) continue;
-    if (frames_.size() == 1 && frames_[0].structures.empty()) {
-      const size_t dropped = files_[0].dropped;
-      files_.letGoBehind(cursor_);
-      if (files_[0].dropped != dropped) {  // what the caches say of the lines let go is no longer true
-        jumps_.clear();
-        closings_.clear();
-        if (!compiled_.empty()) {
-          compiled_.clear();
-          for (size_t f = 0; f < files_.size(); ++f)
-            for (KeptLine& kept : files_[f].lines) kept.compiled = -1;
-        }
-      }
-    }
+    if (frames_.size() == 1 && frames_[0].structures.empty()) letGo();
     KeptLine* stored = files_.fetch(cursor_);
     if (stored == nullptr) {
       if (frames_.size() > 1) {  // a subprogram file that ends without RET or M17: back to the caller

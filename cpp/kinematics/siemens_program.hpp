@@ -110,8 +110,11 @@ private:
   std::map<std::pair<size_t, size_t>, long> jumpsBack_;  // jumps back to a line, for the loop bound
   LineCursor cursor_;
   long flowLines_ = 0;
-  // The program's next line while no line is kept (keeping_ false): false once a line is to be kept, or at the end.
-  bool streamed(std::string_view& line, long& number);
+  // The program's next line read straight from the source; false for a line the flow runs (kept, at cursor_) or
+  // at the end.
+  bool straight(std::string_view& line, long& number);
+  // Lets the program's lines go that no jump can come back to any more (and what the caches said of them).
+  void letGo();
   // Whether the statement is one of the flow's (a jump, a loop, a call…): the lines from it on are kept.
   bool flowOrCall(std::string_view statement) const;
   bool keeping_ = false;
