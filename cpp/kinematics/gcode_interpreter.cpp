@@ -16,7 +16,8 @@ namespace {
 // The 840D instructions the reader knows: read (keyword()), accepted without effect on the motion model, or named
 // as motion it cannot see (transformations and frames it does not model).
 constexpr std::string_view kSiemensKeywords[] = {
-    "SOFT", "BRISK", "CR", "CIP", "I1", "J1", "K1", "ADIS", "ADISPOS", "T", "MSG", "CYCLE832", "CYCLE800", "CYCLE81", "CYCLE82", "CYCLE83",
+    "SOFT", "BRISK", "CR", "CIP", "I1", "J1", "K1", "ICX", "ICY", "ICZ", "ICA", "ICB", "ICC", "ACX", "ACY", "ACZ",
+    "ACA", "ACB", "ACC", "ADIS", "ADISPOS", "T", "MSG", "CYCLE832", "CYCLE800", "CYCLE81", "CYCLE82", "CYCLE83",
     "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "MCALL", "SUPA", "FNORM", "SETMS", "SBLOF",
     "SBLON", "A3", "B3", "C3", "TRAORI", "TRAFOOF", "ORIMKS", "ORIAXES", "ORIWKS", "ORIVECT", "COMPCAD", "COMPCURV",
     "COMPSURF", "COMPOF", "COMPON", "FFWON", "FFWOF", "UPATH", "SPATH", "DYNNORM", "DYNFINISH", "DYNSEMIFIN",
@@ -196,8 +197,10 @@ void Interpreter::applyModes(const LineWords& w) {
   const bool feedBeforeUnits = options_.conventions.dialect == Dialect::LinuxCnc ||
                                options_.conventions.dialect == Dialect::Grbl;
   if (w.units > 0.0 && !feedBeforeUnits) unit_ = w.units;
+  if (w.feedUnits > 0.0 && !feedBeforeUnits) feedUnit_ = w.feedUnits;
   applyFeed(w);
   if (w.units > 0.0) unit_ = w.units;
+  if (w.feedUnits > 0.0) feedUnit_ = w.feedUnits;
   applyOtherModes(w);
 }
 
@@ -209,7 +212,7 @@ void Interpreter::applyFeed(const LineWords& w) {
       throw ParseError(lineNumber_, "feed rate F" + std::to_string(w.fWord) + " must be positive (or 0 on a rapid)");
     // G93: F is the inverse of the block's time in minutes, given on every feed move.
     if (!inverseTime_) {
-      feed_ = options_.feedInMmPerSecond ? w.fWord * unit_ : w.fWord * unit_ / 60.0;
+      feed_ = options_.feedInMmPerSecond ? w.fWord * feedUnit_ : w.fWord * feedUnit_ / 60.0;
       zeroFeedLine_ = w.fWord == 0.0 ? lineNumber_ : 0;
     }
   }
@@ -277,17 +280,19 @@ bool Interpreter::makeBlock(const LineWords& w, Block& block) {
   Eigen::Vector3d target = position_;
   if (w.machineCoordinates) {  // G53, SUPA: absolute machine coordinates, this line only
     target = machineTarget(w);
-  } else if (absolute_) {
-    const Eigen::Vector3d origin = frame();
-    for (int a = 0; a < 3; ++a)
-      if (w.hasAxis[a]) target[a] = w.axis[a] * unit_ + origin[a];
   } else {
-    for (int a = 0; a < 3; ++a)
-      if (w.hasAxis[a]) target[a] = position_[a] + w.axis[a] * unit_;
+    const Eigen::Vector3d origin = frame();
+    for (int a = 0; a < 3; ++a) {
+      if (!w.hasAxis[a]) continue;
+      const bool absolute = w.axisMode[a] == 0 ? absolute_ : w.axisMode[a] == 1;
+      target[a] = absolute ? w.axis[a] * unit_ + origin[a] : position_[a] + w.axis[a] * unit_;
+    }
   }
   Eigen::Vector3d rotaryTarget = rotary_;
   for (int a = 0; a < 3; ++a)
-    if (w.hasRotary[a]) rotaryTarget[a] = absolute_ ? w.rotary[a] : rotary_[a] + w.rotary[a];
+    if (w.hasRotary[a])
+      rotaryTarget[a] = (w.axisMode[3 + a] == 0 ? absolute_ : w.axisMode[3 + a] == 1) ? w.rotary[a]
+                                                                                      : rotary_[a] + w.rotary[a];
   const Eigen::Vector3d orientationTarget = w.anyVector() ? this->orientationTarget(w) : orientation_;
   if (w.anyVector() && w.anyRotary())
     throw ParseError(lineNumber_, "rotary axes and an orientation vector on one line: give the orientation one way");
@@ -615,8 +620,14 @@ void Interpreter::gWord(const Word& w, LineWords& words) {
     case 40: words.dwell = true; break;
     case 90: words.exactStopHere = true; break;
     case 170: case 180: case 190: plane_ = int(code / 10); break;
-    case 200: case 700: case 7000: words.units = 25.4; break;  // G20; 840D G70/G700
-    case 210: case 710: case 7100: words.units = 1.0; break;   // G21; 840D G71/G710
+    // G20 / G21; the 840D's G700 / G710 (lengths and feeds) and G70 / G71 (lengths only: F stays in the basic
+    // system, Programming Manual Fundamentals, "Inch or metric dimensions")
+    case 200: case 7000: words.units = words.feedUnits = 25.4; break;
+    case 210: case 7100: words.units = words.feedUnits = 1.0; break;
+    case 700: case 710:
+      words.units = code == 700 ? 25.4 : 1.0;
+      if (options_.conventions.dialect != Dialect::Siemens840D) words.feedUnits = words.units;
+      break;
     case 900: absolute_ = true; break;
     case 910: absolute_ = false; break;
     case 901: arcCentreAbsolute_ = true; break;
@@ -698,6 +709,18 @@ void Interpreter::keyword(const Keyword& k, LineWords& words) {
     words.siemensArguments = k.arguments;
   } else if (name == "CYCLE800" && k.call) {
     cycle800(std::string(k.arguments));
+  } else if (name.size() == 3 && (name.substr(0, 2) == "IC" || name.substr(0, 2) == "AC") && k.hasValue &&
+             std::string_view("XYZABC").find(name[2]) != std::string_view::npos) {
+    // X=IC(…), X=AC(…), rewritten by the 840D's language as ICX=…, ACX=…
+    const size_t axis = std::string_view("XYZABC").find(name[2]);
+    words.axisMode[axis] = name[0] == 'A' ? 1 : 2;
+    if (axis < 3) {
+      if (words.hasAxis[axis]) throw ParseError(lineNumber_, std::string("axis ") + name[2] + " given twice");
+      words.hasAxis[axis] = true;
+      words.axis[axis] = k.value;
+    } else {
+      rotaryWord(static_cast<int>(axis - 3), k.value, name.substr(2), words);
+    }
   } else if (name == "CIP") {
     words.newMotion = 4;
   } else if ((name == "I1" || name == "J1" || name == "K1") && k.hasValue) {

@@ -33,6 +33,7 @@ struct LineWords {
   int home = 0;        // 28 or 30: back to the reference point through the line's point
   bool machineCoordinates = false;  // G53: the line's coordinates are the machine's
   double units = 0.0;  // mm per program unit that G20/G21 (840D G70/G71…) set, applied in the control's order
+  double feedUnits = 0.0;  // the same for F: G20/G21, the 840D's G700/G710 (its G70/G71 leave F as it is)
   int siemensCycle = 0;             // 81…89: the line calls CYCLE81…CYCLE89 (with `siemensArguments`)
   std::string_view siemensArguments;
   bool mcall = false;               // 840D MCALL: the line's cycle is called after each move that follows
@@ -41,6 +42,9 @@ struct LineWords {
   bool cancelCycle = false;  // G80
   bool exactStopHere = false, dwell = false, g64 = false, rigidTap = false;
   bool hasAxis[3] = {false, false, false}, hasOffset[3] = {false, false, false};
+  // The 840D's X=IC(…) / X=AC(…): this axis incremental (2) or absolute (1) on this block, whatever G90/G91 say;
+  // X Y Z then A B C.
+  signed char axisMode[6] = {0, 0, 0, 0, 0, 0};
   double axis[3] = {0, 0, 0}, offset[3] = {0, 0, 0};
   double kCount = 0.0;  // K as written (a Fanuc cycle's repeats), without least-increment scaling
   double radiusWord = 0.0, pWord = -1.0, fWord = 0.0, qWord = 0.0, eWord = 0.0, lWord = 0.0;
@@ -163,7 +167,8 @@ private:
   int plane_ = 17;
   bool absolute_ = true;
   bool arcCentreAbsolute_ = false;
-  double unit_ = 1.0;  // mm per program unit
+  double unit_ = 1.0;      // mm per program unit of lengths
+  double feedUnit_ = 1.0;  // mm per program unit of F (the 840D's basic system under G70/G71)
   double feed_ = 0.0;  // mm/s
   double spindle_ = 0.0;  // rev/min, from S
   long zeroFeedLine_ = 0;  // the line that set F0 (legal until a feed move: CAM writes it on rapids)

@@ -197,7 +197,7 @@ private:
                                      {"ACOS", Op::Acos}, {"SQRT", Op::Sqrt}, {"POT", Op::Pot},     {"ABS", Op::Abs},
                                      {"TRUNC", Op::Trunc}, {"ROUND", Op::Round}};
     static constexpr Known kTwo[] = {{"ATAN2", Op::Atan2}, {"MINVAL", Op::MinValue}, {"MAXVAL", Op::MaxValue}};
-    if (name == "IC") fail("IC(): an incremental value on one axis is not read yet; program it in G91 or absolute");
+    if (name == "IC") fail("IC() gives one axis an incremental value (X=IC(5)): it is not a value of an expression");
     sum(p, end);
     blanks(p, end);
     for (const Known& k : kTwo) {

@@ -217,7 +217,18 @@ void SiemensVariables::compile(std::string_view raw, long line, SiemensLine& out
     SiemensLine::Piece piece;
     piece.kind = isVariable(name) ? SiemensLine::Piece::Assign : SiemensLine::Piece::Address;
     piece.text = name;
-    compileSiemensExpression(p, end, line, piece.value);
+    const bool axis = name.size() == 1 && std::string_view("XYZABC").find(name[0]) != std::string_view::npos;
+    if (axis && p + 2 < end && (upper(p[0]) == 'I' || upper(p[0]) == 'A') && upper(p[1]) == 'C' && p[2] == '(') {
+      // X=IC(…) / X=AC(…): this axis incremental / absolute on this block (the word ICX= / ACX= for the lexer)
+      piece.text = std::string(1, upper(p[0])) + "C" + name;
+      p += 3;
+      compileSiemensExpression(p, end, line, piece.value);
+      blanks(p, end);
+      if (p >= end || *p != ')') throw ParseError(line, name + "=" + piece.text.substr(0, 2) + "(: ')' is missing");
+      ++p;
+    } else {
+      compileSiemensExpression(p, end, line, piece.value);
+    }
     out.pieces.push_back(std::move(piece));
   }
 }

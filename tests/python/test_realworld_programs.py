@@ -13,6 +13,9 @@ from saved_documents import SHARED_DATA
 CORPUS = os.path.join(SHARED_DATA, "realworld_gcode")
 
 INCH_START = "linuxcnc-2.9 in G20"  # an inch LinuxCNC: its interpreter starts in G20, as the oracle's does
+# the Cincinnati's 840D keeps inches as its basic system (NX's programs say G70, lengths in inches, and F9.8 in/min:
+# on a metric 840D, G70 leaves F in mm/min): the A/C Mikron's figures, started in G700
+INCH_840D = "mikron-ucp710-ac-840d in G700"
 
 # program, machine, and None (simulated) or the start of the refusal. The machine is the preset closest to the one
 # the program was posted for; where none fits, the refusal says which limit of ours or of the program stops it.
@@ -46,8 +49,8 @@ PROGRAMS = [
     ("840d/cam_test_fusion_ac_3plus2.mpf", "mikron-ucp710-ac-840d", None),
     # TRAOOF (NX's post for this Cincinnati, maybe the maker's own cycle) is no 840D instruction: the control
     # would look for a subprogram of that name, so does the reader (see Siemens840dPrograms below)
-    ("840d/cincinnati_ftv5_varcontour.mpf", "mikron-ucp710-ac-840d", "line 13: subprogram TRAOOF is not found"),
-    ("840d/cincinnati_ftv5_nx_traori.mpf", "mikron-ucp710-ac-840d", "line 362: subprogram TRAOOF is not found"),
+    ("840d/cincinnati_ftv5_varcontour.mpf", INCH_840D, "line 13: subprogram TRAOOF is not found"),
+    ("840d/cincinnati_ftv5_nx_traori.mpf", INCH_840D, "line 362: subprogram TRAOOF is not found"),
     ("840d/brys_oporniy_hand.mpf", "mikron-ucp710-840d", "line 13: subprogram L140 is not found"),
     ("840d/cycle_konus_sub.spf", "mikron-ucp710-840d", "line 21: this is subprogram CYCLE_KONUS, whose parameters"),
     ("heidenhain/dmc100_tnc_m128_5axis.h", "mikron-ucp710-840d", "line 1: this is a Heidenhain conversational"),
@@ -58,10 +61,10 @@ PROGRAMS = [
 def machine_of(name):
     """A preset's name, or for INCH_START the linuxcnc-2.9 preset starting in G20 (LinuxCNC reads a line's F
     before its G20: `G20 F6` is 6 mm/min on a machine that starts in mm, 6 in/min on one that starts in inches)."""
-    if name != INCH_START:
+    if name not in (INCH_START, INCH_840D):
         return name
-    machine = hsmplanner.load_machine("linuxcnc-2.9")
-    machine.power_on_codes = "G20"
+    machine = hsmplanner.load_machine(name.split(" ")[0])
+    machine.power_on_codes = "G20" if name == INCH_START else "G700"
     return machine
 
 
@@ -146,7 +149,7 @@ class Siemens840dPrograms(unittest.TestCase):
 
     def test_the_nx_programs_run_with_their_unknown_call_skipped_and_named(self):
         for name in ("cincinnati_ftv5_varcontour.mpf", "cincinnati_ftv5_nx_traori.mpf"):
-            summary = hsmplanner.simulate(os.path.join(CORPUS, "840d", name), "mikron-ucp710-ac-840d",
+            summary = hsmplanner.simulate(os.path.join(CORPUS, "840d", name), machine_of(INCH_840D),
                                           skip_unknown=True).summary
             self.assertIn("TRAOOF", summary.unknown_word_counts, name)
             self.assertGreater(summary.total_time, summary.naive_time * 0.9, name)

@@ -42,7 +42,7 @@ TEST(Gcode, InchesAndFreeCadFeedsInMmPerSecond) {
   EXPECT_DOUBLE_EQ(sameLine[0].feed, 10.0 / 60.0);
   ReaderOptions siemens;
   siemens.conventions.dialect = Dialect::Siemens840D;
-  EXPECT_DOUBLE_EQ(readProgram("G70 G1 X1 F10\n", siemens)[0].feed, 254.0 / 60.0);
+  EXPECT_DOUBLE_EQ(readProgram("G700 G1 X1 F10\n", siemens)[0].feed, 254.0 / 60.0);  // G70: F unchanged
   ReaderOptions path;
   path.feedInMmPerSecond = true;
   EXPECT_DOUBLE_EQ(readProgram("G1 X1 F10\n", path)[0].feed, 10.0);
@@ -383,7 +383,13 @@ TEST(SiemensVariables, ParametersVariablesAndAssignments) {
   EXPECT_EQ(errorOf("DEF LONG X1\n", siemens).rfind("line 1: DEF LONG: the types read are REAL", 0), 0u);
   EXPECT_EQ(errorOf("R1=1E9\n", siemens).rfind("line 1: a number with an exponent", 0), 0u);
   EXPECT_EQ(errorOf("R9999=1\n", siemens).rfind("line 1: R9999 is not an R parameter: they are R0 to R999", 0), 0u);
-  EXPECT_EQ(errorOf("G1 X=IC(5) F100\n", siemens).rfind("line 1: IC(): an incremental value", 0), 0u);
+  // X=IC(…) / X=AC(…): that axis incremental / absolute on this block, whatever G90 / G91 say
+  const auto perAxis = readProgram("G90 G1 X10 F100\nX=IC(5) Y=AC(3)\nG91\nX=AC(1) Z=IC(R1+2) A=AC(30)\n", siemens);
+  ASSERT_EQ(perAxis.size(), 3u);
+  EXPECT_EQ(perAxis[1].end, Eigen::Vector3d(15, 3, 0));
+  EXPECT_EQ(perAxis[2].end, Eigen::Vector3d(1, 3, 2));
+  EXPECT_DOUBLE_EQ(perAxis[2].rotaryEnd.x(), 30.0);
+  EXPECT_EQ(errorOf("R1=IC(5)\n", siemens).rfind("line 1: IC() gives one axis an incremental value", 0), 0u);
 }
 
 // Mutations of a program in the 840D's variables, cycles and frames are read or refused with an InputError.

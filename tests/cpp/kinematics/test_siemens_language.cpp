@@ -349,3 +349,22 @@ TEST(SiemensFrames, FuzzedFramesAreReadOrRefused) {
   EXPECT_GT(mutants.read, 100);
   EXPECT_GT(mutants.refused, 100);
 }
+
+// Fundamentals, "Inch or metric dimensions": G70 / G71 change the unit of lengths only, F stays in the basic
+// system (metric here; an inch machine starts in G700); G700 / G710 change both. Elsewhere G20 / G21 change both.
+TEST(SiemensLanguage, InchLengthsAndTheBasicSystemsFeed) {
+  const auto lengths = readProgram("G70 G1 X1 F100\nG700 X2 F100\nG71 X10 F100\nG710 X20 F100\n", siemens());
+  ASSERT_EQ(lengths.size(), 4u);
+  EXPECT_DOUBLE_EQ(lengths[0].end.x(), 25.4);
+  EXPECT_DOUBLE_EQ(lengths[0].feed, 100.0 / 60.0);         // G70: F100 mm/min
+  EXPECT_DOUBLE_EQ(lengths[1].feed, 100.0 * 25.4 / 60.0);  // G700: F100 inch/min
+  EXPECT_DOUBLE_EQ(lengths[2].end.x(), 10.0);
+  EXPECT_DOUBLE_EQ(lengths[2].feed, 100.0 * 25.4 / 60.0);  // G71 after G700: F still in inches
+  EXPECT_DOUBLE_EQ(lengths[3].feed, 100.0 / 60.0);
+  ReaderOptions inchMachine = siemens();
+  inchMachine.conventions.powerOnCodes = "G700";
+  const auto inch = readProgram("G70 G1 X1 F10\n", inchMachine);
+  EXPECT_DOUBLE_EQ(inch[0].feed, 10.0 * 25.4 / 60.0);
+  ReaderOptions linuxcnc;
+  EXPECT_DOUBLE_EQ(readProgram("G20\nG1 X1 F10\n", linuxcnc)[0].feed, 10.0 * 25.4 / 60.0);
+}
