@@ -154,6 +154,23 @@ class Siemens840dPrograms(unittest.TestCase):
             self.assertIn("TRAOOF", summary.unknown_word_counts, name)
             self.assertGreater(summary.total_time, summary.naive_time * 0.9, name)
 
+    def test_a_swivel_turns_the_table_before_the_planes_moves(self):
+        """CYCLE800 axis by axis, 30 deg about Y, on the A/C trunnion: the table tilts A 30 deg and turns C 90 deg
+        (the tool along the plane's Z) with X Y Z standing, at C's rapid (7200 deg/min: 0.75 s at least); then the
+        plane's points are the tool tip on the part."""
+        program = ("G17 G90 G0 X10 Y0 Z50\nCYCLE800(1,\"TC1\",0,57,0,0,0,0,30,0,0,0,0,1)\nG0 X0 Y0 Z20\n"
+                   "G1 F1000 X10\nCYCLE800()\nG0 X0\n")
+        blocks = hsmplanner.simulate(program, "mikron-ucp710-ac-840d", blocks=True).blocks
+        swivel = list(blocks["line"]).index(2)
+        self.assertAlmostEqual(abs(blocks["rotary_end"][swivel][0]), 30.0, places=6)
+        self.assertAlmostEqual(abs(blocks["rotary_end"][swivel][1]), 90.0, places=6)
+        self.assertGreaterEqual(blocks["time"][swivel], 0.75)
+        for axis in range(3):
+            self.assertAlmostEqual(blocks["machine_start"][swivel][axis], blocks["machine_end"][swivel][axis])
+        tip = blocks["end"][swivel + 1]
+        for got, want in zip(tip, (10.0, 0.0, 20.0 * math.cos(math.radians(30)))):
+            self.assertAlmostEqual(got, want, places=6)
+
     def test_a_subroutine_folder_that_is_not_one_is_refused(self):
         with self.assertRaises(ValueError) as raised:
             hsmplanner.simulate("G1 X1 F100\n", "mikron-ucp710-840d", subroutine_folders=["/no/such/folder"])
