@@ -167,7 +167,10 @@ void Interpreter::cycle800(const std::string& arguments) {
     return;
   }
   const long mode = std::lround(value(3));
-  if (mode < 0 || mode > 255 || (mode >> 6) != 0)
+  if (!(value(3) >= 0.0 && value(3) <= 255.0 && value(3) == std::floor(value(3))))
+    throw ParseError(lineNumber_, "CYCLE800 _MODE " + number(value(3)) + " is not a swivel mode: a whole number from 0 "
+                                  "to 255 (57: axis by axis, X then Y then Z)");
+  if ((mode >> 6) != 0)
     return unknownMotion("CYCLE800", "a swivel in solid angles, projection angles or rotary axis positions (read: "
                                      "axis by axis, _MODE below 64)");
   Eigen::Matrix3d turned = Eigen::Matrix3d::Identity();

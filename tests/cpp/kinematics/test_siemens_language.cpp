@@ -304,6 +304,8 @@ TEST(SiemensFrames, Cycle800SwivelsTheToolAndThePlane) {
   EXPECT_TRUE(blocks[7].end.isApprox(Eigen::Vector3d(100 - 10 * s, 5, 10 * c), 1e-12)) << blocks[7].end.transpose();
   EXPECT_EQ(errorOf("CYCLE800(1,\"TC1\",0,192,0,0,0,0,30,0,0,0,0,1)\n", siemens())
                 .rfind("line 1: 'CYCLE800' (a swivel in solid angles", 0), 0u);
+  EXPECT_EQ(errorOf("CYCLE800(1,\"TC1\",0,300,0,0,0,0,30,0,0,0,0,1)\n", siemens())
+                .rfind("line 1: CYCLE800 _MODE 300 is not a swivel mode", 0), 0u);
 }
 
 // Fundamentals, "Circular interpolation with intermediate and end points (CIP)": the arc through three points in
