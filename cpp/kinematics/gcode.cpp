@@ -123,13 +123,24 @@ struct GcodeReader::Impl {
     while (nextLine(raw, number)) {
       if (number <= detail::kDialectLines) detail::refuseOtherLanguages(raw, number);
       ++interpreter.stats().lines;
-      line.parse(raw, number);
-      if (line.wordCount == 0 && line.keywords.empty()) continue;
-      const bool moved = interpreter.interpret(line, number, block);
+      bool moved = false;
+      try {
+        line.parse(raw, number);
+        if (line.wordCount == 0 && line.keywords.empty()) continue;
+        moved = interpreter.interpret(line, number, block);
+      } catch (const ParseError& error) {
+        const std::string file = subprogramFile();
+        if (file.empty()) throw;
+        throw ParseError(error.line(), error.message() + " (in " + file + ")");  // a line of a subprogram file
+      }
       if (macro) interpreter.positions(positions);
       if (moved) return true;
     }
     return false;
+  }
+
+  std::string subprogramFile() const {
+    return ngc ? ngc->lastFileName() : macro ? macro->lastFileName() : siemens ? siemens->lastFileName() : "";
   }
 };
 

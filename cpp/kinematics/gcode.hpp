@@ -36,11 +36,13 @@ std::string printable(std::string_view text);
 class ParseError : public InputError {
 public:
   ParseError(long line, const std::string& message)
-      : InputError("line " + std::to_string(line) + ": " + printable(message)), line_(line) {}
+      : InputError("line " + std::to_string(line) + ": " + printable(message)), line_(line), message_(message) {}
   long line() const { return line_; }
+  const std::string& message() const { return message_; }  // without "line N: "
 
 private:
   long line_;
+  std::string message_;
 };
 
 inline constexpr size_t kMaxLineLength = 1 << 16;  // characters

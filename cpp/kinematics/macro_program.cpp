@@ -366,12 +366,14 @@ bool MacroProgram::next(std::string_view& line, long& number) {
         if (rest_.empty()) continue;
         line = rest_;
         number = n;
+        lastFile_ = here.file;
         return true;
       }
       if (ends && frames_.size() == 1) ended_ = true;
     }
     line = text;
     number = n;
+    lastFile_ = here.file;
     return true;
   }
 }

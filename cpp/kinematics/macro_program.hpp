@@ -34,6 +34,8 @@ public:
 
   // The next line to run as plain words, and its line number in its file; false at the end of the program.
   bool next(std::string_view& line, long& number);
+  // The subprogram file the last line given comes from; empty for the program itself.
+  std::string lastFileName() const { return lastFile_ == 0 ? std::string() : files_[lastFile_].name; }
   // Where the tool is (block end in work coordinates, machine, work), for #5001… #5041…: three rows of X Y Z.
   void setPositions(const double (*positions)[3]) { parameters_.setPositions(positions); }
 
@@ -85,6 +87,7 @@ private:
   long pendingLine_ = 0;
   Line words_;
   std::string rewritten_, rest_;
+  size_t lastFile_ = 0;  // the file of the last line given
 };
 
 }  // namespace hsm::kinematics::detail

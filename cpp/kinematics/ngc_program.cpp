@@ -18,13 +18,6 @@ constexpr auto lower = asciiLower;
 
 std::string shown(const std::string& label) { return "o" + label; }
 
-// A ParseError's message without its "line N: ".
-std::string messageOf(const ParseError& error) {
-  const std::string text = error.what();
-  const size_t colon = text.find(": ");
-  return colon == std::string::npos ? text : text.substr(colon + 2);
-}
-
 bool hasKeyword(const std::string& keyword, std::initializer_list<const char*> keywords) {
   return std::any_of(keywords.begin(), keywords.end(), [&](const char* k) { return keyword == k; });
 }
@@ -301,6 +294,7 @@ bool NgcProgram::next(std::string_view& line, long& number) {
       number = ++streamed_;
       if (!parseOWord(raw, o)) {
         line = substituteParameters(raw, number, parameters_, rewritten_);
+        lastFile_ = 0;
         return true;
       }
       if (o.keyword.empty()) continue;  // O1234: a program number (Fanuc style): nothing kept for it
@@ -328,12 +322,13 @@ bool NgcProgram::next(std::string_view& line, long& number) {
       continue;
     }
     number = stored->number;
+    lastFile_ = cursor_.file;
     ++cursor_.index;
     try {
       line = substituteParameters(stored->text, number, parameters_, rewritten_);
     } catch (const ParseError& error) {
       if (files_[cursor_.file].streaming) throw;
-      fail(number, messageOf(error));
+      fail(number, error.message());
     }
     return true;
   }

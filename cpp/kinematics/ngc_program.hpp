@@ -35,6 +35,8 @@ public:
   // The next line to run as plain words, and its line number in its file; false at the end of the program.
   // Throws ParseError naming the line (and the file of a subroutine) for what cannot run.
   bool next(std::string_view& line, long& number);
+  // The subprogram file the last line given comes from; empty for the program itself.
+  std::string lastFileName() const { return lastFile_ == 0 ? std::string() : files_[lastFile_].name; }
 
 private:
   struct OWord {
@@ -99,6 +101,7 @@ private:
   long streamed_ = 0;     // lines read from the source
   long flowLines_ = 0;
   std::string rewritten_;
+  size_t lastFile_ = 0;  // the file of the last line given
 };
 
 }  // namespace hsm::kinematics::detail

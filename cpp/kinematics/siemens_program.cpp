@@ -767,6 +767,7 @@ bool SiemensProgram::straight(std::string_view& line, long& number) {
     line = statement;
   }
   number = n;
+  lastFile_ = 0;
   return true;
 }
 
@@ -829,6 +830,7 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
         // address words only (X1.5 Y2 F100): no variable, cycle, declaration or program end in it
         line = statement;
         number = n;
+        lastFile_ = file;
         return true;
       }
       if (!keyword.empty() && (flowStatement(keyword, statement, n, *stored) || callStatement(keyword, statement, n)))
@@ -844,10 +846,7 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
       }
     } catch (const ParseError& error) {
       if (files_[file].streaming) throw;
-      // the message names the subprogram file the line is in
-      std::string message = error.what();
-      message.erase(0, message.find(": ") + 2);
-      throw ParseError(n, message + " (in " + files_[file].name + ")");
+      throw ParseError(n, error.message() + " (in " + files_[file].name + ")");  // the subprogram file it is in
     }
     if (endsProgram(text)) {
       if (frames_.size() > 1) leaveAfter_ = true;
@@ -855,6 +854,7 @@ bool SiemensProgram::next(std::string_view& line, long& number) {
     }
     line = text;
     number = n;
+    lastFile_ = file;
     return true;
   }
 }

@@ -38,6 +38,8 @@ public:
 
   // The next line to run as plain words, and its line number in its file; false at the end of the program.
   bool next(std::string_view& line, long& number);
+  // The subprogram file the last line given comes from; empty for the program itself.
+  std::string lastFileName() const { return lastFile_ == 0 ? std::string() : files_[lastFile_].name; }
 
 private:
   enum class Kind { If, While, For, Repeat, Loop, Section };
@@ -120,6 +122,7 @@ private:
   bool keeping_ = false;
   bool ended_ = false, leaveAfter_ = false;  // leaveAfter_: the line given out returns (M17) after it runs
   std::string rewritten_, cycleCall_;
+  size_t lastFile_ = 0;  // the file of the last line given
 };
 
 }  // namespace hsm::kinematics::detail

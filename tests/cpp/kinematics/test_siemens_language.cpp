@@ -166,6 +166,7 @@ TEST(SiemensLanguage, SubprogramsFromFiles) {
                                  "FOR K=1 TO COUNT\n  G1 Z=DEPTH*K\nENDFOR\nR10=R10+1\nRET\n");
   folder.write("SEES_CALLER.SPF", "G1 X=_MINE\nRET\n");
   folder.write("DEEP.SPF", "DEEP\nRET\n");
+  folder.write("BAD_ARC.SPF", "G1 F100 X1\nG2\nRET\n");
   ReaderOptions options = siemens();
   options.subroutineFolders = {folder.path.string()};
   const auto blocks = readProgram(
@@ -181,6 +182,8 @@ TEST(SiemensLanguage, SubprogramsFromFiles) {
   EXPECT_EQ(hidden.rfind("line 1: '_MINE' is neither an R parameter nor a variable", 0), 0u) << hidden;
   EXPECT_NE(hidden.find("(in SEES_CALLER.SPF)"), std::string::npos) << hidden;
   EXPECT_NE(errorOf("DEEP\n", options).find("nested more than 16 levels deep"), std::string::npos);
+  EXPECT_EQ(errorOf("BAD_ARC\n", options).rfind("line 2: G2 without an end point or a centre", 0), 0u);
+  EXPECT_NE(errorOf("BAD_ARC\n", options).find("(in BAD_ARC.SPF)"), std::string::npos);
   EXPECT_EQ(errorOf("L10 X5\n", options).rfind("line 1: the call of L10 shares its block with 'X5'", 0), 0u);
   EXPECT_EQ(errorOf("PROC MAIN_AS_SUB(REAL A)\nG1 F100 X=A\n", options).rfind("line 1: this is subprogram MAIN_AS_SUB", 0), 0u);
 
