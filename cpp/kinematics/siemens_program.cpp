@@ -5,6 +5,7 @@
 #include "kinematics/gcode.hpp"
 #include "kinematics/gcode_interpreter.hpp"
 #include "kinematics/ngc_program.hpp"
+#include "kinematics/siemens_text.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,115 +15,12 @@ namespace hsm::kinematics::detail {
 
 using namespace std::string_view_literals;
 
+using namespace siemens_text;
+
 namespace {
 constexpr auto isDigit = isAsciiDigit;
 constexpr auto isLetter = isAsciiLetter;
 constexpr auto upper = asciiUpper;
-constexpr size_t kProcLines = 200;  // a subprogram file's PROC line is among its first lines (after its header)
-
-bool nameStart(char c) { return isLetter(c) || c == '_'; }
-bool nameChar(char c) { return isLetter(c) || isDigit(c) || c == '_'; }
-
-std::string name(const char*& p, const char* end) {
-  const char* start = p;
-  while (p < end && nameChar(*p)) ++p;
-  std::string word(start, p);
-  for (char& c : word) c = upper(c);
-  return word;
-}
-
-std::string capitals(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = upper(c);
-  return out;
-}
-
-// The statement's keyword: a name of two letters (or underscores) or more, or L and digits (a subprogram);
-// empty for a block of address words (G1 X10 …).
-std::string keywordOf(std::string_view statement) {
-  if (statement.size() < 2 || !nameStart(statement[0])) return {};
-  const bool lNumber = (statement[0] == 'L' || statement[0] == 'l') && isDigit(statement[1]);
-  if (!nameStart(statement[1]) && !lNumber) return {};
-  const char* p = statement.data();
-  return name(p, p + statement.size());
-}
-
-bool endOfStatement(const char* p, const char* end) {
-  skipBlanks(p, end);
-  return p >= end || *p == ';';
-}
-
-// The statement's arguments in parentheses from `p` (at its '('), without them; `p` is left after the ')'.
-std::string_view parenthesised(const char*& p, const char* end, long line) {
-  const char* open = p;
-  int depth = 0;
-  for (; p < end; ++p) {
-    if (*p == '"') {
-      const char* close = std::find(p + 1, end, '"');
-      p = close < end ? close : end - 1;
-    } else if (*p == '(') {
-      ++depth;
-    } else if (*p == ')' && --depth == 0) {
-      ++p;
-      return std::string_view(open + 1, static_cast<size_t>(p - open - 2));
-    }
-  }
-  throw ParseError(line, "'(' is not closed: add ')'");
-}
-
-// The comma-separated parts of an argument list (commas inside parentheses and strings do not count).
-std::vector<std::string_view> commaParts(std::string_view list) {
-  std::vector<std::string_view> parts;
-  size_t from = 0;
-  int depth = 0;
-  for (size_t i = 0; i < list.size(); ++i) {
-    const char c = list[i];
-    if (c == '"') {
-      const size_t close = list.find('"', i + 1);
-      i = close == std::string_view::npos ? list.size() - 1 : close;
-    } else if (c == '(') {
-      ++depth;
-    } else if (c == ')') {
-      --depth;
-    } else if (c == ',' && depth == 0) {
-      parts.push_back(list.substr(from, i - from));
-      from = i + 1;
-    }
-  }
-  if (!list.empty()) parts.push_back(list.substr(from));
-  return parts;
-}
-
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-// PROC NAME(REAL A, VAR INT B, STRING[32] C …): the parameters' names, in order.
-std::vector<std::string> procParameters(const char* p, const char* end, long line) {
-  skipBlanks(p, end);
-  name(p, end);
-  skipBlanks(p, end);
-  std::vector<std::string> names;
-  if (p >= end || *p != '(') return names;
-  for (std::string_view part : commaParts(parenthesised(p, end, line))) {
-    part = trimmed(part);
-    const char* q = part.data();
-    const char* e = q + part.size();
-    std::string word = name(q, e);
-    if (word == "VAR"sv) {
-      skipBlanks(q, e);
-      word = name(q, e);
-    }
-    if (q < e && *q == '[') q = std::find(q, e, ']') + (q < e ? 1 : 0);  // STRING[32]
-    skipBlanks(q, e);
-    const std::string parameter = name(q, e);
-    if (parameter.empty()) throw ParseError(line, "PROC: a parameter is written as its type and name (REAL DEPTH)");
-    names.push_back(parameter);
-  }
-  return names;
-}
 
 // An M2, M17 or M30 in the line's words (the program's or subprogram's end), outside strings and comments.
 bool endsProgram(std::string_view text) {
@@ -168,17 +66,6 @@ bool addressWordsOnly(std::string_view statement) {
   return true;
 }
 
-// The first letters of the 840D's standard cycles that the simulator does not model (measuring, milling and
-// pattern cycles): the interpreter names them as motion it cannot see.
-bool isStandardCycle(const std::string& word) {
-  for (const char* prefix : {"CYCLE", "POCKET", "SLOT", "HOLES"}) {
-    const size_t length = std::char_traits<char>::length(prefix);
-    if (word.size() > length && word.compare(0, length, prefix) == 0 &&
-        std::all_of(word.begin() + static_cast<std::ptrdiff_t>(length), word.end(), [](char c) { return isAsciiDigit(c); }))
-      return true;
-  }
-  return word == "LONGHOLE"sv;
-}
 }  // namespace
 
 SiemensProgram::SiemensProgram(LineSource& source, SiemensOptions options)
@@ -371,6 +258,15 @@ bool SiemensProgram::endOfSection() {
   return true;
 }
 
+double SiemensProgram::passesOf(const char*& p, const char* end, long n) const {
+  skipBlanks(p, end);
+  if (p >= end || (*p != 'P' && *p != 'p')) return 1.0;
+  ++p;
+  skipBlanks(p, end);
+  if (p < end && *p == '=') ++p;
+  return variables_.evaluate(p, end, n);
+}
+
 bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view statement, long n, KeptLine& line) {
   const char* p = statement.data() + keyword.size();
   const char* end = statement.data() + statement.size();
@@ -523,14 +419,7 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
       second = word;
       p = q;
     }
-    double passes = 1.0;
-    skipBlanks(p, end);
-    if (p < end && (*p == 'P' || *p == 'p')) {
-      ++p;
-      skipBlanks(p, end);
-      if (p < end && *p == '=') ++p;
-      passes = variables_.evaluate(p, end, n);
-    }
+    const double passes = passesOf(p, end, n);
     if (!endOfStatement(p, end)) fail(n, keyword + " is written " + keyword + " <label> [<end label>] [P=<passes>]");
     if (!(passes >= 0 && passes == std::floor(passes) && passes <= static_cast<double>(options_.maxLoopIterations)))
       fail(n, keyword + " P=" + number(passes) + ": the passes are a whole number from 0 to " +
@@ -578,164 +467,6 @@ bool SiemensProgram::flowStatement(const std::string& keyword, std::string_view 
       fail(n, "MCALL " + called + ": a modal call of a subprogram is not read (read: MCALL CYCLE81 ... CYCLE89)");
   }
   return false;
-}
-
-const SiemensProgram::Subprogram* SiemensProgram::subprogram(const std::string& called, long n, bool required) {
-  const auto known = subprograms_.find(called);
-  if (known != subprograms_.end()) return &known->second;
-  auto missing = missing_.find(called);
-  if (missing == missing_.end()) {
-    std::string lower = called;
-    for (char& c : lower) c = asciiLower(c);
-    std::vector<std::string> names = {called + ".SPF", called + ".spf", lower + ".spf", called + ".MPF",
-                                      called + ".mpf", lower + ".mpf", "_N_" + called + "_SPF", "_N_" + called + "_MPF"};
-    std::string looked;
-    for (const std::string& folder : options_.subroutineFolders) {
-      for (const std::string& file : names) {
-        const std::string path = (folder.empty() ? std::string(".") : folder) + "/" + file;
-        const long index = files_.load(path, file, n);
-        if (index < 0) continue;
-        Subprogram found{LineCursor{static_cast<size_t>(index), 0}, {}};
-        const KeptFile& kept = files_[static_cast<size_t>(index)];
-        for (size_t i = 0; i < std::min(kProcLines, kept.lines.size()); ++i) {
-          const std::string_view statement = body(kept.lines[i].text).statement;
-          if (keywordOf(statement) != "PROC") continue;
-          found.parameters = procParameters(statement.data() + 4, statement.data() + statement.size(),
-                                            kept.lines[i].number);
-          found.start = LineCursor{static_cast<size_t>(index), i + 1};
-          break;
-        }
-        return &(subprograms_[called] = found);
-      }
-      looked += (looked.empty() ? "" : ", ") + (folder.empty() ? std::string(".") : folder);
-    }
-    missing = missing_.emplace(called, looked.empty() ? std::string("no folder given") : "in " + looked).first;
-  }
-  if (!required || options_.passMissingCalls) return nullptr;
-  const std::string nearest = nearestSiemensKeyword(called);
-  fail(n, "subprogram " + called + " is not found (looked for " + called + ".SPF, " + called + ".MPF and _N_" + called +
-              "_SPF " + missing->second + "; the control stops here too, alarm 14011): put " + called +
-              ".SPF beside the program or give its folder" +
-              (nearest.empty() ? std::string() : "; or is it a misspelt " + nearest + "?"));
-}
-
-bool SiemensProgram::callStatement(const std::string& called, std::string_view statement, long n) {
-  const char* p = statement.data() + called.size();
-  const char* end = statement.data() + statement.size();
-  const char* q = p;
-  skipBlanks(q, end);
-  if ((q < end && *q == '=') || called == "DEF"sv) return false;  // an assignment, a declaration
-  const bool lNumber = called[0] == 'L' && std::all_of(called.begin() + 1, called.end(), [](char c) { return isAsciiDigit(c); });
-  if (!lNumber && (variables_.isVariable(called) || isSiemensKeyword(called))) return false;
-  std::string_view arguments;
-  p = q;
-  if (p < end && *p == '(') arguments = parenthesised(p, end, n);
-  long passes = 1;
-  skipBlanks(p, end);
-  if (p < end && (*p == 'P' || *p == 'p')) {
-    ++p;
-    skipBlanks(p, end);
-    if (p < end && *p == '=') ++p;
-    const double value = variables_.evaluate(p, end, n);
-    if (!(value >= 1 && value == std::floor(value) && value <= static_cast<double>(options_.maxLoopIterations)))
-      fail(n, called + " P" + number(value) + ": a call's passes are a whole number from 1 to " +
-                  std::to_string(options_.maxLoopIterations));
-    passes = static_cast<long>(value);
-  }
-  if (!endOfStatement(p, end))
-    fail(n, "the call of " + called + " shares its block with '" + std::string(trimmed(std::string_view(p, end - p)).substr(0, 24)) +
-                "': put the call on a block of its own (with P=<passes>)");
-  // A standard cycle is a subprogram of the control's cycle folder: called when given, else named by the
-  // interpreter as motion it does not model.
-  const Subprogram* target = subprogram(called, n, !isStandardCycle(called));
-  if (target == nullptr) return false;  // missing, and to be skipped: the interpreter counts it
-  call(*target, called, arguments, passes, n);
-  return true;
-}
-
-void SiemensProgram::call(const Subprogram& target, const std::string& called, std::string_view arguments, long passes,
-                          long n) {
-  if (static_cast<int>(frames_.size()) >= kMaxSiemensCallDepth)
-    fail(n, called + ": calls nested more than " + std::to_string(kMaxSiemensCallDepth) +
-                " levels deep (the 840D's limit; a subprogram that calls itself without end?)");
-  Frame frame{target.start, cursor_, passes - 1, n, {}, {}};
-  const std::vector<std::string_view> parts = commaParts(arguments);
-  if (parts.size() > target.parameters.size())
-    fail(n, called + " takes " + std::to_string(target.parameters.size()) + " parameters (its PROC line names them), the "
-                "call gives " + std::to_string(parts.size()));
-  for (size_t i = 0; i < target.parameters.size(); ++i) {
-    double value = 0.0;  // a parameter the call leaves out is 0
-    if (i < parts.size()) {
-      const std::string_view argument = trimmed(parts[i]);
-      if (!argument.empty() && argument.front() != '"') {
-        const char* a = argument.data();
-        const char* e = a + argument.size();
-        value = variables_.evaluate(a, e, n);
-        if (!endOfStatement(a, e)) fail(n, called + ": argument " + std::to_string(i + 1) + " ('" + std::string(argument) +
-                                               "') is not an expression");
-      }
-    }
-    frame.arguments.emplace_back(target.parameters[i], value);
-  }
-  variables_.enterCall();
-  for (const auto& [parameter, value] : frame.arguments) variables_.declareLocal(parameter, value);
-  frames_.push_back(std::move(frame));
-  cursor_ = target.start;
-}
-
-void SiemensProgram::leave() {
-  Frame& frame = frames_.back();
-  variables_.leaveCall();
-  if (frame.repeatsLeft > 0) {
-    --frame.repeatsLeft;
-    frame.structures.clear();
-    variables_.enterCall();
-    for (const auto& [parameter, value] : frame.arguments) variables_.declareLocal(parameter, value);
-    cursor_ = frame.start;
-    return;
-  }
-  cursor_ = frame.returnTo;
-  frames_.pop_back();
-}
-
-std::string_view SiemensProgram::computedCycleArguments(std::string_view statement, long n) {
-  const size_t at = statement.find("CYCLE");
-  if (at == std::string_view::npos) return statement;
-  size_t open = at + 5;
-  while (open < statement.size() && isDigit(statement[open])) ++open;
-  if (open == at + 5 || open >= statement.size() || statement[open] != '(') return statement;
-  const char* p = statement.data() + open;
-  const char* end = statement.data() + statement.size();
-  const std::string_view list = parenthesised(p, end, n);
-  const std::vector<std::string_view> parts = commaParts(list);
-  const bool named = std::any_of(parts.begin(), parts.end(), [](std::string_view part) {
-    part = trimmed(part);
-    return !part.empty() && part.front() != '"' && std::any_of(part.begin(), part.end(), [](char c) { return isAsciiLetter(c); });
-  });
-  if (!named) return statement;
-  // R parameters and variables in a cycle's arguments (CYCLE81(R1, 0, R2+1, …)): their values, as the control
-  // passes them; a name that is neither stays, for the cycle to name
-  cycleCall_.assign(statement.substr(0, open + 1));
-  for (size_t i = 0; i < parts.size(); ++i) {
-    const std::string_view part = trimmed(parts[i]);
-    if (i > 0) cycleCall_ += ',';
-    if (part.empty() || part.front() == '"' || std::none_of(part.begin(), part.end(), [](char c) { return isAsciiLetter(c); })) {
-      cycleCall_.append(part);
-      continue;
-    }
-    try {
-      const char* a = part.data();
-      const char* e = a + part.size();
-      const double value = variables_.evaluate(a, e, n);
-      if (!endOfStatement(a, e)) throw ParseError(n, "not an expression");
-      cycleCall_ += number(value);
-    } catch (const ParseError&) {
-      cycleCall_.append(part);
-    }
-  }
-  cycleCall_ += ')';
-  cycleCall_.append(p, static_cast<size_t>(end - p));
-  return cycleCall_;
 }
 
 bool SiemensProgram::straight(std::string_view& line, long& number) {

@@ -80,6 +80,8 @@ private:
   // Runs the line's flow statement (its keyword `keyword`); false when it is not one.
   bool flowStatement(const std::string& keyword, std::string_view statement, long n, KeptLine& line);
   bool callStatement(const std::string& name, std::string_view statement, long n);
+  // P=n (or Pn) from `p`, the passes of a call or a repeat; 1 without.
+  double passesOf(const char*& p, const char* end, long n) const;
   // The line of `target` (a label or N123) from `from`: forward, backward, or forward then backward.
   enum class Direction { Forward, Backward, Both, BackwardFirst };  // Both: forward first
   LineCursor find(const std::string& target, Direction direction, LineCursor from, long n, bool required = true);
