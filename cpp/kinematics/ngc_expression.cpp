@@ -187,6 +187,8 @@ int NgcExpressionReader::reference(const char*& p, const char* end, std::string&
     return -1;
   }
   const double number = value(p, end);
+  if (!std::isfinite(number))  // Macro B: a vacant variable as the number (#[#100] with #100 never set)
+    fail("#[...] names no parameter: its number is vacant (a variable never set); set it first");
   const double rounded = std::round(number);
   if (std::abs(number - rounded) > kIntegerTolerance)
     fail("#" + hsm::number(number) + " is not a parameter: a parameter number is an integer");

@@ -93,7 +93,7 @@ private:
   LineSource& source_;
   NgcOptions options_;
   NgcParameters parameters_;
-  std::vector<File> files_;
+  std::deque<File> files_;  // a deque: a file never moves while its lines are referred to (a call reads another file)
   std::vector<Frame> frames_;
   std::map<std::string, Cursor> subroutines_;
   Cursor cursor_;
