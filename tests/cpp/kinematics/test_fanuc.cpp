@@ -202,6 +202,7 @@ TEST(FanucMacro, WhatCannotRunIsNamedAndLoopsAreBounded) {
   EXPECT_EQ(errorOf("#1=1\nWHILE [#1 GT 0] DO 1\nEND 1\n", bounded).rfind("line 3: WHILE ... DO 1 has turned 1000 times", 0), 0u);
   EXPECT_EQ(errorOf("#3000=12 (TOOL BROKEN)\n", kFanuc).rfind("line 1: the program raises alarm #3000 = 12", 0), 0u);
   EXPECT_EQ(errorOf("GOTO 55\n", kFanuc).rfind("line 1: N55 is not in this program", 0), 0u);
+  EXPECT_EQ(errorOf("#1=#[#100]\n", kFanuc).rfind("line 1: #[...] names no parameter: its number is vacant", 0), 0u);
   EXPECT_EQ(errorOf("WHILE [1 EQ 0] DO 1\nG1 X1. F100\n", kFanuc).rfind("line 1: WHILE ... DO 1 has no END 1", 0), 0u);
   EXPECT_EQ(errorOf("END 2\n", kFanuc).rfind("line 1: END 2 without its WHILE", 0), 0u);
   EXPECT_EQ(errorOf("M98 P10\nM30\nO0010\nM98 P10\nM99\n", kFanuc).rfind("line 4: M98: calls nested more than 20 deep", 0), 0u);
