@@ -1,6 +1,7 @@
 #include "kinematics/gcode_interpreter.hpp"
 
 #include "common/text.hpp"
+#include "kinematics/siemens_text.hpp"
 
 #include <Eigen/Geometry>
 #include <fast_float/fast_float.h>
@@ -38,9 +39,8 @@ constexpr std::string_view kSiemensKeywords[] = {
 const char* movesUnseen(std::string_view name) {
   // Measuring cycles (CYCLE9xx) probe where the tool is: a few seconds the summary names, no path to time
   if (name.size() == 8 && name.substr(0, 6) == "CYCLE9") return nullptr;
-  for (std::string_view prefix : {"CYCLE", "POCKET", "SLOT", "LONGHOLE", "HOLES"})
-    if (name.substr(0, prefix.size()) == prefix)
-      return "an 840D standard cycle the simulator does not model (measuring, milling, patterns)";
+  if (siemens_text::isStandardCycle(std::string(name)))
+    return "an 840D standard cycle the simulator does not model (measuring, milling, patterns)";
   for (std::string_view word : {"TRANSMIT", "TRACYL", "TRAANG", "PAROT", "TOROT", "TOFRAME", "TOFRAMEX", "TOFRAMEY",
                                 "TOFRAMEZ", "CT", "BSPLINE", "CSPLINE", "ASPLINE", "POLY"})
     if (name == word) return "a transformation, frame, spline or arc form the simulator does not model";

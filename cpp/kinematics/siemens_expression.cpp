@@ -2,6 +2,7 @@
 
 #include "common/ascii.hpp"
 #include "kinematics/gcode.hpp"
+#include "kinematics/siemens_text.hpp"
 
 #include <fast_float/fast_float.h>
 
@@ -11,20 +12,6 @@
 namespace hsm::kinematics::detail {
 
 namespace {
-bool identifierChar(char c) { return isAsciiLetter(c) || isAsciiDigit(c) || c == '_'; }
-
-void blanks(const char*& p, const char* end) {
-  while (p < end && (*p == ' ' || *p == '\t')) ++p;
-}
-
-std::string identifier(const char*& p, const char* end) {
-  const char* start = p;
-  while (p < end && identifierChar(*p)) ++p;
-  std::string name(start, p);
-  for (char& c : name) c = asciiUpper(c);
-  return name;
-}
-
 // Recursive descent over the 840D's arithmetic and conditions: either := both {(OR|XOR) both}; both := negation
 // {AND negation}; negation := NOT negation | comparison; comparison := sum [(==|<>|<|>|<=|>=) sum]; sum := product
 // {(+|-) product}; product := unary {(*|/|DIV|MOD) unary}; unary := [+|-] primary; primary := number | variable |
@@ -50,13 +37,13 @@ private:
 
   // The word of letters at `p` (after blanks), in capitals, without moving `p`.
   static std::string operatorWord(const char* p, const char* end) {
-    blanks(p, end);
+    skipBlanks(p, end);
     std::string word;
     while (p < end && isAsciiLetter(*p) && word.size() < 4) word += asciiUpper(*p++);
-    return (p < end && identifierChar(*p)) ? std::string() : word;
+    return (p < end && siemens_text::nameChar(*p)) ? std::string() : word;
   }
   static void skipWord(const char*& p, const char* end) {
-    blanks(p, end);
+    skipBlanks(p, end);
     while (p < end && isAsciiLetter(*p)) ++p;
   }
 
@@ -82,7 +69,7 @@ private:
   void comparison(const char*& p, const char* end) {
     sum(p, end);
     const char* q = p;
-    blanks(q, end);
+    skipBlanks(q, end);
     if (q >= end) return;
     const std::string_view two = q + 1 < end ? std::string_view(q, 2) : std::string_view();
     Op::Kind kind;
@@ -102,7 +89,7 @@ private:
     product(p, end);
     for (;;) {
       const char* q = p;
-      blanks(q, end);
+      skipBlanks(q, end);
       if (q >= end || (*q != '+' && *q != '-')) return;
       const char op = *q++;
       p = q;
@@ -115,13 +102,13 @@ private:
     unary(p, end);
     for (;;) {
       const char* q = p;
-      blanks(q, end);
+      skipBlanks(q, end);
       Op::Kind kind;
       if (q < end && (*q == '*' || *q == '/')) {
         kind = *q++ == '*' ? Op::Multiply : Op::Divide;
       } else if (q + 3 <= end && isAsciiLetter(*q)) {
         const char* r = q;
-        const std::string word = identifier(r, end);
+        const std::string word = siemens_text::name(r, end);
         if (word != "DIV" && word != "MOD") return;
         kind = word == "DIV" ? Op::IntegerDivide : Op::Modulo;
         q = r;
@@ -135,7 +122,7 @@ private:
   }
 
   void unary(const char*& p, const char* end) {
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p < end && (*p == '-' || *p == '+')) {
       const char sign = *p++;
       unary(p, end);
@@ -146,7 +133,7 @@ private:
   }
 
   void primary(const char*& p, const char* end) {
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p >= end) fail("a value is missing at the end of the line");
     if (*p == '(') {
       ++p;
@@ -167,23 +154,21 @@ private:
       return;
     }
     if (!isAsciiLetter(*p) && *p != '_') fail(std::string("unexpected character '") + *p + "' in an expression");
-    const std::string name = identifier(p, end);
+    const std::string name = siemens_text::name(p, end);
     const char* q = p;
-    blanks(q, end);
+    skipBlanks(q, end);
     if (q < end && *q == '(') {
       p = q + 1;
       return function(name, p, end);
     }
-    const bool rParameter = name.size() >= 2 && name.size() <= 4 && name[0] == 'R' &&
-                            std::all_of(name.begin() + 1, name.end(), [](char c) { return isAsciiDigit(c); });
-    if (rParameter) return emit(Op::RParameter, std::stoi(name.substr(1)));
+    if (siemens_text::isRParameter(name)) return emit(Op::RParameter, std::stoi(name.substr(1)));
     const auto known = std::find(out_.names.begin(), out_.names.end(), name);
     emit(Op::Variable, static_cast<int>(known - out_.names.begin()));
     if (known == out_.names.end()) out_.names.push_back(name);
   }
 
   void close(const char*& p, const char* end) const {
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p >= end || *p != ')') fail("'(' is not closed: add ')'");
     ++p;
   }
@@ -199,7 +184,7 @@ private:
     static constexpr Known kTwo[] = {{"ATAN2", Op::Atan2}, {"MINVAL", Op::MinValue}, {"MAXVAL", Op::MaxValue}};
     if (name == "IC") fail("IC() gives one axis an incremental value (X=IC(5)): it is not a value of an expression");
     sum(p, end);
-    blanks(p, end);
+    skipBlanks(p, end);
     for (const Known& k : kTwo) {
       if (name != k.name) continue;
       if (p >= end || *p != ',') fail(name + " takes two arguments: " + name + "(a, b)");

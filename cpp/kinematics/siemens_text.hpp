@@ -133,4 +133,12 @@ inline std::vector<std::string> procParameters(const char* p, const char* end, l
   return names;
 }
 
+// R and digits: an R parameter's name (R0 … R999 exist; a longer one is refused where it is set)
+inline bool isRName(const std::string& name) {
+  return name.size() >= 2 && name[0] == 'R' &&
+         std::all_of(name.begin() + 1, name.end(), [](char c) { return isAsciiDigit(c); });
+}
+
+inline bool isRParameter(const std::string& name) { return isRName(name) && name.size() <= 4; }
+
 }  // namespace hsm::kinematics::detail::siemens_text

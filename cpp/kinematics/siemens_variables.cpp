@@ -3,6 +3,7 @@
 #include "common/ascii.hpp"
 #include "common/text.hpp"
 #include "kinematics/gcode.hpp"
+#include "kinematics/siemens_text.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -14,27 +15,6 @@ namespace {
 constexpr auto isLetter = isAsciiLetter;
 constexpr auto isDigit = isAsciiDigit;
 constexpr auto upper = asciiUpper;
-
-void blanks(const char*& p, const char* end) {
-  while (p < end && (*p == ' ' || *p == '\t')) ++p;
-}
-
-bool identifierChar(char c) { return isLetter(c) || isDigit(c) || c == '_'; }
-
-std::string identifier(const char*& p, const char* end) {
-  const char* start = p;
-  while (p < end && identifierChar(*p)) ++p;
-  std::string name(start, p);
-  for (char& c : name) c = upper(c);
-  return name;
-}
-
-// R and digits: an R parameter's name (R0 … R999 exist; a longer one is refused where it is set)
-bool isRName(const std::string& name) {
-  return name.size() >= 2 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
-}
-
-bool isRParameter(const std::string& name) { return isRName(name) && name.size() <= 4; }
 
 // A computed value as the lexer reads it back: to the nanometre (9 decimals, trailing zeros dropped) by integer
 // arithmetic, several times faster than the shortest exact form, which values beyond 10^8 still get.
@@ -80,11 +60,11 @@ double SiemensVariables::evaluate(const SiemensExpression& e, long line) const {
 }
 
 bool SiemensVariables::isVariable(const std::string& name) const {
-  return isRParameter(name) || scopes_.back().count(name) > 0;
+  return siemens_text::isRParameter(name) || scopes_.back().count(name) > 0;
 }
 
 double SiemensVariables::get(const std::string& name, long line) const {
-  if (isRParameter(name)) return r_[static_cast<size_t>(std::stoi(name.substr(1)))];
+  if (siemens_text::isRParameter(name)) return r_[static_cast<size_t>(std::stoi(name.substr(1)))];
   const auto found = scopes_.back().find(name);
   if (found == scopes_.back().end())
     throw ParseError(line, "'" + name + "' is neither an R parameter nor a variable declared by DEF: declare it "
@@ -94,30 +74,30 @@ double SiemensVariables::get(const std::string& name, long line) const {
 
 void SiemensVariables::set(const std::string& name, double value, long line) {
   if (!std::isfinite(value)) throw ParseError(line, name + " would be set to a value that is not a finite number");
-  if (isRParameter(name))
+  if (siemens_text::isRParameter(name))
     r_[static_cast<size_t>(std::stoi(name.substr(1)))] = value;
   else
     scopes_.back()[name] = value;
 }
 
 void SiemensVariables::compileDeclaration(const char*& p, const char* end, long line, SiemensLine& out) const {
-  blanks(p, end);
-  const std::string type = identifier(p, end);
+  skipBlanks(p, end);
+  const std::string type = siemens_text::name(p, end);
   static const char* kTypes[] = {"REAL", "INT", "BOOL", "CHAR", "STRING", "AXIS", "FRAME"};
   if (std::none_of(std::begin(kTypes), std::end(kTypes), [&](const char* t) { return type == t; }))
     throw ParseError(line, "DEF " + type + ": the types read are REAL, INT, BOOL, CHAR, STRING, AXIS and FRAME");
   for (;;) {
-    blanks(p, end);
+    skipBlanks(p, end);
     SiemensLine::Piece piece;
     piece.kind = SiemensLine::Piece::Declare;
-    piece.text = identifier(p, end);
+    piece.text = siemens_text::name(p, end);
     piece.hasValue = false;
     if (piece.text.empty()) throw ParseError(line, "DEF " + type + " needs a variable's name");
     if (p < end && *p == '[') throw ParseError(line, "DEF " + piece.text + "[...]: arrays are not read yet");
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p < end && *p == '=') {
       ++p;
-      blanks(p, end);
+      skipBlanks(p, end);
       if (p < end && *p == '"') {  // a STRING's or CHAR's value: skipped
         const char* close = std::find(p + 1, end, '"');
         p = close < end ? close + 1 : end;
@@ -127,7 +107,7 @@ void SiemensVariables::compileDeclaration(const char*& p, const char* end, long 
       }
     }
     out.pieces.push_back(std::move(piece));
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p >= end || *p == ';') return;
     if (*p != ',') throw ParseError(line, "DEF: names are separated by commas");
     ++p;
@@ -138,10 +118,10 @@ bool SiemensVariables::plainAssignments(std::string_view raw) const {
   // Every '=' gives an address (A3=, CR=) a plain number, as posts write them: the lexer reads the line as it is.
   for (size_t at = raw.find('='); at != std::string_view::npos; at = raw.find('=', at + 1)) {
     size_t from = at;
-    while (from > 0 && identifierChar(raw[from - 1])) --from;
+    while (from > 0 && siemens_text::nameChar(raw[from - 1])) --from;
     std::string name;
     for (size_t i = from; i < at; ++i) name += upper(raw[i]);
-    if (name.size() < 2 || isVariable(name) || isRName(name)) return false;  // X=5 is rewritten as the word X5
+    if (name.size() < 2 || isVariable(name) || siemens_text::isRName(name)) return false;  // X=5 is rewritten as the word X5
     size_t p = at + 1;
     if (p < raw.size() && (raw[p] == '-' || raw[p] == '+')) ++p;
     const size_t digits = p;
@@ -183,20 +163,20 @@ void SiemensVariables::compile(std::string_view raw, long line, SiemensLine& out
       continue;
     }
     const char* start = p;
-    const std::string name = identifier(p, end);
+    const std::string name = siemens_text::name(p, end);
     if (name == "DEF" && (p == end || *p == ' ' || *p == '\t')) {
       compileDeclaration(p, end, line, out);
       break;
     }
     const char* q = p;
-    blanks(q, end);
+    skipBlanks(q, end);
     const bool assigns = q < end && *q == '=' && !(q + 1 < end && q[1] == '=');
     if (!assigns) {
       text(start, p);
       continue;
     }
     p = q + 1;
-    blanks(p, end);
+    skipBlanks(p, end);
     if (p < end && *p == '"') {  // T="DRILL 8.5": a name, as written
       const char* close = std::find(p + 1, end, '"');
       text(start, close < end ? close + 1 : end);
@@ -205,14 +185,14 @@ void SiemensVariables::compile(std::string_view raw, long line, SiemensLine& out
     }
     {  // `A3= F100`: the value is missing, the next word follows
       const char* r = p;
-      const std::string next = identifier(r, end);
+      const std::string next = siemens_text::name(r, end);
       const bool word = next.size() >= 2 && isLetter(next[0]) && std::all_of(next.begin() + 1, next.end(), [](char ch) {
         return isAsciiDigit(ch);
       }) && !isVariable(next);
       if (p >= end || *p == ';' || (word && (r >= end || *r != '(')))
         throw ParseError(line, name + "= needs a number, or an expression of R parameters and DEF variables");
     }
-    if (isRName(name) && !isRParameter(name))
+    if (siemens_text::isRName(name) && !siemens_text::isRParameter(name))
       throw ParseError(line, name + " is not an R parameter: they are R0 to R" + std::to_string(kSiemensRParameters - 1));
     SiemensLine::Piece piece;
     piece.kind = isVariable(name) ? SiemensLine::Piece::Assign : SiemensLine::Piece::Address;
@@ -223,7 +203,7 @@ void SiemensVariables::compile(std::string_view raw, long line, SiemensLine& out
       piece.text = std::string(1, upper(p[0])) + "C" + name;
       p += 3;
       compileSiemensExpression(p, end, line, piece.value);
-      blanks(p, end);
+      skipBlanks(p, end);
       if (p >= end || *p != ')') throw ParseError(line, name + "=" + piece.text.substr(0, 2) + "(: ')' is missing");
       ++p;
     } else {

@@ -33,4 +33,12 @@ inline MutantOutcome readMutants(const std::string& seed, const std::string& alp
   return outcome;
 }
 
+// Over a hundred mutants read and over a hundred refused: the mutations reach both sides of the reader.
+inline void expectReadAndRefused(const std::string& seed, const std::string& alphabet,
+                                 const kinematics::ReaderOptions& options, unsigned seedValue) {
+  const MutantOutcome mutants = readMutants(seed, alphabet, options, seedValue);
+  EXPECT_GT(mutants.read, 100);
+  EXPECT_GT(mutants.refused, 100);
+}
+
 }  // namespace hsm::test
