@@ -72,10 +72,18 @@ def _trace_period(trace_period):
 
 
 def _subroutine_folders(folders):
+    if folders is None:
+        return []
     if isinstance(folders, (str, os.PathLike)):
         folders = [folders]
+    try:
+        folders = list(folders)
+    except TypeError:
+        raise TypeError("subroutine_folders must be a folder or a list of folders, got %r" % (folders,)) from None
     checked = []
     for folder in folders:
+        if not isinstance(folder, (str, os.PathLike)):
+            raise TypeError("subroutine folder %r is not a path: give folders as str or pathlib.Path" % (folder,))
         if not os.path.isdir(folder):
             raise ValueError("subroutine folder %r is not a folder: give folders that hold the subprogram files"
                              % os.fspath(folder))

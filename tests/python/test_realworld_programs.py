@@ -175,6 +175,10 @@ class Siemens840dPrograms(unittest.TestCase):
         with self.assertRaises(ValueError) as raised:
             hsmplanner.simulate("G1 X1 F100\n", "mikron-ucp710-840d", subroutine_folders=["/no/such/folder"])
         self.assertIn("/no/such/folder", str(raised.exception))
+        for wrong in (5, float("nan"), [1e9]):
+            with self.assertRaises(TypeError) as raised:
+                hsmplanner.simulate("G1 X1 F100\n", "mikron-ucp710-840d", subroutine_folders=wrong)
+            self.assertIn("subroutine", str(raised.exception))
 
 
 if __name__ == "__main__":
